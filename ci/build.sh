@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Installs the Debian packages hexray needs, then configures and builds it in build/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash ci/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build --parallel "$(nproc)"

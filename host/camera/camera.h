@@ -1,0 +1,39 @@
+#pragma once
+// The course's rectilinear pinhole camera, set up on the host in double precision.
+// Both renderers start from the same PixelSheet; each interpolates its own rays from it.
+
+#include <cstdint>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
+
+namespace hexray {
+
+// The "sheet" at distance 1 in front of the camera, already rotated into world space.
+// The ray through image point (sx, sy) of a W x H image aims at
+//   topLeft + right * (sx / W) + down * (sy / H),
+// where right = TR - TL and down = BL - TL.
+struct PixelSheet {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 topLeft{0.0};
+    glm::dvec3 right{0.0};
+    glm::dvec3 down{0.0};
+};
+
+// Roll first, then pitch, then yaw: rotate(-yaw, Y) * rotate(-pitch, X) * rotate(-roll, Z).
+glm::dmat3 cameraRotation(const CameraSettings& camera);
+
+// The direction the camera looks along (the rotated +Z axis).
+glm::dvec3 cameraForward(const CameraSettings& camera);
+
+// The sheet for a FOV measured across the diagonal of a sheet of the given aspect.
+PixelSheet makePixelSheet(const CameraSettings& camera, double aspect);
+
+// Where inside pixel (x, y) its ray aims: 0.5 for centres, 0 for the course's corners.
+inline double samplingOffset(Sampling sampling) {
+    return sampling == Sampling::Center ? 0.5 : 0.0;
+}
+
+}  // namespace hexray

@@ -1,0 +1,46 @@
+#pragma once
+// Ray/surface intersection for the CPU reference renderer, in double precision.
+// Written independently of the shader so that a bug in either shows up as a difference.
+
+#include <cstddef>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
+
+namespace hexray {
+
+// A half-line origin + t * direction, t > 0. `direction` must have unit length:
+// the sphere test relies on it (a = dot(d, d) = 1) and t is then a distance.
+struct Ray {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, 1.0};
+};
+
+// Where a ray meets a surface.
+struct Hit {
+    double t = 0.0;                     // distance along the ray
+    glm::dvec3 point{0.0};              // exactly on the surface as far as double allows
+    glm::dvec3 geometricNormal{0.0};    // sphere: outward; plane: +Y
+    glm::dvec3 facingNormal{0.0};       // the geometric normal turned toward the ray's origin side
+};
+
+// The plane y = plane.height. Misses rays parallel to it and rays leaving it behind.
+std::optional<Hit> intersectPlane(const Ray& ray, const Plane& plane);
+
+// The nearest root t > 0 (the far one when the ray starts inside), found with the
+// cancellation-free discriminant and root pair; the hit point is reprojected onto the sphere.
+std::optional<Hit> intersectSphere(const Ray& ray, const Sphere& sphere);
+
+std::optional<Hit> intersectGeometry(const Ray& ray, const Geometry& geometry);
+
+struct SceneHit {
+    Hit hit;
+    std::size_t nodeIndex = 0;  // into Scene::nodes
+};
+
+// The nearest hit over all nodes; on an exact distance tie the earlier node wins.
+std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene);
+
+}  // namespace hexray

@@ -1,0 +1,131 @@
+#include "cpu/cpu_shading.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <variant>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace hexray {
+
+namespace {
+
+bool isOddInteger(double integral) {
+    // fmod is exact, and needs no conversion to an integer type: a cast of a double
+    // beyond +-2^63 would be undefined. Doubles that large are all even anyway.
+    return std::fmod(integral, 2.0) != 0.0;
+}
+
+double largestAbsComponent(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+}  // namespace
+
+int checkerParity(double u, double v, double size) {
+    const double cellU = std::floor(u / size);
+    const double cellV = std::floor(v / size);
+    return isOddInteger(cellU) == isOddInteger(cellV) ? 0 : 1;
+}
+
+Color checkerColor(const CheckerShader& checker, const glm::dvec2& uv) {
+    return checkerParity(uv.x, uv.y, checker.size) == 0 ? checker.color1 : checker.color2;
+}
+
+glm::dvec2 planeTextureCoordinates(const glm::dvec3& point) {
+    return {point.x, point.z};
+}
+
+glm::dvec2 sphereTextureCoordinates(const glm::dvec3& outwardNormal) {
+    const double longitude = glm::degrees(std::atan2(outwardNormal.x, outwardNormal.z));
+    // Rounding can leave |n.y| a hair above 1 at the poles, where asin would give NaN.
+    const double latitude = glm::degrees(std::asin(std::clamp(outwardNormal.y, -1.0, 1.0)));
+    return {longitude, latitude};
+}
+
+glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit) {
+    if (std::holds_alternative<Plane>(geometry)) {
+        return planeTextureCoordinates(hit.point);
+    }
+    // The outward normal, not the facing one: the pattern belongs to the surface, not the viewer.
+    return sphereTextureCoordinates(hit.geometricNormal);
+}
+
+double shadowRayOffset(const Geometry& geometry) {
+    if (std::holds_alternative<Plane>(geometry)) {
+        return 0.0;
+    }
+    // The reprojected point c + r*normalize(...) is computed from terms as large as |c_i|
+    // and r, so its distance from the true surface is bounded by a few units of roundoff
+    // of S = max|c_i| + r: ~2 for the normalize, 1 for r*n, 1 for the sum; the shadow ray's
+    // own f = o - c and c' = f.f - r^2 add ~2 more. 8 * DBL_EPSILON * S (16 units of
+    // roundoff) covers that with room to spare, yet stays ~1e-15 relative: far below
+    // anything visible. S, not max|p_i|, because p can sit near 0 on a sphere whose
+    // centre is far away; a fixed epsilon would vanish below half an ulp at large |c|.
+    // Pushing by >= 16 units of roundoff of |p| also survives the rounding of p + offset*n.
+    const Sphere& sphere = std::get<Sphere>(geometry);
+    const double coordinateScale = largestAbsComponent(sphere.center) + std::abs(sphere.radius);
+    return 8.0 * DBL_EPSILON * coordinateScale;
+}
+
+bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy) {
+    const glm::dvec3 toTarget = to - from;
+    const double distance = glm::length(toTarget);
+    const double maxDistance = distance - shortenBy;
+    if (!(maxDistance > 0.0)) {
+        return true;  // the target is within the offset: nothing can lie in between
+    }
+    const Ray shadowRay{from, toTarget / distance};
+    const std::optional<SceneHit> blocker = findNearestHit(shadowRay, scene);
+    // The nearest t > 0 is below maxDistance exactly when any hit is.
+    return !blocker || blocker->hit.t >= maxDistance;
+}
+
+bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
+                    const glm::dvec3& lightPosition) {
+    const double offset = shadowRayOffset(geometry);
+    const glm::dvec3 origin = hit.point + offset * hit.facingNormal;
+    return isSegmentClear(scene, origin, lightPosition, offset);
+}
+
+Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit) {
+    Color total = scene.ambient;
+    for (const PointLight& light : scene.lights) {
+        const glm::dvec3 toLight = light.position - hit.point;
+        const double distanceSquared = glm::dot(toLight, toLight);
+        if (distanceSquared == 0.0) {
+            continue;  // a light on the point itself has no direction; 0 rather than 0/0
+        }
+        const glm::dvec3 directionToLight = toLight / std::sqrt(distanceSquared);
+        const double cosTheta = glm::dot(hit.facingNormal, directionToLight);
+        if (cosTheta <= 0.0) {
+            continue;  // lit from behind: no light, and no shadow ray to go wrong at the terminator
+        }
+        if (!isLightVisible(scene, geometry, hit, light.position)) {
+            continue;
+        }
+        total += light.color * (light.intensity * cosTheta / distanceSquared);
+    }
+    return total;
+}
+
+Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo) {
+    return albedo * incidentLight(scene, geometry, hit);
+}
+
+Color shadeHit(const Scene& scene, const Node& node, const Hit& hit) {
+    const Shader& shader = scene.shaders.at(node.shaderIndex);
+    if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
+        return constant->color;
+    }
+    if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
+        return shadeLambert(scene, node.geometry, hit, lambert->color);
+    }
+    const CheckerShader& checker = std::get<CheckerShader>(shader);
+    const Color albedo = checkerColor(checker, textureCoordinates(node.geometry, hit));
+    return shadeLambert(scene, node.geometry, hit, albedo);
+}
+
+}  // namespace hexray

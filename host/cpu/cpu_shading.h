@@ -1,0 +1,51 @@
+#pragma once
+// Shading for the CPU reference renderer: checker texture, Lambert light with shadow rays,
+// constant colour. Double precision, written independently of the shader.
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "cpu/cpu_intersect.h"
+#include "scene/scene.h"
+
+namespace hexray {
+
+// 0 when floor(u/size) + floor(v/size) is even (color1's cells), 1 when odd (color2's).
+// Correct through negative coordinates and for |u/size| beyond the range of any integer type.
+int checkerParity(double u, double v, double size);
+
+Color checkerColor(const CheckerShader& checker, const glm::dvec2& uv);
+
+// Plane: (u, v) = (x, z) of the hit point.
+glm::dvec2 planeTextureCoordinates(const glm::dvec3& point);
+
+// Sphere: (longitude, latitude) in degrees of the outward unit normal:
+// (degrees(atan2(n.x, n.z)), degrees(asin(n.y))).
+glm::dvec2 sphereTextureCoordinates(const glm::dvec3& outwardNormal);
+
+glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit);
+
+// How far a shadow ray's origin is pushed off the surface along the facing normal:
+// 0 for planes (the snapped hit point cannot re-hit its plane), an error bound of a few
+// ulp of the coordinates' magnitude for spheres.
+double shadowRayOffset(const Geometry& geometry);
+
+// True when no node has a hit with 0 < t < |to - from| - shortenBy on the ray from `from`
+// toward `to`. Shortening keeps a light lying exactly on a surface from being blocked by it.
+bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy);
+
+// Whether the light at `lightPosition` can see the hit point (the shadow ray, offset as above).
+bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
+                    const glm::dvec3& lightPosition);
+
+// ambient + sum over visible lights of lightColor * intensity * max(0, cos) / r^2.
+// No pi factor: intensity 10000 at distance 100 at normal incidence gives 1.
+Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit);
+
+// albedo (component-wise) times the incident light.
+Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo);
+
+// The colour the node's shader gives this hit.
+Color shadeHit(const Scene& scene, const Node& node, const Hit& hit);
+
+}  // namespace hexray

@@ -1,0 +1,92 @@
+#pragma once
+// The scene model: what a scene file describes, in world coordinates and double precision.
+// Both renderers read this; neither adds anything to it.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace hexray {
+
+using Color = glm::dvec3;  // linear RGB, not clamped
+
+enum class Sampling { Center, Corner };  // where in a pixel its ray aims
+enum class Encoding { Srgb, Linear };    // transfer function of the 8-bit output
+
+struct ImageSettings {
+    std::uint32_t width = 800;
+    std::uint32_t height = 600;
+    Sampling sampling = Sampling::Center;
+    Encoding encoding = Encoding::Srgb;
+};
+
+// Requests beyond these would exhaust memory rather than render; checked at load time.
+inline constexpr std::uint32_t kMaxImageDimension = 16384;
+inline constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 26;  // 8192 x 8192
+
+struct CameraSettings {
+    glm::dvec3 position{0.0};
+    double yawDegrees = 0.0;    // + turns the view toward -X
+    double pitchDegrees = 0.0;  // + looks up (+Y)
+    double rollDegrees = 0.0;   // + tips the up vector toward +X
+    double fovDegrees = 90.0;   // across the frame's diagonal, in (0, 180)
+    std::optional<double> aspect;  // width / height of the sheet; default: the image's
+};
+
+struct PointLight {
+    glm::dvec3 position{0.0};
+    Color color{1.0};
+    double intensity = 1.0;  // irradiance at distance 1; falls off as 1/r^2
+};
+
+struct ConstantShader {
+    Color color{1.0};
+};
+struct LambertShader {
+    Color color{1.0};
+};
+// Lambert whose colour alternates in squares of `size` over the surface's (u, v).
+struct CheckerShader {
+    Color color1{1.0};
+    Color color2{0.0};
+    double size = 1.0;
+};
+using Shader = std::variant<ConstantShader, LambertShader, CheckerShader>;
+
+// The plane y = height, parallel to XZ; texture coordinates (u, v) = (x, z).
+struct Plane {
+    double height = 0.0;
+};
+// Texture coordinates (u, v) = (longitude, latitude) of the outward normal, in degrees.
+struct Sphere {
+    glm::dvec3 center{0.0};
+    double radius = 1.0;
+};
+using Geometry = std::variant<Plane, Sphere>;
+
+struct Node {
+    Geometry geometry;
+    std::uint32_t shaderIndex = 0;  // into Scene::shaders
+};
+
+struct Scene {
+    ImageSettings image;
+    CameraSettings camera;
+    Color background{0.0};
+    Color ambient{0.0};
+    std::vector<PointLight> lights;
+    std::vector<std::string> shaderNames;  // parallel to `shaders`, for messages
+    std::vector<Shader> shaders;
+    std::vector<Node> nodes;  // order matters: on an exact distance tie the earlier node wins
+};
+
+// Width / height the camera uses: the scene's aspect if given, else the image's.
+inline double sheetAspect(const Scene& scene) {
+    return scene.camera.aspect.value_or(double(scene.image.width) / double(scene.image.height));
+}
+
+}  // namespace hexray

@@ -1,0 +1,27 @@
+#pragma once
+// Reads scene files (JSON) into the scene model, rejecting anything the renderers cannot use.
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace hexray {
+
+// A rejected scene. what() names the source, the place (line:column for syntax errors,
+// the JSON path such as nodes[3].geometry.radius otherwise) and the reason.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+Scene loadSceneFile(const std::filesystem::path& path);
+Scene parseScene(const std::string& text, const std::string& sourceName);
+
+// Replaces the image size (e.g. from the command line), with the same checks as the file's.
+// `source` names where the numbers came from, for the message.
+void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, const std::string& source);
+
+}  // namespace hexray

@@ -1,0 +1,36 @@
+#pragma once
+// A storage buffer the host maps directly: how hexray uploads the scene and reads pixels back.
+// On lavapipe all memory is host-visible; on a discrete GPU this is slower than a staging copy
+// but correct, and hexray's buffers are small next to its render time.
+
+#include <cstddef>
+#include <cstring>
+#include <span>
+
+#include <vulkan/vulkan_raii.hpp>
+
+namespace hexray {
+
+class HostVisibleBuffer {
+public:
+    // `size` is rounded up to at least 1 byte's worth so empty arrays still bind.
+    HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                      vk::DeviceSize size, vk::BufferUsageFlags usage);
+
+    const vk::raii::Buffer& buffer() const { return buffer_; }
+    vk::DeviceSize size() const { return size_; }
+    std::byte* data() const { return mapped_; }
+
+    template <typename T>
+    void upload(std::span<const T> values) {
+        std::memcpy(mapped_, values.data(), values.size_bytes());
+    }
+
+private:
+    vk::DeviceSize size_;
+    vk::raii::DeviceMemory memory_;  // declared first so the buffer is destroyed before it
+    vk::raii::Buffer buffer_;
+    std::byte* mapped_ = nullptr;  // stays mapped for the buffer's life; unmapped with the memory
+};
+
+}  // namespace hexray

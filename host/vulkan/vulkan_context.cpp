@@ -1,0 +1,210 @@
+#include "vulkan/vulkan_context.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <optional>
+#include <string_view>
+
+namespace hexray {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr std::uint32_t kApiVersion = VK_API_VERSION_1_2;
+
+constexpr const char* kNoDeviceAdvice =
+    "install a Vulkan driver (on Debian: apt-get install mesa-vulkan-drivers, which provides "
+    "lavapipe, a CPU implementation) or render with --backend cpu";
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                   void* userData) {
+    auto* log = static_cast<ValidationLog*>(userData);
+    ++log->messageCount;
+    const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+    std::fprintf(stderr, "hexray: Vulkan validation %s: %s\n", level, data->pMessage);
+    return VK_FALSE;
+}
+
+vk::DebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log) {
+    using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
+    using Type = vk::DebugUtilsMessageTypeFlagBitsEXT;
+    return vk::DebugUtilsMessengerCreateInfoEXT(
+        {}, Severity::eWarning | Severity::eError,
+        Type::eGeneral | Type::eValidation | Type::ePerformance, &onValidationMessage, log);
+}
+
+bool hasLayer(const vk::raii::Context& context, std::string_view name) {
+    const auto layers = context.enumerateInstanceLayerProperties();
+    return std::any_of(layers.begin(), layers.end(),
+                       [&](const vk::LayerProperties& layer) { return name == layer.layerName.data(); });
+}
+
+vk::raii::Instance createInstance(const vk::raii::Context& context, ValidationLog* validation) {
+    const vk::ApplicationInfo application("hexray", 1, "hexray", 1, kApiVersion);
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions;
+    vk::InstanceCreateInfo info({}, &application);
+    const vk::DebugUtilsMessengerCreateInfoEXT creationMessenger =
+        validation ? messengerInfo(validation) : vk::DebugUtilsMessengerCreateInfoEXT();
+    if (validation) {
+        if (!hasLayer(context, kValidationLayer)) {
+            throw VulkanError(std::string("validation was requested but ") + kValidationLayer +
+                              " is not installed (on Debian: apt-get install vulkan-validationlayers)");
+        }
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        info.pNext = &creationMessenger;  // also report problems during instance creation
+    }
+    info.setPEnabledLayerNames(layers);
+    info.setPEnabledExtensionNames(extensions);
+    try {
+        return vk::raii::Instance(context, info);
+    } catch (const vk::IncompatibleDriverError&) {
+        throw VulkanError(std::string("no Vulkan driver found: ") + kNoDeviceAdvice);
+    } catch (const vk::SystemError& error) {
+        throw VulkanError(std::string("cannot create a Vulkan instance: ") + error.what());
+    }
+}
+
+// Real GPUs first; lavapipe (a CPU device) is the fallback that always works.
+int preference(vk::PhysicalDeviceType type) {
+    switch (type) {
+        case vk::PhysicalDeviceType::eDiscreteGpu: return 4;
+        case vk::PhysicalDeviceType::eIntegratedGpu: return 3;
+        case vk::PhysicalDeviceType::eVirtualGpu: return 2;
+        case vk::PhysicalDeviceType::eCpu: return 1;
+        default: return 0;
+    }
+}
+
+std::optional<std::uint32_t> computeQueueFamily(const vk::raii::PhysicalDevice& device) {
+    const auto families = device.getQueueFamilyProperties();
+    for (std::uint32_t i = 0; i < families.size(); ++i) {
+        if (families[i].queueFlags & vk::QueueFlagBits::eCompute) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+DeviceInfo describe(const vk::raii::PhysicalDevice& device, std::uint32_t index) {
+    const vk::PhysicalDeviceProperties properties = device.getProperties();
+    DeviceInfo info;
+    info.index = index;
+    info.name = properties.deviceName.data();
+    info.type = properties.deviceType;
+    info.apiVersion = std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+                      std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + "." +
+                      std::to_string(VK_API_VERSION_PATCH(properties.apiVersion));
+    if (properties.apiVersion >= VK_API_VERSION_1_2) {
+        const auto chain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>();
+        const auto& driver = chain.get<vk::PhysicalDeviceDriverProperties>();
+        info.driver = std::string(driver.driverName.data()) + " " + driver.driverInfo.data();
+    }
+    info.hasComputeQueue = computeQueueFamily(device).has_value();
+    info.hasFloat64 = device.getFeatures().shaderFloat64 == VK_TRUE;
+    return info;
+}
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+}
+
+std::string listForMessage(const std::vector<DeviceInfo>& devices) {
+    std::string list;
+    for (const DeviceInfo& device : devices) {
+        list += (list.empty() ? "" : ", ") + std::to_string(device.index) + ": " + device.name;
+    }
+    return list;
+}
+
+std::vector<DeviceInfo> describeAll(const vk::raii::PhysicalDevices& physicalDevices) {
+    std::vector<DeviceInfo> devices;
+    for (std::uint32_t i = 0; i < physicalDevices.size(); ++i) {
+        devices.push_back(describe(physicalDevices[i], i));
+    }
+    return devices;
+}
+
+// Picks by index or by case-insensitive part of the name; with no selector, the most capable.
+std::uint32_t selectDevice(const std::vector<DeviceInfo>& devices, const std::string& selector) {
+    if (devices.empty()) {
+        throw VulkanError(std::string("no Vulkan device found: ") + kNoDeviceAdvice);
+    }
+    if (selector.empty()) {
+        std::optional<std::uint32_t> best;
+        for (const DeviceInfo& device : devices) {
+            if (device.hasComputeQueue && (!best || preference(device.type) > preference(devices[*best].type))) {
+                best = device.index;
+            }
+        }
+        if (!best) {
+            throw VulkanError("no Vulkan device has a compute queue (devices: " + listForMessage(devices) + ")");
+        }
+        return *best;
+    }
+    const bool isIndex = std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); });
+    for (const DeviceInfo& device : devices) {
+        const bool matches = isIndex ? std::to_string(device.index) == selector
+                                     : lowercase(device.name).find(lowercase(selector)) != std::string::npos;
+        if (matches) {
+            if (!device.hasComputeQueue) {
+                throw VulkanError("device " + std::to_string(device.index) + " (" + device.name + ") has no compute queue");
+            }
+            return device.index;
+        }
+    }
+    throw VulkanError("no Vulkan device matches --device " + selector + " (devices: " + listForMessage(devices) + ")");
+}
+
+}  // namespace
+
+std::string deviceTypeName(vk::PhysicalDeviceType type) {
+    switch (type) {
+        case vk::PhysicalDeviceType::eDiscreteGpu: return "discrete GPU";
+        case vk::PhysicalDeviceType::eIntegratedGpu: return "integrated GPU";
+        case vk::PhysicalDeviceType::eVirtualGpu: return "virtual GPU";
+        case vk::PhysicalDeviceType::eCpu: return "CPU";
+        default: return "other";
+    }
+}
+
+VulkanContext::VulkanContext(const Options& options)
+    : validation_(options.validation),
+      instance_(createInstance(context_, validation_)),
+      messenger_(validation_ ? vk::raii::DebugUtilsMessengerEXT(instance_, messengerInfo(validation_))
+                             : vk::raii::DebugUtilsMessengerEXT(nullptr)),
+      physicalDevice_(nullptr),
+      device_(nullptr),
+      queue_(nullptr) {
+    const vk::raii::PhysicalDevices physicalDevices(instance_);
+    const std::vector<DeviceInfo> all = describeAll(physicalDevices);
+    const std::uint32_t index = selectDevice(all, options.deviceSelector);
+    selected_ = all[index];
+    physicalDevice_ = physicalDevices[index];
+    queueFamily_ = *computeQueueFamily(physicalDevice_);
+
+    const float priority = 1.0f;
+    const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
+    try {
+        device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo));
+    } catch (const vk::SystemError& error) {
+        throw VulkanError("cannot create a Vulkan device on " + selected_.name + ": " + error.what());
+    }
+    queue_ = vk::raii::Queue(device_, queueFamily_, 0);
+}
+
+std::vector<DeviceInfo> VulkanContext::devices() const {
+    return describeAll(vk::raii::PhysicalDevices(instance_));
+}
+
+std::vector<DeviceInfo> listVulkanDevices() {
+    const vk::raii::Context context;
+    const vk::raii::Instance instance = createInstance(context, nullptr);
+    return describeAll(vk::raii::PhysicalDevices(instance));
+}
+
+}  // namespace hexray

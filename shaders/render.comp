@@ -1,0 +1,24 @@
+#version 450
+// hexray's renderer: one invocation per pixel traces a primary ray, finds the nearest node,
+// shades it under the point lights with shadow rays, and writes linear RGB.
+#extension GL_GOOGLE_include_directive : require
+
+layout(local_size_x_id = 0, local_size_y_id = 1) in;
+
+#include "scene_data.glsl"
+#include "ray.glsl"
+#include "camera_ray.glsl"
+#include "intersect.glsl"
+#include "surface.glsl"
+#include "shading.glsl"
+
+void main() {
+    uvec2 bandPixel = gl_GlobalInvocationID.xy;
+    if (bandPixel.x >= frame.imageSize.x || bandPixel.y >= band.rowCount) {
+        return;
+    }
+    Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y));
+    Hit hit = findNearestHit(ray);
+    vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit);
+    pixels[bandPixel.y * frame.imageSize.x + bandPixel.x] = vec4(color, 1.0);
+}

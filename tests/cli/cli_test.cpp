@@ -1,0 +1,228 @@
+// The real hexray executable, driven as a user would: exit codes, messages, and which files
+// exist afterwards.
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "image/image_io.h"
+#include "support/test_paths.h"
+
+namespace hexray {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string pattern = (fs::temp_directory_path() / "hexray-cli-XXXXXX").string();
+        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+        dir_ = pattern;
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // Runs `hexray ARGS` in the test's directory; `environment` is prefixed to the command.
+    RunResult hexray(const std::string& arguments, const std::string& environment = "") const {
+        const fs::path out = dir_ / "stdout.txt";
+        const fs::path err = dir_ / "stderr.txt";
+        const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" HEXRAY_EXECUTABLE "' " +
+                                    arguments + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+        const int status = std::system(command.c_str());
+        RunResult result;
+        result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        result.out = readFile(out);
+        result.err = readFile(err);
+        return result;
+    }
+
+    fs::path writeScene(const std::string& name, const std::string& text) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path) << text;
+        return path;
+    }
+
+    // Files the command created besides its captured output.
+    std::vector<std::string> createdFiles() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) {
+            const std::string name = entry.path().filename().string();
+            if (name != "stdout.txt" && name != "stderr.txt" && entry.path().extension() != ".json") {
+                names.push_back(name);
+            }
+        }
+        return names;
+    }
+
+    static std::string scene(const std::string& name) { return "'" + test::sourcePath("scenes/" + name).string() + "'"; }
+
+    fs::path dir_;
+};
+
+constexpr const char* kGoodScene = R"({
+  "image": {"width": 32, "height": 24},
+  "camera": {"position": [0, 60, -120], "fov": 90},
+  "ambient": [0.15, 0.15, 0.15],
+  "lights": [{"position": [30, 100, -70], "intensity": 10000}],
+  "shaders": {"ball": {"type": "lambert", "color": [0.8, 0, 0]}},
+  "nodes": [{"geometry": {"type": "sphere", "center": [-10, 60, 0], "radius": 10}, "shader": "ball"}]
+})";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+TEST_F(CliTest, RenderWritesThePngAndSaysWhereAndHowLong) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o demo.png --width 64 --height 48");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("wrote demo.png (64x48)"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("render "), std::string::npos);
+    EXPECT_NE(run.out.find(" ms"), std::string::npos);
+    const Rgb8Image image = readPng(dir_ / "demo.png");
+    EXPECT_EQ(image.width, 64u);
+    EXPECT_EQ(image.height, 48u);
+}
+
+TEST_F(CliTest, RenderDefaultsToTheSceneNameInTheCurrentDirectory) {
+    const RunResult run = hexray("render " + scene("constant-debug.json") + " --backend cpu --width 40 --height 30");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("cpu reference"), std::string::npos) << run.out;
+    EXPECT_TRUE(fs::exists(dir_ / "constant-debug.png"));
+}
+
+TEST_F(CliTest, RenderUnderTheValidationLayerIsClean) {
+    const RunResult run = hexray("--validate render " + scene("spheres-and-lights.json") + " -o v.png --width 96 --height 54");
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err.find("validation"), std::string::npos) << run.err;
+}
+
+TEST_F(CliTest, ComparePrintsMetricsAndPassesOnTheDemoScene) {
+    const RunResult run = hexray("compare " + scene("lecture-demo.json") + " --diff diff.png");
+    ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+    for (const char* expected : {"max abs", "mean abs", "RMSE", "PSNR", "pixels > 1 level", "linear [0,1]",
+                                 "8-bit [levels]", "PASS"}) {
+        EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " missing from:\n" << run.out;
+    }
+    const Rgb8Image diff = readPng(dir_ / "diff.png");
+    EXPECT_EQ(diff.width, 800u);
+}
+
+TEST_F(CliTest, CompareFailsWithExitCode1WhenTheToleranceIsExceeded) {
+    // The course scene has whole rows on checker edges, so float32 and double disagree somewhere.
+    const RunResult run = hexray("compare " + scene("course-2024-lecture4.json") + " --max-bad-pixels 0 --max-rmse 0");
+    EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
+    EXPECT_NE(run.out.find("EXCEEDED"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("FAIL"), std::string::npos);
+}
+
+TEST_F(CliTest, DevicesListsLavapipe) {
+    const RunResult run = hexray("devices");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("llvmpipe"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("* "), std::string::npos) << run.out;
+}
+
+TEST_F(CliTest, UnknownDeviceIsAVulkanErrorThatListsTheDevices) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o x.png --device no-such-gpu");
+    EXPECT_EQ(run.exitCode, 3);
+    EXPECT_NE(run.err.find("no Vulkan device matches --device no-such-gpu"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("llvmpipe"), std::string::npos) << run.err;
+    EXPECT_TRUE(createdFiles().empty());
+}
+
+TEST_F(CliTest, NoVulkanDriverNamesThePackageAndTheCpuBackend) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o x.png",
+                                 "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+    EXPECT_EQ(run.exitCode, 3);
+    EXPECT_NE(run.err.find("mesa-vulkan-drivers"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--backend cpu"), std::string::npos) << run.err;
+    EXPECT_TRUE(createdFiles().empty());
+}
+
+// Each bad input: exit code 2, a message naming the file and the place, and no output file
+// created or replaced.
+struct BadInput {
+    const char* name;
+    std::string sceneText;  // empty: no scene file written (a missing file)
+    const char* extraArguments;
+    const char* expectedMessage;
+};
+
+void PrintTo(const BadInput& bad, std::ostream* out) {
+    *out << bad.name;
+}
+
+class BadInputTest : public CliTest, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(BadInputTest, IsRejectedWithExitCode2AndNoOutput) {
+    const BadInput& bad = GetParam();
+    if (!bad.sceneText.empty()) {
+        writeScene("bad.json", bad.sceneText);
+    }
+    std::ofstream(dir_ / "existing.png") << "keep me";
+    for (const std::string target : {"new.png", "existing.png"}) {
+        const RunResult run = hexray("render bad.json -o " + target + " " + bad.extraArguments);
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_NE(run.err.find(bad.expectedMessage), std::string::npos)
+            << "expected \"" << bad.expectedMessage << "\" in:\n" << run.err;
+        EXPECT_EQ(run.out, "");
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "new.png"));
+    EXPECT_EQ(readFile(dir_ / "existing.png"), "keep me");
+    EXPECT_EQ(createdFiles(), std::vector<std::string>{"existing.png"});
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, BadInputTest,
+    ::testing::Values(
+        BadInput{"MalformedJson", replaced(kGoodScene, "\"width\": 32,", "\"width\": 32"), "",
+                 "bad.json:2:32: JSON syntax error"},
+        BadInput{"MissingField", replaced(kGoodScene, ", \"radius\": 10", ""), "",
+                 "bad.json: nodes[0].geometry.radius: missing required field"},
+        BadInput{"MistypedField", replaced(kGoodScene, "\"radius\": 10", "\"radius\": \"big\""), "",
+                 "bad.json: nodes[0].geometry.radius"},
+        BadInput{"UnknownShader", replaced(kGoodScene, "\"shader\": \"ball\"", "\"shader\": \"bal\""), "",
+                 "bad.json: nodes[0].shader: unknown shader \"bal\""},
+        BadInput{"NonFiniteNumber", replaced(kGoodScene, "\"intensity\": 10000", "\"intensity\": 1e999"), "",
+                 "bad.json: lights[0].intensity"},
+        BadInput{"ZeroRadius", replaced(kGoodScene, "\"radius\": 10", "\"radius\": 0"), "",
+                 "bad.json: nodes[0].geometry.radius: must be > 0"},
+        BadInput{"NegativeRadius", replaced(kGoodScene, "\"radius\": 10", "\"radius\": -3"), "",
+                 "bad.json: nodes[0].geometry.radius: must be > 0"},
+        BadInput{"FovZero", replaced(kGoodScene, "\"fov\": 90", "\"fov\": 0"), "", "bad.json: camera.fov"},
+        BadInput{"Fov180", replaced(kGoodScene, "\"fov\": 90", "\"fov\": 180"), "", "bad.json: camera.fov"},
+        BadInput{"WidthZero", replaced(kGoodScene, "\"width\": 32", "\"width\": 0"), "", "bad.json: image.width"},
+        BadInput{"WidthAbsurd", replaced(kGoodScene, "\"width\": 32", "\"width\": 1000000"), "",
+                 "bad.json: image.width"},
+        BadInput{"UnknownKey", replaced(kGoodScene, "\"fov\": 90", "\"fvo\": 90"), "",
+                 "bad.json: camera.fvo: unknown key"},
+        BadInput{"MissingFile", "", "", "bad.json: cannot read scene file"},
+        BadInput{"WidthOverrideZero", kGoodScene, "--width 0", "--width: must be between 1 and 16384 (got 0)"},
+        BadInput{"HeightOverrideAbsurd", kGoodScene, "--height 99999999",
+                 "--height: must be between 1 and 16384 (got 99999999)"},
+        BadInput{"UnknownBackend", kGoodScene, "--backend quantum", "--backend"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace hexray

@@ -1,0 +1,166 @@
+// The CPU reference end to end: tiny scenes whose pixels can be worked out by hand.
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+#include <gtest/gtest.h>
+
+#include "cpu/cpu_renderer.h"
+
+using namespace hexray;
+
+namespace {
+
+void expectPixel(const Image& image, std::uint32_t x, std::uint32_t y, const Color& expected,
+                 double tolerance = 1e-6) {
+    // The image holds float: compare with the expected value rounded the same way.
+    const glm::vec3& actual = image.at(x, y);
+    const glm::vec3 expectedFloat(expected);
+    EXPECT_NEAR(actual.x, expectedFloat.x, tolerance) << "pixel (" << x << ", " << y << ")";
+    EXPECT_NEAR(actual.y, expectedFloat.y, tolerance) << "pixel (" << x << ", " << y << ")";
+    EXPECT_NEAR(actual.z, expectedFloat.z, tolerance) << "pixel (" << x << ", " << y << ")";
+}
+
+// 8x6, FOV 90, aspect 4/3, corner sampling: the sheet is TL (-0.8, 0.6, 1), right (1.6, 0, 0),
+// down (0, -1.2, 0), so pixel (x, y) aims at (-0.8 + 0.2x, 0.6 - 0.2y, 1).
+// Camera at (0, 2, 0) above a Lambert plane y = 0.
+Scene groundScene() {
+    Scene scene;
+    scene.image.width = 8;
+    scene.image.height = 6;
+    scene.image.sampling = Sampling::Corner;
+    scene.camera.position = {0, 2, 0};
+    scene.background = {0.1, 0.2, 0.3};
+    scene.ambient = Color(0.1);
+    scene.lights.push_back(PointLight{{-1, 12, 9}, Color(1.0), 169.0});
+    scene.shaders.push_back(LambertShader{{0.5, 1.0, 0.25}});
+    scene.nodes.push_back(Node{Plane{0.0}, 0});
+    return scene;
+}
+
+}  // namespace
+
+TEST(RenderOnCpu, ImageHasTheScenesSize) {
+    const Image image = renderOnCpu(groundScene(), 1);
+    EXPECT_EQ(image.width, 8u);
+    EXPECT_EQ(image.height, 6u);
+    EXPECT_EQ(image.pixels.size(), 48u);
+}
+
+TEST(RenderOnCpu, PixelLookingAtTheSkyGetsTheBackground) {
+    const Image image = renderOnCpu(groundScene(), 1);
+    expectPixel(image, 0, 0, {0.1, 0.2, 0.3}, 0.0);  // aims up at (-0.8, 0.6, 1)
+    expectPixel(image, 7, 2, {0.1, 0.2, 0.3}, 0.0);  // aims up at (0.6, 0.2, 1)
+    // Pixel (4, 3) aims at the sheet's centre, (0, 0, 1): parallel to the plane, a miss.
+    expectPixel(image, 4, 3, {0.1, 0.2, 0.3}, 0.0);
+}
+
+TEST(RenderOnCpu, LambertOnThePlaneMatchesHandComputation) {
+    const Image image = renderOnCpu(groundScene(), 1);
+    // Pixel (0, 5) aims at (-0.8, -0.4, 1); from height 2 it meets y = 0 at (-4, 0, 5).
+    // To the light (-1, 12, 9): (3, 12, 4), r = 13, cos = 12/13; 169 * (12/13) / 169 = 12/13.
+    const Color albedo(0.5, 1.0, 0.25);
+    expectPixel(image, 0, 5, albedo * (0.1 + 12.0 / 13.0));
+    // Pixel (1, 5) aims at (-0.6, -0.4, 1) and meets the plane at (-3, 0, 5).
+    // To the light: (2, 12, 4), r^2 = 164, cos = 12 / sqrt(164).
+    expectPixel(image, 1, 5, albedo * (0.1 + 169.0 * (12.0 / std::sqrt(164.0)) / 164.0));
+}
+
+TEST(RenderOnCpu, ShadowedPixelGetsOnlyAmbient) {
+    // A ball of radius 1 at (-2.5, 6, 7), on the segment from (-4, 0, 5) to the light (-1, 12, 9)
+    // (its midpoint), puts pixel (0, 5) in shadow.
+    Scene scene = groundScene();
+    scene.nodes.push_back(Node{Sphere{{-2.5, 6, 7}, 1.0}, 0});
+    const Image image = renderOnCpu(scene, 1);
+    expectPixel(image, 0, 5, Color(0.5, 1.0, 0.25) * 0.1);
+}
+
+TEST(RenderOnCpu, CentreSamplingAimsAtPixelCentres) {
+    // 2x2, FOV 90, aspect 1: m = 1/sqrt(2); the centre of pixel (0, 1) is at sheet fraction
+    // (1/4, 3/4), aiming at (-m/2, -m/2, 1). From the origin it meets y = -1 at (-1, -1, 2 sqrt 2).
+    // A light 10 straight above that point with intensity 100 gives exactly 1.
+    Scene scene;
+    scene.image.width = 2;
+    scene.image.height = 2;
+    scene.image.sampling = Sampling::Center;
+    scene.background = {0, 0, 1};
+    scene.lights.push_back(PointLight{{-1, 9, 2 * std::sqrt(2.0)}, Color(1.0), 100.0});
+    scene.shaders.push_back(LambertShader{{0.3, 0.6, 0.9}});
+    scene.nodes.push_back(Node{Plane{-1.0}, 0});
+    const Image image = renderOnCpu(scene, 1);
+    expectPixel(image, 0, 1, {0.3, 0.6, 0.9});
+    expectPixel(image, 0, 0, {0, 0, 1}, 0.0);  // aims up
+    // Corner sampling would aim pixel (0, 1) at (-m, 0, 1), parallel to the plane.
+    scene.image.sampling = Sampling::Corner;
+    expectPixel(renderOnCpu(scene, 1), 0, 1, {0, 0, 1}, 0.0);
+}
+
+TEST(RenderOnCpu, ConstantSphereFillingTheViewIsItsColourEverywhere) {
+    // A sphere of radius 9.9 at distance 10 spans asin(0.99) = 82 degrees each way from the
+    // centre, more than the 45-degree half-diagonal of a FOV-90 frame. Constant colours are
+    // not lit and not clamped.
+    Scene scene;
+    scene.image.width = 8;
+    scene.image.height = 6;
+    scene.background = {0, 1, 0};
+    scene.ambient = Color(0.5);
+    scene.lights.push_back(PointLight{{0, 0, -1}, Color(1.0), 1000.0});
+    scene.shaders.push_back(ConstantShader{{2.0, -0.5, 10.0}});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 10}, 9.9}, 0});
+    const Image image = renderOnCpu(scene, 1);
+    for (std::uint32_t y = 0; y < image.height; ++y) {
+        for (std::uint32_t x = 0; x < image.width; ++x) {
+            expectPixel(image, x, y, {2.0, -0.5, 10.0}, 0.0);
+        }
+    }
+}
+
+TEST(RenderOnCpu, ThreadCountsGiveIdenticalImages) {
+    Scene scene;
+    scene.image.width = 37;
+    scene.image.height = 23;
+    scene.camera.position = {3, 40, -90};
+    scene.camera.yawDegrees = 10;
+    scene.camera.pitchDegrees = -20;
+    scene.camera.rollDegrees = 5;
+    scene.background = {0.05, 0.1, 0.2};
+    scene.ambient = Color(0.15);
+    scene.lights.push_back(PointLight{{30, 100, -70}, Color(1.0), 10000.0});
+    scene.lights.push_back(PointLight{{-50, 30, 0}, {0.5, 0.2, 0.1}, 3000.0});
+    scene.shaders.push_back(CheckerShader{{0, 0, 0.8}, {0.2, 0.3, 0.6}, 20.0});
+    scene.shaders.push_back(CheckerShader{{0.8, 0, 0}, {0.6, 0.4, 0.1}, 9.0});
+    scene.shaders.push_back(LambertShader{{0.7, 0.7, 0.7}});
+    scene.nodes.push_back(Node{Plane{15.0}, 0});
+    scene.nodes.push_back(Node{Sphere{{-10, 60, 0}, 30}, 1});
+    scene.nodes.push_back(Node{Sphere{{40, 25, 10}, 10}, 2});
+
+    const Image single = renderOnCpu(scene, 1);
+    std::set<std::tuple<float, float, float>> distinct;
+    for (const glm::vec3& p : single.pixels) {
+        distinct.insert({p.x, p.y, p.z});
+    }
+    ASSERT_GT(distinct.size(), 10u) << "the scene should not be trivially uniform";
+
+    for (unsigned threads : {3u, 0u, 100u}) {
+        const Image image = renderOnCpu(scene, threads);
+        ASSERT_EQ(image.width, single.width);
+        ASSERT_EQ(image.height, single.height);
+        EXPECT_TRUE(image.pixels == single.pixels) << threads << " threads";
+    }
+}
+
+TEST(RenderOnCpu, EmptyImage) {
+    Scene scene = groundScene();
+    scene.image.width = 0;
+    scene.image.height = 0;
+    const Image image = renderOnCpu(scene, 3);
+    EXPECT_EQ(image.pixels.size(), 0u);
+}
+
+TEST(RenderOnCpu, BadShaderIndexThrowsInsteadOfCrashing) {
+    Scene scene = groundScene();
+    scene.nodes.push_back(Node{Plane{-5.0}, 7});
+    EXPECT_THROW(renderOnCpu(scene, 2), std::out_of_range);
+}

@@ -1,0 +1,102 @@
+// The GPU renderer on small scenes whose pixels are known by hand.
+
+#include <cmath>
+
+#include <glm/vec4.hpp>
+#include <gtest/gtest.h>
+
+#include "gpu/gpu_renderer.h"
+#include "scene/scene_loader.h"
+#include "support/test_paths.h"
+#include "validated_vulkan.h"
+
+namespace hexray {
+namespace {
+
+using GpuRendererTest = test::ValidatedVulkanTest;
+
+Scene smallScene(std::uint32_t width, std::uint32_t height) {
+    Scene scene;
+    scene.image.width = width;
+    scene.image.height = height;
+    return scene;
+}
+
+// Camera at `eye` looking straight down; the centre pixel of an odd-sized image looks at (x, 0, z).
+Scene lookingDownAtPlane(const glm::dvec3& eye) {
+    Scene scene = smallScene(9, 9);
+    scene.camera.position = eye;
+    scene.camera.pitchDegrees = -90;
+    scene.ambient = Color(0.1);
+    scene.shaderNames = {"paper"};
+    scene.shaders = {LambertShader{Color(0.5)}};
+    scene.nodes = {Node{Plane{0.0}, 0}};
+    return scene;
+}
+
+TEST_F(GpuRendererTest, EmptySceneIsBackgroundEverywhere) {
+    Scene scene = smallScene(17, 13);
+    scene.background = Color(0.25, 0.5, 0.75);
+    GpuRenderer renderer(context());
+    const Image image = renderer.render(scene).image;
+    ASSERT_EQ(image.pixels.size(), 17u * 13u);
+    for (const glm::vec3& pixel : image.pixels) {
+        EXPECT_EQ(pixel, glm::vec3(0.25f, 0.5f, 0.75f));
+    }
+}
+
+TEST_F(GpuRendererTest, ConstantSphereAroundTheCameraFillsTheView) {
+    Scene scene = smallScene(16, 8);
+    scene.shaderNames = {"flat"};
+    scene.shaders = {ConstantShader{Color(0.2, 0.4, 0.6)}};
+    scene.nodes = {Node{Sphere{{3, -2, 5}, 100}, 0}};
+    GpuRenderer renderer(context());
+    const Image image = renderer.render(scene).image;
+    for (const glm::vec3& pixel : image.pixels) {
+        EXPECT_EQ(pixel, glm::vec3(0.2f, 0.4f, 0.6f));
+    }
+}
+
+TEST_F(GpuRendererTest, LambertUnderALightAtNormalIncidence) {
+    // Light 100 above the point, intensity 10000: irradiance 1. Colour 0.5 * (ambient 0.1 + 1).
+    Scene scene = lookingDownAtPlane({0, 20, 0});
+    scene.lights = {PointLight{{0, 100, 0}, Color(1.0), 10000}};
+    GpuRenderer renderer(context());
+    const glm::vec3 center = renderer.render(scene).image.at(4, 4);
+    EXPECT_NEAR(center.r, 0.55f, 1e-5f);
+    EXPECT_NEAR(center.g, 0.55f, 1e-5f);
+}
+
+TEST_F(GpuRendererTest, AnOccluderOnTheWayToTheLightLeavesOnlyAmbient) {
+    // Light at (50, 100, 0) seen from the origin: cos = 100 / sqrt(12500), r^2 = 12500.
+    Scene scene = lookingDownAtPlane({0, 20, 0});
+    scene.lights = {PointLight{{50, 100, 0}, Color(1.0), 10000}};
+    GpuRenderer renderer(context());
+    const float lit = 0.5f * (0.1f + float(10000.0 * (100.0 / std::sqrt(12500.0)) / 12500.0));
+    EXPECT_NEAR(renderer.render(scene).image.at(4, 4).r, lit, 1e-5f);
+
+    scene.nodes.push_back(Node{Sphere{{25, 50, 0}, 3}, 0});  // on the segment, out of the camera's view
+    EXPECT_NEAR(renderer.render(scene).image.at(4, 4).r, 0.05f, 1e-6f);
+}
+
+TEST_F(GpuRendererTest, BandsOfRowsGiveTheSameImageAsOneDispatch) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    overrideImageSize(scene, 100, 75, "test");
+    GpuRenderer whole(context());
+    GpuRenderer banded(context(), 100 * sizeof(glm::vec4) * 7);  // 7 rows per band: 11 bands
+    EXPECT_EQ(whole.render(scene).image.pixels, banded.render(scene).image.pixels);
+}
+
+TEST_F(GpuRendererTest, ReportsRenderTimeAfterTheWarmUp) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    GpuRenderer renderer(context());
+    const GpuTiming timing = renderer.render(scene).timing;
+    EXPECT_GT(timing.renderMilliseconds, 0.0);
+    EXPECT_GT(timing.firstDispatchMilliseconds, 0.0);
+    if (onLavapipe()) {
+        EXPECT_TRUE(timing.fromTimestamps);
+    }
+}
+
+}  // namespace
+}  // namespace hexray

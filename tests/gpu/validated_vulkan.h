@@ -1,0 +1,32 @@
+#pragma once
+// Test fixture: a Vulkan context with the Khronos validation layer on. Any warning or error it
+// reports, including during teardown, fails the test.
+
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "vulkan/vulkan_context.h"
+
+namespace hexray::test {
+
+class ValidatedVulkanTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        context_ = std::make_unique<VulkanContext>(VulkanContext::Options{&validation_, ""});
+    }
+
+    void TearDown() override {
+        context_.reset();
+        EXPECT_EQ(validation_.messageCount.load(), 0u) << "the validation layer reported messages (printed above)";
+    }
+
+    const VulkanContext& context() const { return *context_; }
+    bool onLavapipe() const { return context_->selected().name.find("llvmpipe") != std::string::npos; }
+
+private:
+    ValidationLog validation_;
+    std::unique_ptr<VulkanContext> context_;
+};
+
+}  // namespace hexray::test

@@ -1,0 +1,537 @@
+// The scene loader: what a valid file becomes, and the one message each kind of bad input gets.
+// Messages are compared whole where the format promises their shape, since the CLI shows them as is.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <variant>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
+
+using namespace hexray;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path sourceDir() {
+#ifdef HEXRAY_SOURCE_DIR
+    return HEXRAY_SOURCE_DIR;
+#else
+    // Standalone builds: the repository root is two folders above this file's folder.
+    return fs::path(__FILE__).parent_path().parent_path().parent_path();
+#endif
+}
+
+// The example from the format's description, verbatim.
+const std::string kExampleScene = R"({
+  "image":   {"width": 800, "height": 600, "sampling": "center", "encoding": "srgb"},
+  "camera":  {"position": [0, 60, -120], "yaw": 0, "pitch": 0, "roll": 0, "fov": 90, "aspect": 1.3333},
+  "background": [0, 0, 0],
+  "ambient": [0.15, 0.15, 0.15],
+  "lights":  [{"position": [30, 100, -70], "color": [1, 1, 1], "intensity": 10000}],
+  "shaders": {
+    "floor": {"type": "checker", "color1": "#0000cc", "color2": [0.2, 0.3, 0.6], "size": 20},
+    "ball":  {"type": "lambert", "color": [0.8, 0, 0]},
+    "debug": {"type": "constant", "color": "#e699e6"}
+  },
+  "nodes": [
+    {"geometry": {"type": "plane", "y": 0}, "shader": "floor"},
+    {"geometry": {"type": "sphere", "center": [-10, 60, 0], "radius": 10}, "shader": "ball"}
+  ]
+})";
+
+// A small valid scene that each rejection test breaks in exactly one place.
+const std::string kValidScene = R"({
+  "image": {"width": 8, "height": 6},
+  "camera": {"position": [0, 1, -5]},
+  "ambient": [0.1, 0.1, 0.1],
+  "lights": [{"position": [0, 10, 0], "intensity": 100}],
+  "shaders": {"red": {"type": "lambert", "color": [1, 0, 0]}},
+  "nodes": [{"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"}]
+})";
+
+// kValidScene with one piece of text replaced; fails the test if the piece is not there.
+std::string validSceneWith(const std::string& from, const std::string& to) {
+    std::string text = kValidScene;
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "test setup: \"" << from << "\" is not in the valid scene";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+// The message parseScene rejects `text` with, or "" (and a failure) if it accepts it.
+std::string errorFor(const std::string& text) {
+    try {
+        parseScene(text, "test.json");
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "the scene was accepted:\n" << text;
+    return "";
+}
+
+std::string errorForChange(const std::string& from, const std::string& to) {
+    return errorFor(validSceneWith(from, to));
+}
+
+void expectVec(const glm::dvec3& actual, const glm::dvec3& expected) {
+    EXPECT_EQ(actual.x, expected.x);
+    EXPECT_EQ(actual.y, expected.y);
+    EXPECT_EQ(actual.z, expected.z);
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// A scratch folder for tests that need real files, removed afterwards.
+class SceneFileTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        folder_ = fs::temp_directory_path() /
+                  ("hexray_scene_loader_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path path = folder_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+
+    fs::path folder_;
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------- valid scenes
+
+TEST(SceneLoader, ParsesTheExampleScene) {
+    const Scene scene = parseScene(kExampleScene, "example.json");
+
+    EXPECT_EQ(scene.image.width, 800u);
+    EXPECT_EQ(scene.image.height, 600u);
+    EXPECT_EQ(scene.image.sampling, Sampling::Center);
+    EXPECT_EQ(scene.image.encoding, Encoding::Srgb);
+
+    expectVec(scene.camera.position, {0, 60, -120});
+    EXPECT_EQ(scene.camera.yawDegrees, 0.0);
+    EXPECT_EQ(scene.camera.pitchDegrees, 0.0);
+    EXPECT_EQ(scene.camera.rollDegrees, 0.0);
+    EXPECT_EQ(scene.camera.fovDegrees, 90.0);
+    ASSERT_TRUE(scene.camera.aspect.has_value());
+    EXPECT_EQ(*scene.camera.aspect, 1.3333);
+    EXPECT_EQ(sheetAspect(scene), 1.3333);
+
+    expectVec(scene.background, {0, 0, 0});
+    expectVec(scene.ambient, {0.15, 0.15, 0.15});
+
+    ASSERT_EQ(scene.lights.size(), 1u);
+    expectVec(scene.lights[0].position, {30, 100, -70});
+    expectVec(scene.lights[0].color, {1, 1, 1});
+    EXPECT_EQ(scene.lights[0].intensity, 10000.0);
+
+    // Shaders come in name order, with names kept parallel for messages.
+    ASSERT_EQ(scene.shaders.size(), 3u);
+    ASSERT_EQ(scene.shaderNames, (std::vector<std::string>{"ball", "debug", "floor"}));
+    const auto* ball = std::get_if<LambertShader>(&scene.shaders[0]);
+    ASSERT_NE(ball, nullptr);
+    expectVec(ball->color, {0.8, 0, 0});
+    const auto* debug = std::get_if<ConstantShader>(&scene.shaders[1]);
+    ASSERT_NE(debug, nullptr);
+    expectVec(debug->color, {0xe6 / 255.0, 0x99 / 255.0, 0xe6 / 255.0});
+    const auto* floor = std::get_if<CheckerShader>(&scene.shaders[2]);
+    ASSERT_NE(floor, nullptr);
+    expectVec(floor->color1, {0, 0, 0xcc / 255.0});
+    expectVec(floor->color2, {0.2, 0.3, 0.6});
+    EXPECT_EQ(floor->size, 20.0);
+
+    ASSERT_EQ(scene.nodes.size(), 2u);
+    const auto* plane = std::get_if<Plane>(&scene.nodes[0].geometry);
+    ASSERT_NE(plane, nullptr);
+    EXPECT_EQ(plane->height, 0.0);
+    EXPECT_EQ(scene.nodes[0].shaderIndex, 2u);  // floor
+    const auto* sphere = std::get_if<Sphere>(&scene.nodes[1].geometry);
+    ASSERT_NE(sphere, nullptr);
+    expectVec(sphere->center, {-10, 60, 0});
+    EXPECT_EQ(sphere->radius, 10.0);
+    EXPECT_EQ(scene.nodes[1].shaderIndex, 0u);  // ball
+}
+
+TEST(SceneLoader, OmittedOptionalFieldsTakeTheirDefaults) {
+    const Scene scene = parseScene(R"({
+        "image": {"width": 640, "height": 480},
+        "camera": {"position": [1, 2, 3]},
+        "lights": [{"position": [0, 0, 0], "intensity": 5}],
+        "nodes": []
+    })", "defaults.json");
+
+    EXPECT_EQ(scene.image.sampling, Sampling::Center);
+    EXPECT_EQ(scene.image.encoding, Encoding::Srgb);
+    EXPECT_EQ(scene.camera.yawDegrees, 0.0);
+    EXPECT_EQ(scene.camera.pitchDegrees, 0.0);
+    EXPECT_EQ(scene.camera.rollDegrees, 0.0);
+    EXPECT_EQ(scene.camera.fovDegrees, 90.0);
+    EXPECT_FALSE(scene.camera.aspect.has_value());
+    EXPECT_EQ(sheetAspect(scene), 640.0 / 480.0);  // the image's when the scene gives none
+    expectVec(scene.background, {0, 0, 0});
+    expectVec(scene.ambient, {0, 0, 0});
+    ASSERT_EQ(scene.lights.size(), 1u);
+    expectVec(scene.lights[0].color, {1, 1, 1});
+    EXPECT_TRUE(scene.shaders.empty());
+    EXPECT_TRUE(scene.shaderNames.empty());
+    EXPECT_TRUE(scene.nodes.empty());
+}
+
+TEST(SceneLoader, OmittedListsAreEmpty) {
+    const Scene scene = parseScene(R"({"image": {"width": 1, "height": 1}, "camera": {"position": [0, 0, 0]},
+                                       "nodes": []})", "empty.json");
+    EXPECT_TRUE(scene.lights.empty());
+    EXPECT_TRUE(scene.shaders.empty());
+    EXPECT_TRUE(scene.nodes.empty());
+}
+
+TEST(SceneLoader, ReadsTheCourseSettings) {
+    const Scene scene = parseScene(
+        validSceneWith(R"("image": {"width": 8, "height": 6})",
+                       R"("image": {"width": 8, "height": 6, "sampling": "corner", "encoding": "linear"})"),
+        "course.json");
+    EXPECT_EQ(scene.image.sampling, Sampling::Corner);
+    EXPECT_EQ(scene.image.encoding, Encoding::Linear);
+}
+
+TEST(SceneLoader, ReadsCameraAngles) {
+    const Scene scene = parseScene(
+        validSceneWith(R"("camera": {"position": [0, 1, -5]})",
+                       R"("camera": {"position": [0, 1, -5], "yaw": 30, "pitch": -20.5, "roll": 370, "fov": 179.5})"),
+        "angles.json");
+    EXPECT_EQ(scene.camera.yawDegrees, 30.0);
+    EXPECT_EQ(scene.camera.pitchDegrees, -20.5);
+    EXPECT_EQ(scene.camera.rollDegrees, 370.0);
+    EXPECT_EQ(scene.camera.fovDegrees, 179.5);
+}
+
+TEST(SceneLoader, HexColoursAreCaseInsensitiveAndHdrComponentsAreKept) {
+    const Scene scene = parseScene(validSceneWith(R"("ambient": [0.1, 0.1, 0.1])",
+                                                  R"("ambient": "#FfA00b", "background": [2.5, 0, 1e3])"),
+                                   "colours.json");
+    expectVec(scene.ambient, {1.0, 0xa0 / 255.0, 0x0b / 255.0});
+    expectVec(scene.background, {2.5, 0, 1000});
+}
+
+TEST(SceneLoader, AnIntegralFloatIsAnInteger) {
+    const Scene scene = parseScene(validSceneWith(R"("width": 8)", R"("width": 8.0)"), "float.json");
+    EXPECT_EQ(scene.image.width, 8u);
+}
+
+TEST(SceneLoader, AcceptsTheLargestAllowedImages) {
+    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 16384, "height": 1)"), "wide.json")
+                  .image.width,
+              16384u);
+    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 8192, "height": 8192)"), "big.json")
+                  .image.height,
+              8192u);
+}
+
+TEST(SceneLoader, ShaderIndicesFollowShaderNames) {
+    const Scene scene = parseScene(R"({
+        "image": {"width": 8, "height": 6},
+        "camera": {"position": [0, 1, -5]},
+        "shaders": {"red": {"type": "lambert", "color": [1, 0, 0]}, "blue": {"type": "constant", "color": "#0000ff"}},
+        "nodes": [{"geometry": {"type": "plane", "y": -2}, "shader": "blue"},
+                  {"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"}]
+    })", "indices.json");
+    ASSERT_EQ(scene.shaderNames, (std::vector<std::string>{"blue", "red"}));
+    ASSERT_EQ(scene.nodes.size(), 2u);
+    EXPECT_EQ(scene.nodes[0].shaderIndex, 0u);
+    EXPECT_EQ(std::get<Plane>(scene.nodes[0].geometry).height, -2.0);
+    EXPECT_EQ(scene.nodes[1].shaderIndex, 1u);
+    EXPECT_TRUE(std::holds_alternative<ConstantShader>(scene.shaders[0]));
+    EXPECT_TRUE(std::holds_alternative<LambertShader>(scene.shaders[1]));
+}
+
+// ---------------------------------------------------------------- JSON syntax
+
+TEST(SceneLoaderRejects, MissingCommaWithLineAndColumn) {
+    const std::string message = errorFor("{\n"
+                                         "  \"image\": {\"width\": 8, \"height\": 6}\n"
+                                         "  \"camera\": {\"position\": [0, 0, 0]},\n"
+                                         "  \"nodes\": []\n"
+                                         "}\n");
+    // The parser stops at the end of the unexpected string "camera": line 3, column 10.
+    EXPECT_EQ(message, "test.json:3:10: JSON syntax error: syntax error while parsing object - "
+                       "unexpected string literal; expected '}'");
+}
+
+TEST(SceneLoaderRejects, SyntaxErrorColumnsCountCharactersNotBytes) {
+    // "é" is two bytes in UTF-8 but one column; the stray ']' is the 13th character of line 2.
+    const std::string message = errorFor("{\n  \"caf\xC3\xA9\": 1 ]\n}");
+    EXPECT_TRUE(contains(message, "test.json:2:13: JSON syntax error: ")) << message;
+    EXPECT_FALSE(contains(message, "json.exception")) << message;
+}
+
+TEST(SceneLoaderRejects, TruncatedFile) {
+    EXPECT_EQ(errorFor("{"), "test.json:1:2: JSON syntax error: syntax error while parsing object key - "
+                             "unexpected end of input; expected string literal");
+    EXPECT_TRUE(contains(errorFor(""), "test.json:1:1: JSON syntax error: ")) << errorFor("");
+}
+
+TEST(SceneLoaderRejects, DuplicateKey) {
+    EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, "width": 9,)"), "test.json: image.width: duplicate key");
+}
+
+// ---------------------------------------------------------------- structure and types
+
+TEST(SceneLoaderRejects, RootThatIsNotAnObject) {
+    EXPECT_EQ(errorFor("[]"), "test.json: (root): expected an object (got an array of 0 elements)");
+    EXPECT_EQ(errorFor("42"), "test.json: (root): expected an object (got number 42)");
+}
+
+TEST(SceneLoaderRejects, MissingRequiredFields) {
+    EXPECT_EQ(errorForChange(R"("width": 8, )", ""), "test.json: image.width: missing required field");
+    EXPECT_EQ(errorForChange(R"("image": {"width": 8, "height": 6},)", ""), "test.json: image: missing required field");
+    EXPECT_EQ(errorForChange(R"("camera": {"position": [0, 1, -5]},)", R"("camera": {},)"),
+              "test.json: camera.position: missing required field");
+    EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("color": [1, 1, 1])"),
+              "test.json: lights[0].intensity: missing required field");
+    EXPECT_EQ(errorForChange(R"(, "radius": 1)", ""), "test.json: nodes[0].geometry.radius: missing required field");
+    EXPECT_EQ(errorForChange(R"(, "shader": "red")", ""), "test.json: nodes[0].shader: missing required field");
+    EXPECT_EQ(errorForChange(R"("type": "lambert", )", ""), "test.json: shaders.red.type: missing required field");
+    EXPECT_EQ(errorFor(R"({"image": {"width": 8, "height": 6}, "camera": {"position": [0, 0, 0]}})"),
+              "test.json: nodes: missing required field");
+}
+
+TEST(SceneLoaderRejects, WrongJsonTypes) {
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": "big")"),
+              "test.json: nodes[0].geometry.radius: expected a number (got string \"big\")");
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": true)"),
+              "test.json: image.width: expected an integer (got boolean true)");
+    EXPECT_EQ(errorForChange(R"("shader": "red")", R"("shader": 1)"),
+              "test.json: nodes[0].shader: expected a string (got number 1)");
+    EXPECT_EQ(errorForChange(R"("image": {"width": 8, "height": 6})", R"("image": [8, 6])"),
+              "test.json: image: expected an object (got an array of 2 elements)");
+    EXPECT_EQ(errorForChange(R"("lights": [{"position": [0, 10, 0], "intensity": 100}])", R"("lights": {})"),
+              "test.json: lights: expected an array (got an object)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1])"),
+              "test.json: camera.position: expected an array of 3 numbers [x, y, z] (got an array of 2 elements)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, null, -5])"),
+              "test.json: camera.position[1]: expected a number (got null)");
+}
+
+// ---------------------------------------------------------------- image size
+
+TEST(SceneLoaderRejects, NonIntegerWidth) {
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 800.5)"),
+              "test.json: image.width: must be an integer (got 800.5)");
+}
+
+TEST(SceneLoaderRejects, WidthOrHeightOutOfRange) {
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 0)"),
+              "test.json: image.width: must be between 1 and 16384 (got 0)");
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": -5)"),
+              "test.json: image.width: must be between 1 and 16384 (got -5)");
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 1e6)"),
+              "test.json: image.width: must be between 1 and 16384 (got 1000000)");
+    EXPECT_EQ(errorForChange(R"("height": 6)", R"("height": 16385)"),
+              "test.json: image.height: must be between 1 and 16384 (got 16385)");
+    EXPECT_EQ(errorForChange(R"("height": 6)", R"("height": 18446744073709551615)"),
+              "test.json: image.height: must be between 1 and 16384 (got 18446744073709551615)");
+}
+
+TEST(SceneLoaderRejects, TooManyPixels) {
+    EXPECT_EQ(errorForChange(R"("width": 8, "height": 6)", R"("width": 16384, "height": 8193)"),
+              "test.json: image: 16384 x 8193 = 134234112 pixels exceeds the limit of 67108864 pixels");
+}
+
+// ---------------------------------------------------------------- numeric ranges
+
+TEST(SceneLoaderRejects, FovOutsideTheOpenRange) {
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "fov": 0)"),
+              "test.json: camera.fov: must be > 0 and < 180 (got 0)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "fov": 180)"),
+              "test.json: camera.fov: must be > 0 and < 180 (got 180)");
+}
+
+TEST(SceneLoaderRejects, NonPositiveAspect) {
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "aspect": 0)"),
+              "test.json: camera.aspect: must be > 0 (got 0)");
+}
+
+TEST(SceneLoaderRejects, NonPositiveRadius) {
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 0)"),
+              "test.json: nodes[0].geometry.radius: must be > 0 (got 0)");
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": -3)"),
+              "test.json: nodes[0].geometry.radius: must be > 0 (got -3)");
+}
+
+TEST(SceneLoaderRejects, NonPositiveCheckerSize) {
+    EXPECT_EQ(errorForChange(R"({"type": "lambert", "color": [1, 0, 0]})",
+                             R"({"type": "checker", "color1": [1, 0, 0], "color2": "#000000", "size": 0})"),
+              "test.json: shaders.red.size: must be > 0 (got 0)");
+}
+
+TEST(SceneLoaderRejects, NegativeIntensity) {
+    EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("intensity": -1)"),
+              "test.json: lights[0].intensity: must be >= 0 (got -1)");
+}
+
+TEST(SceneLoaderRejects, NonFiniteNumbers) {
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 1e999)"),
+              "test.json: nodes[0].geometry.radius: must be a finite number (got 1e999)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, -1e999, -5])"),
+              "test.json: camera.position[1]: must be a finite number (got -1e999)");
+    EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.1, 0.1, 2e400])"),
+              "test.json: ambient[2]: must be a finite number (got 2e400)");
+}
+
+// ---------------------------------------------------------------- colours
+
+TEST(SceneLoaderRejects, BadHexColours) {
+    const std::string forms = "[r, g, b] with finite components >= 0, or \"#rrggbb\"";
+    EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": "#12345g")"),
+              "test.json: shaders.red.color: expected a colour: " + forms + " (got string \"#12345g\")");
+    EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": "#12345")"),
+              "test.json: shaders.red.color: expected a colour: " + forms + " (got string \"#12345\")");
+    EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": "red")"),
+              "test.json: shaders.red.color: expected a colour: " + forms + " (got string \"red\")");
+    EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": "#+12345")"),
+              "test.json: shaders.red.color: expected a colour: " + forms + " (got string \"#+12345\")");
+}
+
+TEST(SceneLoaderRejects, BadColourArrays) {
+    const std::string forms = "[r, g, b] with finite components >= 0, or \"#rrggbb\"";
+    EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.1, 0.1])"),
+              "test.json: ambient: expected a colour: " + forms + " (got an array of 2 elements)");
+    EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.1, -0.5, 0.1])"),
+              "test.json: ambient[1]: colour component must be a finite number >= 0 (got number -0.5); a colour is " +
+                  forms);
+    EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": 0.1)"),
+              "test.json: ambient: expected a colour: " + forms + " (got number 0.1)");
+}
+
+// ---------------------------------------------------------------- names
+
+TEST(SceneLoaderRejects, UnknownShaderName) {
+    EXPECT_EQ(errorForChange(R"("shader": "red")", R"("shader": "rde")"),
+              "test.json: nodes[0].shader: unknown shader \"rde\" (defined: red)");
+    EXPECT_EQ(errorFor(kExampleScene.substr(0, kExampleScene.find(R"("shader": "ball")")) + R"("shader": "flor"}]})"),
+              "test.json: nodes[1].shader: unknown shader \"flor\" (defined: ball, debug, floor)");
+    EXPECT_EQ(errorForChange(R"("shaders": {"red": {"type": "lambert", "color": [1, 0, 0]}},)", ""),
+              "test.json: nodes[0].shader: unknown shader \"red\" (no shaders are defined)");
+}
+
+TEST(SceneLoaderRejects, UnknownKeysAtEveryDepth) {
+    EXPECT_EQ(errorForChange(R"("lights":)", R"("lihgts":)"),
+              "test.json: lihgts: unknown key (allowed: ambient, background, camera, image, lights, nodes, shaders)");
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 8, "depth": 3)"),
+              "test.json: image.depth: unknown key (allowed: encoding, height, sampling, width)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "fvo": 60)"),
+              "test.json: camera.fvo: unknown key (allowed: aspect, fov, pitch, position, roll, yaw)");
+    EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("intensity": 100, "colour": [1, 1, 1])"),
+              "test.json: lights[0].colour: unknown key (allowed: color, intensity, position)");
+    EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": [1, 0, 0], "size": 2)"),
+              "test.json: shaders.red.size: unknown key (allowed: color, type)");
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 1, "y": 0)"),
+              "test.json: nodes[0].geometry.y: unknown key (allowed: center, radius, type)");
+    EXPECT_EQ(errorForChange(R"("shader": "red")", R"("shader": "red", "name": "ball")"),
+              "test.json: nodes[0].name: unknown key (allowed: geometry, shader)");
+}
+
+TEST(SceneLoaderRejects, KeysThatAreNotIdentifiersAreQuotedInPaths) {
+    EXPECT_EQ(errorForChange(R"("red": {"type": "lambert", "color": [1, 0, 0]})",
+                             R"("red": {"type": "lambert", "color": [1, 0, 0]}, "my ball": {"type": "lambert"})"),
+              "test.json: shaders[\"my ball\"].color: missing required field");
+}
+
+TEST(SceneLoaderRejects, BadEnumStrings) {
+    EXPECT_EQ(errorForChange(R"("height": 6)", R"("height": 6, "sampling": "centre")"),
+              "test.json: image.sampling: unknown value \"centre\" (allowed: center, corner)");
+    EXPECT_EQ(errorForChange(R"("height": 6)", R"("height": 6, "encoding": "gamma")"),
+              "test.json: image.encoding: unknown value \"gamma\" (allowed: linear, srgb)");
+    EXPECT_EQ(errorForChange(R"("type": "sphere")", R"("type": "cube")"),
+              "test.json: nodes[0].geometry.type: unknown value \"cube\" (allowed: plane, sphere)");
+    EXPECT_EQ(errorForChange(R"("type": "lambert")", R"("type": "phong")"),
+              "test.json: shaders.red.type: unknown value \"phong\" (allowed: checker, constant, lambert)");
+}
+
+// ---------------------------------------------------------------- files
+
+TEST_F(SceneFileTest, LoadsAFileAndNamesItInMessages) {
+    const fs::path good = write("good.json", kValidScene);
+    EXPECT_EQ(loadSceneFile(good).image.width, 8u);
+
+    const fs::path bad = write("bad.json", validSceneWith(R"("radius": 1)", R"("radius": -3)"));
+    try {
+        loadSceneFile(bad);
+        ADD_FAILURE() << "accepted";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()), bad.string() + ": nodes[0].geometry.radius: must be > 0 (got -3)");
+    }
+}
+
+TEST_F(SceneFileTest, MissingFile) {
+    const fs::path missing = folder_ / "no_such_scene.json";
+    try {
+        loadSceneFile(missing);
+        ADD_FAILURE() << "accepted";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()), missing.string() + ": cannot read scene file: No such file or directory");
+    }
+}
+
+TEST_F(SceneFileTest, DirectoryGivenAsTheFile) {
+    try {
+        loadSceneFile(folder_);
+        ADD_FAILURE() << "accepted";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()), folder_.string() + ": cannot read scene file: Is a directory");
+    }
+}
+
+TEST(SceneFiles, EverySceneUnderScenesLoads) {
+    const fs::path scenes = sourceDir() / "scenes";
+    ASSERT_TRUE(fs::is_directory(scenes)) << scenes;
+    for (const auto& entry : fs::recursive_directory_iterator(scenes)) {
+        if (!entry.is_regular_file() || entry.path().extension() != ".json") continue;
+        try {
+            loadSceneFile(entry.path());
+        } catch (const SceneError& error) {
+            ADD_FAILURE() << error.what();
+        }
+    }
+}
+
+// ---------------------------------------------------------------- overrideImageSize
+
+TEST(OverrideImageSize, ReplacesTheSize) {
+    Scene scene = parseScene(kValidScene, "test.json");
+    overrideImageSize(scene, 320, 200, "command line");
+    EXPECT_EQ(scene.image.width, 320u);
+    EXPECT_EQ(scene.image.height, 200u);
+}
+
+TEST(OverrideImageSize, RejectsWithTheSameChecksAndLeavesTheSceneAlone) {
+    Scene scene = parseScene(kValidScene, "test.json");
+    const auto errorFor = [&](std::int64_t width, std::int64_t height, const std::string& source) -> std::string {
+        try {
+            overrideImageSize(scene, width, height, source);
+        } catch (const SceneError& error) {
+            return error.what();
+        }
+        ADD_FAILURE() << width << " x " << height << " was accepted";
+        return "";
+    };
+    EXPECT_EQ(errorFor(0, 6, "--width"), "--width: must be between 1 and 16384 (got 0)");
+    EXPECT_EQ(errorFor(8, 20000, "--height"), "--height: must be between 1 and 16384 (got 20000)");
+    EXPECT_EQ(errorFor(-1, 6, "command line"), "command line: width must be between 1 and 16384 (got -1)");
+    EXPECT_EQ(errorFor(8, 0, "--width/--height"), "--width/--height: height must be between 1 and 16384 (got 0)");
+    EXPECT_EQ(errorFor(16384, 16384, "command line"),
+              "command line: 16384 x 16384 = 268435456 pixels exceeds the limit of 67108864 pixels");
+    EXPECT_EQ(scene.image.width, 8u);
+    EXPECT_EQ(scene.image.height, 6u);
+}
