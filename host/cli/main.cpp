@@ -43,11 +43,11 @@ int main(int argc, char** argv) {
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
     addSceneOptions(*renderCommand, render.scene);
     renderCommand->add_option("-o,--output", render.outputPath, "Output PNG (default: <scene name>.png here)");
+    std::string backend = "gpu";
     renderCommand
-        ->add_option("--backend", render.backend, "gpu: the Vulkan compute shader; cpu: the double-precision reference")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, Backend>{{"gpu", Backend::Gpu}, {"cpu", Backend::Cpu}},
-                                            CLI::ignore_case))
-        ->default_str("gpu");
+        ->add_option("--backend", backend, "gpu: the Vulkan compute shader; cpu: the double-precision reference")
+        ->check(CLI::IsMember({"gpu", "cpu"}))
+        ->capture_default_str();
     addDeviceOption(*renderCommand, render.vulkan);
     renderCommand->add_option("--threads", render.threads, "CPU backend threads (default: all cores)")
         ->check(CLI::PositiveNumber);
@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
 
     if (renderCommand->parsed()) {
         render.vulkan.validate = validate;
+        render.backend = backend == "cpu" ? Backend::Cpu : Backend::Gpu;
         return runRender(render);
     }
     if (compareCommand->parsed()) {

@@ -1,0 +1,67 @@
+// Packing the scene for the shader: camera-relative positions and the checker's cell phase.
+
+#include <gtest/gtest.h>
+
+#include "gpu/gpu_scene.h"
+
+namespace hexray {
+namespace {
+
+Scene checkerPlaneAndBall(const glm::dvec3& eye) {
+    Scene scene;
+    scene.camera.position = eye;
+    scene.shaderNames = {"floor", "ball"};
+    scene.shaders = {CheckerShader{Color(1), Color(0), 20.0}, CheckerShader{Color(1), Color(0), 9.0}};
+    scene.nodes = {Node{Plane{15.0}, 0}, Node{Sphere{{-10, 60, 0}, 30}, 1}};
+    scene.lights = {PointLight{{30, 100, -70}, Color(0.5, 1, 1), 10000}};
+    return scene;
+}
+
+TEST(PackScene, PositionsAreRelativeToTheEye) {
+    const gpu::GpuScene packed = gpu::packScene(checkerPlaneAndBall({1, 60, -120}));
+    EXPECT_EQ(packed.nodes[0].kinds.x, gpu::kGeometryPlane);
+    EXPECT_FLOAT_EQ(packed.nodes[0].geometry.x, 15.0f - 60.0f);
+    EXPECT_EQ(packed.nodes[1].kinds.x, gpu::kGeometrySphere);
+    EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30));
+    EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0));
+    EXPECT_EQ(packed.lights[0].power, glm::vec4(5000, 10000, 10000, 0));
+    EXPECT_EQ(packed.frame.nodeCount, 2u);
+    EXPECT_EQ(packed.frame.lightCount, 1u);
+}
+
+TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
+    const glm::dvec3 far(3e7, -2e7, 1e7);
+    Scene moved = checkerPlaneAndBall(glm::dvec3(0, 60, -120) + far);
+    moved.nodes[0].geometry = Plane{15.0 + far.y};
+    moved.nodes[1].geometry = Sphere{glm::dvec3(-10, 60, 0) + far, 30};
+    moved.lights[0].position += far;
+    const gpu::GpuScene atOrigin = gpu::packScene(checkerPlaneAndBall({0, 60, -120}));
+    const gpu::GpuScene packed = gpu::packScene(moved);
+    EXPECT_EQ(packed.nodes[0].geometry, atOrigin.nodes[0].geometry);
+    EXPECT_EQ(packed.nodes[1].geometry, atOrigin.nodes[1].geometry);
+    EXPECT_EQ(packed.lights[0].position, atOrigin.lights[0].position);
+}
+
+TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {
+    // Eye x / 20 = -1.25: cell -2, fraction 0.75; z / 20 = 2.35: cell 2, fraction 0.35; parity 0.
+    gpu::GpuScene packed = gpu::packScene(checkerPlaneAndBall({-25, 60, 47}));
+    EXPECT_FLOAT_EQ(packed.nodes[0].checker.x, 20.0f);
+    EXPECT_NEAR(packed.nodes[0].checker.y, 0.75f, 1e-7f);
+    EXPECT_NEAR(packed.nodes[0].checker.z, 0.35f, 1e-6f);
+    EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);
+    // x / 20 = 1.5: cell 1 (odd), z cell 0: parity 1.
+    packed = gpu::packScene(checkerPlaneAndBall({30, 60, 0}));
+    EXPECT_EQ(packed.nodes[0].checker.w, 1.0f);
+    // Cells -3 and 1e6 + 1 (both odd): parity 0, at coordinates float32 could not hold exactly.
+    packed = gpu::packScene(checkerPlaneAndBall({-50, 60, 20e6 + 30}));
+    EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);
+    EXPECT_NEAR(packed.nodes[0].checker.z, 0.5f, 1e-6f);
+}
+
+TEST(PackScene, SphereCheckerUsesAnglesThatDoNotMoveWithTheEye) {
+    const gpu::GpuScene packed = gpu::packScene(checkerPlaneAndBall({-25, 60, 47}));
+    EXPECT_EQ(packed.nodes[1].checker, glm::vec4(9, 0, 0, 0));
+}
+
+}  // namespace
+}  // namespace hexray
