@@ -1,45 +1,64 @@
-// Ray/plane and ray/sphere intersection in forms that stay accurate in float32.
+// Ray/plane and ray/sphere intersection.
 
 // The plane y = height. A ray parallel to it (d.y = +-0) misses; so does any non-finite t.
-float intersectPlane(Ray ray, float height) {
+real intersectPlane(Ray ray, real height) {
+#ifdef HEXRAY_NAIVE
+    real t = (height - ray.origin.y) / ray.direction.y;  // textbook: +-inf and NaN slip through
+    return t > 0.0 ? t : NO_HIT;
+#else
     if (ray.direction.y == 0.0) {
         return NO_HIT;
     }
-    float t = (height - ray.origin.y) / ray.direction.y;
+    real t = (height - ray.origin.y) / ray.direction.y;
     return (t > 0.0 && !isinf(t)) ? t : NO_HIT;  // NaN fails t > 0
+#endif
 }
 
-// Nearest t > 0 on the sphere, or NO_HIT. The textbook b^2 - 4ac cancels catastrophically
-// for small or distant spheres; instead the discriminant comes from the centre's distance to
-// the ray's line (Hearn-Baker) and the roots from the stable pair q and c/q.
-float intersectSphere(Ray ray, vec3 center, float radius) {
-    vec3 f = ray.origin - center;
-    float b = dot(f, ray.direction);
-    float lineDistance = length(f - b * ray.direction);
-    float discriminant = (radius - lineDistance) * (radius + lineDistance);
+// Nearest t > 0 on the sphere, or NO_HIT (the far root when the ray starts inside).
+real intersectSphere(Ray ray, vec3r center, real radius) {
+    vec3r f = ray.origin - center;
+#ifdef HEXRAY_NAIVE
+    // Textbook b^2 - 4ac: both terms are about |f|^2 and cancel for small or distant spheres;
+    // (-b - sqrt)/2a cancels for rays starting near the surface.
+    real a = dot(ray.direction, ray.direction);
+    real b = 2.0 * dot(f, ray.direction);
+    real c = dot(f, f) - radius * radius;
+    real discriminant = b * b - 4.0 * a * c;
     if (discriminant < 0.0) {
         return NO_HIT;
     }
-    float root = sqrt(discriminant);
-    float q = -b - (b >= 0.0 ? root : -root);
+    real root = sqrt(discriminant);
+    real near = (-b - root) / (2.0 * a);
+    real far = (-b + root) / (2.0 * a);
+#else
+    // The discriminant from the centre's distance to the ray's line (Hearn-Baker) compares r
+    // with a quantity of its own size; the roots come from the stable pair q and c/q, so
+    // neither is a difference of nearly equal numbers.
+    real b = dot(f, ray.direction);
+    real lineDistance = length(f - b * ray.direction);
+    real discriminant = (radius - lineDistance) * (radius + lineDistance);
+    if (discriminant < 0.0) {
+        return NO_HIT;
+    }
+    real root = sqrt(discriminant);
+    real q = -b - (b >= 0.0 ? root : -root);
     if (q == 0.0) {
         return NO_HIT;  // tangent at the origin itself
     }
     // |f|^2 - r^2 as a product, so a shadow ray's origin just outside the sphere keeps c > 0.
-    float originDistance = length(f);
-    float c = (originDistance - radius) * (originDistance + radius);
-    float t0 = c / q;
-    float t1 = q;
-    float near = min(t0, t1);
-    float far = max(t0, t1);
+    real originDistance = length(f);
+    real c = (originDistance - radius) * (originDistance + radius);
+    real near = min(c / q, q);
+    real far = max(c / q, q);
+#endif
     if (near > 0.0) {
         return near;
     }
     return far > 0.0 ? far : NO_HIT;
 }
 
-float intersectNode(Ray ray, uint index) {
-    vec4 geometry = nodes[index].geometry;
+real intersectNode(Ray ray, uint index) {
+    vec4r geometry = nodes[index].geometry;
     if (nodes[index].kinds.x == GEOMETRY_PLANE) {
         return intersectPlane(ray, geometry.x);
     }
@@ -50,7 +69,7 @@ float intersectNode(Ray ray, uint index) {
 Hit findNearestHit(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
     for (uint i = 0u; i < frame.nodeCount; ++i) {
-        float t = intersectNode(ray, i);
+        real t = intersectNode(ray, i);
         if (t < hit.t) {
             hit = Hit(t, i);
         }
@@ -58,7 +77,7 @@ Hit findNearestHit(Ray ray) {
     return hit;
 }
 
-bool isOccluded(Ray ray, float maxDistance) {
+bool isOccluded(Ray ray, real maxDistance) {
     for (uint i = 0u; i < frame.nodeCount; ++i) {
         if (intersectNode(ray, i) < maxDistance) {
             return true;

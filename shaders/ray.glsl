@@ -1,15 +1,14 @@
 // Rays and the hits along them.
 
 struct Ray {
-    vec3 origin;
-    vec3 direction;  // unit length
+    vec3r origin;
+    vec3r direction;  // unit length
 };
 
-// Farther than any hit: float32's largest finite value (GLSL has no constant infinity).
-const float NO_HIT = 3.4028235e38;
-const uint NO_NODE = 0xffffffffu;
+const real NO_HIT = REAL_MAX;
+const uint NO_NODE = BACKGROUND;
 
 struct Hit {
-    float t;
+    real t;
     uint node;
 };

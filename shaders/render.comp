@@ -1,10 +1,12 @@
 #version 450
 // hexray's renderer: one invocation per pixel traces a primary ray, finds the nearest node,
-// shades it under the point lights with shadow rays, and writes linear RGB.
+// shades it under the point lights with shadow rays, and writes linear RGB and what the
+// pixel shows. Compiled three times: f32, f64 (HEXRAY_F64) and f32-naive (HEXRAY_NAIVE).
 #extension GL_GOOGLE_include_directive : require
 
 layout(local_size_x_id = 0, local_size_y_id = 1) in;
 
+#include "precision.glsl"
 #include "scene_data.glsl"
 #include "ray.glsl"
 #include "camera_ray.glsl"
@@ -19,6 +21,9 @@ void main() {
     }
     Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y));
     Hit hit = findNearestHit(ray);
-    vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit);
-    pixels[bandPixel.y * frame.imageSize.x + bandPixel.x] = vec4(color, 1.0);
+    uint flags = 0u;
+    vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);
+    uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
+    pixels[index] = vec4(color, 1.0);
+    classes[index] = uvec2(hit.node, flags);
 }

@@ -2,37 +2,56 @@
 // shadow ray may start without hitting the same surface again.
 
 struct Surface {
-    vec3 position;
-    vec3 normal;         // facing the side the ray came from
-    vec3 outwardNormal;  // spheres: away from the centre (texture coordinates use it)
-    vec3 shadowOrigin;
+    vec3r position;
+    vec3r normal;         // facing the side the ray came from
+    vec3r outwardNormal;  // spheres: away from the centre (texture coordinates use it)
+    vec3r shadowOrigin;
 };
 
-// float32 unit roundoff, times a few operations: a bound on the error of a reprojected point.
-const float REPROJECTION_ERROR = 5.0 * 5.9604645e-8;
+#ifdef HEXRAY_NAIVE
+// The course's fixed nudge along the normal: a no-op once it is below half an ulp of the
+// coordinates, and too large for contact shadows near the origin.
+const real SHADOW_EPSILON = 1e-4;
+#else
+// A bound on the rounding error of a reprojected sphere point, in units of its coordinates.
+const real REPROJECTION_ERROR = 5.0 * UNIT_ROUNDOFF;
+#endif
 
 Surface surfaceAt(Ray ray, Hit hit) {
-    Node node = nodes[hit.node];
-    vec3 approximate = ray.origin + hit.t * ray.direction;
+    vec4r geometry = nodes[hit.node].geometry;
+    vec3r approximate = ray.origin + hit.t * ray.direction;
     Surface s;
-    if (node.kinds.x == GEOMETRY_PLANE) {
+    if (nodes[hit.node].kinds.x == GEOMETRY_PLANE) {
+        s.outwardNormal = vec3r(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);
+        s.normal = s.outwardNormal;
+#ifdef HEXRAY_NAIVE
+        s.position = approximate;
+        s.shadowOrigin = s.position + SHADOW_EPSILON * s.normal;
+#else
         // Snapped exactly onto the plane, a shadow ray from here cannot hit it again (t = 0),
         // so no offset is needed.
-        s.position = vec3(approximate.x, node.geometry.x, approximate.z);
-        s.outwardNormal = vec3(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);
-        s.normal = s.outwardNormal;
+        s.position = vec3r(approximate.x, geometry.x, approximate.z);
         s.shadowOrigin = s.position;
+#endif
         return s;
     }
-    vec3 center = node.geometry.xyz;
-    float radius = node.geometry.w;
+    vec3r center = geometry.xyz;
+    real radius = geometry.w;
     s.outwardNormal = normalize(approximate - center);
+#ifdef HEXRAY_NAIVE
+    s.position = approximate;
+#else
     s.position = center + radius * s.outwardNormal;  // reprojected onto the sphere
+#endif
     s.normal = dot(s.outwardNormal, ray.direction) > 0.0 ? -s.outwardNormal : s.outwardNormal;
+#ifdef HEXRAY_NAIVE
+    s.shadowOrigin = s.position + SHADOW_EPSILON * s.normal;
+#else
     // Push off by the point's own error bound (it scales with the coordinates), twice over so
     // the rounding of the addition cannot pull it back: never a fixed epsilon.
-    vec3 error = REPROJECTION_ERROR * (abs(center) + abs(radius * s.outwardNormal));
-    float offset = 2.0 * dot(abs(s.outwardNormal), error);
+    vec3r error = REPROJECTION_ERROR * (abs(center) + abs(radius * s.outwardNormal));
+    real offset = 2.0 * dot(abs(s.outwardNormal), error);
     s.shadowOrigin = s.position + offset * s.normal;
+#endif
     return s;
 }

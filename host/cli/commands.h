@@ -4,14 +4,16 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "compare/compare.h"
+#include "gpu/precision.h"
 
 namespace hexray::cli {
 
 enum ExitCode : int {
     kSuccess = 0,
-    kToleranceExceeded = 1,  // compare: the renders differ by more than allowed
+    kToleranceExceeded = 1,  // compare: the renders disagree by more than allowed
     kBadInput = 2,           // scene file or command line
     kVulkanUnavailable = 3,  // no driver or device, or a Vulkan call failed
     kValidationFailed = 4,   // --validate and the validation layer reported something
@@ -20,8 +22,7 @@ enum ExitCode : int {
 
 enum class Backend { Gpu, Cpu };
 
-struct SceneOptions {
-    std::string scenePath;
+struct SizeOverride {
     std::optional<std::int64_t> width;
     std::optional<std::int64_t> height;
 };
@@ -32,18 +33,23 @@ struct VulkanOptions {
 };
 
 struct RenderOptions {
-    SceneOptions scene;
+    std::string scenePath;
+    SizeOverride size;
     VulkanOptions vulkan;
     Backend backend = Backend::Gpu;
+    Precision precision = Precision::Auto;
     std::string outputPath;  // empty: <scene name>.png in the current directory
     unsigned threads = 0;    // CPU backend; 0 = all cores
 };
 
 struct CompareOptions {
-    SceneOptions scene;
+    std::vector<std::string> scenePaths;  // scene files or directories of them
+    SizeOverride size;
     VulkanOptions vulkan;
+    Precision precision = Precision::Auto;
+    bool allPrecisions = false;  // f32-naive, f32 and f64 for every scene, as one table
     Tolerance tolerance;
-    std::string diffPath;  // empty: no heat map
+    std::string diffPath;  // empty: no heat map (single scene only)
     unsigned threads = 0;
 };
 

@@ -1,5 +1,5 @@
 // hexray: renders scene files with a Vulkan compute shader (or the CPU reference) and compares
-// the two. The command line is defined here; the work is in commands.cpp.
+// the two. The command line is defined here; the work is in the *_command.cpp files.
 
 #include <CLI/CLI.hpp>
 
@@ -7,6 +7,7 @@
 
 namespace {
 
+using namespace hexray;
 using namespace hexray::cli;
 
 constexpr const char* kExitCodes =
@@ -14,16 +15,24 @@ constexpr const char* kExitCodes =
     "3 Vulkan unavailable or failed; 4 --validate and the validation layer reported messages;\n"
     "5 the output image could not be written.";
 
-void addSceneOptions(CLI::App& command, SceneOptions& scene) {
-    command.add_option("scene", scene.scenePath, "Scene file (JSON), see README.md")->required();
-    command.add_option("--width", scene.width, "Override the scene's image width (pixels)");
-    command.add_option("--height", scene.height, "Override the scene's image height (pixels)");
+void addSizeOptions(CLI::App& command, SizeOverride& size) {
+    command.add_option("--width", size.width, "Override the scene's image width (pixels)");
+    command.add_option("--height", size.height, "Override the scene's image height (pixels)");
 }
 
 void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
     command.add_option("--device", vulkan.device,
                        "Vulkan device: index or part of the name, as `hexray devices` lists them "
                        "(default: a discrete or integrated GPU if present, else lavapipe)");
+}
+
+CLI::Option* addPrecisionOption(CLI::App& command, std::string& precision) {
+    return command
+        .add_option("--precision", precision,
+                    "Shader arithmetic: auto (per scene, see README), f32, f64 (needs shaderFloat64), or "
+                    "f32-naive (the textbook formulas, for comparison)")
+        ->check(CLI::IsMember({"auto", "f32", "f64", "f32-naive"}))
+        ->capture_default_str();
 }
 
 }  // namespace
@@ -40,34 +49,50 @@ int main(int argc, char** argv) {
                  "(exit code 4)");
 
     RenderOptions render;
+    std::string renderBackend = "gpu";
+    std::string renderPrecision = "auto";
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
-    addSceneOptions(*renderCommand, render.scene);
+    renderCommand->add_option("scene", render.scenePath, "Scene file (JSON), see README.md")->required();
     renderCommand->add_option("-o,--output", render.outputPath, "Output PNG (default: <scene name>.png here)");
-    std::string backend = "gpu";
     renderCommand
-        ->add_option("--backend", backend, "gpu: the Vulkan compute shader; cpu: the double-precision reference")
+        ->add_option("--backend", renderBackend, "gpu: the Vulkan compute shader; cpu: the double-precision reference")
         ->check(CLI::IsMember({"gpu", "cpu"}))
         ->capture_default_str();
+    addPrecisionOption(*renderCommand, renderPrecision);
+    addSizeOptions(*renderCommand, render.size);
     addDeviceOption(*renderCommand, render.vulkan);
     renderCommand->add_option("--threads", render.threads, "CPU backend threads (default: all cores)")
         ->check(CLI::PositiveNumber);
 
     CompareOptions compare;
+    std::string comparePrecision = "auto";
     CLI::App* compareCommand = app.add_subcommand(
-        "compare", "Render a scene on the GPU and on the CPU reference, print error metrics, and fail when they "
-                   "differ by more than the tolerance");
-    addSceneOptions(*compareCommand, compare.scene);
+        "compare",
+        "Render scenes on the GPU and on the CPU reference and compare them: ambiguous pixels, topology "
+        "mismatches outside them, colour errors on the rest. Fails when the tolerance is exceeded");
+    compareCommand->add_option("scenes", compare.scenePaths, "Scene files, or directories of them")->required();
+    CLI::Option* precisionOption = addPrecisionOption(*compareCommand, comparePrecision);
+    compareCommand
+        ->add_flag("--all", compare.allPrecisions,
+                   "Every precision (f32-naive, f32, f64) for every scene, as one table; f32-naive rows are "
+                   "shown but not judged")
+        ->excludes(precisionOption);
+    addSizeOptions(*compareCommand, compare.size);
     addDeviceOption(*compareCommand, compare.vulkan);
     compareCommand->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)");
     compareCommand
+        ->add_option("--max-topology-mismatches", compare.tolerance.maxTopologyMismatches,
+                     "Tolerance: unambiguous pixels whose node, checker cell or lit lights differ")
+        ->capture_default_str();
+    compareCommand
         ->add_option("--max-bad-pixels", compare.tolerance.maxSharePercent,
-                     "Tolerance: largest share of pixels, in percent, whose 8-bit value may differ by more than "
-                     "one level")
+                     "Tolerance: share of unambiguous pixels, in percent, whose 8-bit value may differ by more "
+                     "than one level")
         ->check(CLI::Range(0.0, 100.0))
         ->capture_default_str();
     compareCommand
         ->add_option("--max-rmse", compare.tolerance.maxRmseLevels,
-                     "Tolerance: largest RMSE of the 8-bit output, in levels")
+                     "Tolerance: RMSE of the 8-bit output over unambiguous pixels, in levels")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     compareCommand->add_option("--threads", compare.threads, "CPU reference threads (default: all cores)")
@@ -79,6 +104,9 @@ int main(int argc, char** argv) {
 
     try {
         app.parse(argc, argv);
+        if (renderCommand->parsed() && renderBackend == "cpu" && renderCommand->count("--precision") > 0) {
+            throw CLI::ValidationError("--precision", "applies to the GPU backend only");
+        }
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);
         return code == 0 ? kSuccess : kBadInput;
@@ -86,11 +114,13 @@ int main(int argc, char** argv) {
 
     if (renderCommand->parsed()) {
         render.vulkan.validate = validate;
-        render.backend = backend == "cpu" ? Backend::Cpu : Backend::Gpu;
+        render.backend = renderBackend == "cpu" ? Backend::Cpu : Backend::Gpu;
+        render.precision = *parsePrecision(renderPrecision);
         return runRender(render);
     }
     if (compareCommand->parsed()) {
         compare.vulkan.validate = validate;
+        compare.precision = *parsePrecision(comparePrecision);
         return runCompare(compare);
     }
     devices.validate = validate;

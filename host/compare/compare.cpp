@@ -39,6 +39,7 @@ public:
 
     ErrorMetrics result() const {
         ErrorMetrics metrics = metrics_;
+        metrics.pixels = pixels_;
         const double channels = 3.0 * double(std::max<std::uint64_t>(pixels_, 1));
         metrics.meanAbs = sumAbs_ / channels;
         metrics.rmse = std::sqrt(sumSquares_ / channels);
@@ -65,33 +66,87 @@ glm::dvec3 levelsAt(const Rgb8Image& image, std::size_t pixel) {
     return glm::dvec3(image.bytes[3 * pixel], image.bytes[3 * pixel + 1], image.bytes[3 * pixel + 2]);
 }
 
+bool considered(const PixelMask& mask, std::size_t pixel) {
+    return mask.empty() || mask[pixel];
+}
+
 }  // namespace
 
-ErrorMetrics compareLinear(const Image& reference, const Image& test) {
+PixelMask marginsBelow(const std::vector<float>& margins, double threshold) {
+    PixelMask mask(margins.size());
+    for (std::size_t i = 0; i < margins.size(); ++i) {
+        mask[i] = margins[i] < threshold;
+    }
+    return mask;
+}
+
+ErrorMetrics compareLinear(const Image& reference, const Image& test, const PixelMask& mask) {
     requireSameSize(reference.width, reference.height, test.width, test.height);
     ErrorAccumulator accumulator(1.0 / 255.0, 1.0);
     for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
-        accumulator.addPixel(displayable(test.pixels[i]) - displayable(reference.pixels[i]));
+        if (considered(mask, i)) {
+            accumulator.addPixel(displayable(test.pixels[i]) - displayable(reference.pixels[i]));
+        }
     }
     return accumulator.result();
 }
 
-ErrorMetrics compareEncoded(const Rgb8Image& reference, const Rgb8Image& test) {
+ErrorMetrics compareEncoded(const Rgb8Image& reference, const Rgb8Image& test, const PixelMask& mask) {
     requireSameSize(reference.width, reference.height, test.width, test.height);
     ErrorAccumulator accumulator(1.0, 255.0);
     const std::size_t pixels = std::size_t(reference.width) * reference.height;
     for (std::size_t i = 0; i < pixels; ++i) {
-        accumulator.addPixel(levelsAt(test, i) - levelsAt(reference, i));
+        if (considered(mask, i)) {
+            accumulator.addPixel(levelsAt(test, i) - levelsAt(reference, i));
+        }
     }
     return accumulator.result();
 }
 
-ImageComparison compareRenders(const Image& reference, const Image& test, Encoding encoding) {
-    return {compareLinear(reference, test), compareEncoded(encodeImage(reference, encoding), encodeImage(test, encoding))};
+TopologyComparison compareTopology(const std::vector<PixelClass>& reference, const std::vector<PixelClass>& test,
+                                   const PixelMask& ambiguous) {
+    if (reference.size() != test.size()) {
+        throw std::invalid_argument("cannot compare classifications of different sizes");
+    }
+    TopologyComparison topology;
+    topology.pixels = reference.size();
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        if (!ambiguous.empty() && ambiguous[i]) {
+            ++topology.ambiguous;
+            continue;
+        }
+        const PixelClass& expected = reference[i];
+        const PixelClass& actual = test[i];
+        if (expected == actual) {
+            continue;
+        }
+        ++topology.mismatches;
+        if (expected.node != actual.node) {
+            ++topology.nodeMismatches;
+        } else if ((expected.flags ^ actual.flags) & PixelClass::kOddCheckerBit) {
+            ++topology.checkerMismatches;
+        } else {
+            ++topology.lightMismatches;
+        }
+    }
+    return topology;
 }
 
-Verdict judge(const ImageComparison& comparison, const Tolerance& tolerance) {
-    return {100.0 * comparison.encoded.shareOverOneLevel <= tolerance.maxSharePercent,
+RenderComparison compareRenders(const Image& referenceImage, const std::vector<PixelClass>& referenceClasses,
+                                const PixelMask& ambiguous, const Image& testImage,
+                                const std::vector<PixelClass>& testClasses, Encoding encoding) {
+    PixelMask unambiguous(ambiguous.size());
+    for (std::size_t i = 0; i < ambiguous.size(); ++i) {
+        unambiguous[i] = !ambiguous[i];
+    }
+    return {compareTopology(referenceClasses, testClasses, ambiguous),
+            compareLinear(referenceImage, testImage, unambiguous),
+            compareEncoded(encodeImage(referenceImage, encoding), encodeImage(testImage, encoding), unambiguous)};
+}
+
+Verdict judge(const RenderComparison& comparison, const Tolerance& tolerance) {
+    return {comparison.topology.mismatches <= tolerance.maxTopologyMismatches,
+            100.0 * comparison.encoded.shareOverOneLevel <= tolerance.maxSharePercent,
             comparison.encoded.rmse <= tolerance.maxRmseLevels};
 }
 

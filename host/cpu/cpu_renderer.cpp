@@ -2,20 +2,26 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <variant>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
+#include "cpu/cpu_margins.h"
 #include "cpu/cpu_shading.h"
 
 namespace hexray {
 
 namespace {
+
+constexpr double kNoEnd = std::numeric_limits<double>::infinity();  // a camera ray's range
 
 Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y) {
     const double offset = samplingOffset(image.sampling);
@@ -27,18 +33,153 @@ Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t
     return Ray{sheet.origin, glm::normalize(aim)};
 }
 
-Color traceRay(const Scene& scene, const Ray& ray) {
-    const std::optional<SceneHit> nearest = findNearestHit(ray, scene);
+// What the renderer reports for one pixel.
+struct TracedPixel {
+    Color color{0.0};
+    PixelClass pixelClass;
+    float margin = 0.0f;
+};
+
+Color shadeNearest(const Scene& scene, const std::optional<SceneHit>& nearest) {
     if (!nearest) {
         return scene.background;
     }
     return shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit);
 }
 
-void renderRow(const Scene& scene, const PixelSheet& sheet, std::uint32_t y, Image& image) {
+// The node, and for lit shaders the checker cell and the lights that reach the hit, decided by
+// the same functions that chose the colour.
+PixelClass classify(const Scene& scene, const std::optional<SceneHit>& nearest) {
+    PixelClass pixelClass;
+    if (!nearest) {
+        return pixelClass;  // background
+    }
+    const Node& node = scene.nodes[nearest->nodeIndex];
+    const Shader& shader = scene.shaders[node.shaderIndex];
+    pixelClass.node = static_cast<std::uint32_t>(nearest->nodeIndex);
+    if (std::holds_alternative<ConstantShader>(shader)) {
+        return pixelClass;  // no lights are evaluated
+    }
+    if (const auto* checker = std::get_if<CheckerShader>(&shader)) {
+        const glm::dvec2 uv = textureCoordinates(node.geometry, nearest->hit);
+        if (checkerParity(uv.x, uv.y, checker->size) == 1) {
+            pixelClass.flags |= PixelClass::kOddCheckerBit;
+        }
+    }
+    for (std::size_t index = 0; index < scene.lights.size(); ++index) {
+        if (reachingLight(scene, node.geometry, nearest->hit, scene.lights[index])) {
+            pixelClass.flags |= PixelClass::litBit(static_cast<std::uint32_t>(index));
+        }
+    }
+    return pixelClass;
+}
+
+// The camera ray against every node: hit or miss for each, then which hit is nearest.
+void addIntersectionMargins(const Scene& scene, const Ray& ray, const std::optional<SceneHit>& nearest,
+                            MarginAccumulator& margins) {
+    const glm::dvec3& eye = ray.origin;
+    for (const Node& node : scene.nodes) {
+        if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
+            margins.add(cameraRayPlaneMargin(ray.direction.y, plane->height - eye.y));
+        } else {
+            const Sphere& sphere = std::get<Sphere>(node.geometry);
+            margins.add(sphereCrossingMargin(ray, sphere, kNoEnd, sphereScale(sphere, eye)));
+        }
+    }
+    if (!nearest) {
+        return;
+    }
+    const double nearestScale = hitPointScale(scene.nodes[nearest->nodeIndex].geometry, nearest->hit, ray);
+    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+        if (index == nearest->nodeIndex) {
+            continue;
+        }
+        const Geometry& geometry = scene.nodes[index].geometry;
+        if (const std::optional<Hit> other = intersectGeometry(ray, geometry)) {
+            const double scale = nearestScale + hitPointScale(geometry, *other, ray);
+            margins.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
+        }
+    }
+}
+
+// The shadow ray from the hit toward a light that it faces, against every node that could
+// block it. The shaded node itself cannot: a sphere's lit side sees nothing of its own sphere
+// (convexity), and a shadow ray leaves its plane.
+void addShadowMargins(const Scene& scene, std::size_t shadedNode, const Hit& hit, double hitScale,
+                      const glm::dvec3& eye, const PointLight& light, MarginAccumulator& margins) {
+    const glm::dvec3 toLight = light.position - hit.point;
+    const double distance = glm::length(toLight);
+    const Ray shadowRay{hit.point, toLight / distance};
+    const double segmentScale = hitScale + glm::length(light.position - eye);
+    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+        if (index == shadedNode) {
+            continue;
+        }
+        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
+            margins.add(planeSegmentMargin(hit.point.y - plane->height, light.position.y - plane->height,
+                                           segmentScale + std::abs(plane->height - eye.y)));
+        } else {
+            const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
+            margins.add(sphereCrossingMargin(shadowRay, sphere, distance, segmentScale + sphereScale(sphere, eye)));
+        }
+    }
+}
+
+// The decisions of a lit shader: the checker cell, and for each light whether the surface faces
+// it and, if so, whether anything blocks it. A constant shader makes none.
+void addShadingMargins(const Scene& scene, const Ray& ray, const SceneHit& nearest, MarginAccumulator& margins) {
+    const Node& node = scene.nodes[nearest.nodeIndex];
+    const Shader& shader = scene.shaders[node.shaderIndex];
+    if (std::holds_alternative<ConstantShader>(shader)) {
+        return;
+    }
+    const Hit& hit = nearest.hit;
+    const glm::dvec3& eye = ray.origin;
+    const double hitScale = hitPointScale(node.geometry, hit, ray);
+    const auto* sphere = std::get_if<Sphere>(&node.geometry);
+    const double normalRoundoff = sphere ? hitScale / std::abs(sphere->radius) : 0.0;  // a plane's is exact
+
+    if (const auto* checker = std::get_if<CheckerShader>(&shader)) {
+        if (sphere) {
+            margins.add(sphereCheckerMargin(hit.geometricNormal, checker->size, normalRoundoff));
+        } else {
+            margins.add(planeCheckerMargin(textureCoordinates(node.geometry, hit), checker->size, hitScale));
+        }
+    }
+    for (const PointLight& light : scene.lights) {
+        const glm::dvec3 toLight = light.position - hit.point;
+        const double distance = glm::length(toLight);
+        if (distance == 0.0) {
+            margins.add(0.0);  // a light on the point: no direction to face, nothing to decide by
+            continue;
+        }
+        const double cosTheta = glm::dot(hit.facingNormal, toLight / distance);
+        const double directionRoundoff = (hitScale + glm::length(light.position - eye)) / distance;
+        margins.add(facingMargin(cosTheta, normalRoundoff, directionRoundoff));
+        if (cosTheta > 0.0) {
+            addShadowMargins(scene, nearest.nodeIndex, hit, hitScale, eye, light, margins);
+        }
+    }
+}
+
+TracedPixel tracePixel(const Scene& scene, const Ray& ray) {
+    const std::optional<SceneHit> nearest = findNearestHit(ray, scene);
+    MarginAccumulator margins;
+    addIntersectionMargins(scene, ray, nearest, margins);
+    if (nearest) {
+        addShadingMargins(scene, ray, *nearest, margins);
+    }
+    return {shadeNearest(scene, nearest), classify(scene, nearest), margins.stored()};
+}
+
+void renderRow(const Scene& scene, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
+    Image& image = render.image;
     for (std::uint32_t x = 0; x < image.width; ++x) {
-        const Color color = traceRay(scene, cameraRay(sheet, scene.image, x, y));
-        image.at(x, y) = glm::vec3(color);  // linear, not clamped: encoding happens later
+        const TracedPixel pixel = tracePixel(scene, cameraRay(sheet, scene.image, x, y));
+        const std::size_t index = std::size_t(y) * image.width + x;
+        image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
+        render.classes[index] = pixel.pixelClass;
+        render.margins[index] = pixel.margin;
     }
 }
 
@@ -55,12 +196,16 @@ void checkShaderIndices(const Scene& scene) {
 
 }  // namespace
 
-Image renderOnCpu(const Scene& scene, unsigned threadCount) {
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
     checkShaderIndices(scene);
 
-    Image image(scene.image.width, scene.image.height);
+    CpuRender render;
+    render.image = Image(scene.image.width, scene.image.height);
+    render.classes.resize(render.image.pixels.size());
+    render.margins.resize(render.image.pixels.size());
+    const Image& image = render.image;
     if (image.width == 0 || image.height == 0) {
-        return image;
+        return render;
     }
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
 
@@ -73,7 +218,7 @@ Image renderOnCpu(const Scene& scene, unsigned threadCount) {
     // the image are shared out; each row is written by exactly one worker, so no locking.
     const auto renderRows = [&](unsigned worker) {
         for (std::uint32_t y = worker; y < image.height; y += threadCount) {
-            renderRow(scene, sheet, y, image);
+            renderRow(scene, sheet, y, render);
         }
     };
     {
@@ -85,7 +230,7 @@ Image renderOnCpu(const Scene& scene, unsigned threadCount) {
         }
         renderRows(0);  // the calling thread is worker 0
     }
-    return image;
+    return render;
 }
 
 }  // namespace hexray

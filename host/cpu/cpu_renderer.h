@@ -2,12 +2,31 @@
 // The CPU reference renderer: the same model as the shader, written independently,
 // in double precision and for clarity rather than speed.
 
+#include <vector>
+
 #include "image/image.h"
+#include "image/pixel_class.h"
 #include "scene/scene.h"
 
 namespace hexray {
 
+// A decision whose relative margin is below this could go the other way under a
+// float32-sized perturbation of the shader's camera-relative arithmetic (2^-17: 128 float32
+// units of roundoff, room for the error of a chain of operations).
+inline constexpr double kAmbiguityMargin = 1.0 / 131072.0;
+
+struct CpuRender {
+    Image image;
+    std::vector<PixelClass> classes;  // per pixel, row-major like the image
+    // Per pixel, the smallest relative margin of any discrete decision made for it (hit or
+    // miss, which node, which checker cell, facing each light, shadowed or not); infinity
+    // when no decision was made. Below kAmbiguityMargin the pixel is ambiguous.
+    std::vector<float> margins;
+
+    bool isAmbiguous(std::size_t pixel) const { return margins[pixel] < kAmbiguityMargin; }
+};
+
 // Renders one ray per pixel, rows spread over `threadCount` threads (0 = all cores).
-Image renderOnCpu(const Scene& scene, unsigned threadCount = 0);
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
 
 }  // namespace hexray

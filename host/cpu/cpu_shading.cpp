@@ -90,23 +90,30 @@ bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit
     return isSegmentClear(scene, origin, lightPosition, offset);
 }
 
+std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
+                                           const PointLight& light) {
+    const glm::dvec3 toLight = light.position - hit.point;
+    const double distanceSquared = glm::dot(toLight, toLight);
+    if (distanceSquared == 0.0) {
+        return std::nullopt;  // a light on the point itself has no direction; 0 rather than 0/0
+    }
+    const glm::dvec3 directionToLight = toLight / std::sqrt(distanceSquared);
+    const double cosTheta = glm::dot(hit.facingNormal, directionToLight);
+    if (cosTheta <= 0.0) {
+        return std::nullopt;  // lit from behind: no light, and no shadow ray to go wrong at the terminator
+    }
+    if (!isLightVisible(scene, geometry, hit, light.position)) {
+        return std::nullopt;
+    }
+    return ReachingLight{cosTheta, distanceSquared};
+}
+
 Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit) {
     Color total = scene.ambient;
     for (const PointLight& light : scene.lights) {
-        const glm::dvec3 toLight = light.position - hit.point;
-        const double distanceSquared = glm::dot(toLight, toLight);
-        if (distanceSquared == 0.0) {
-            continue;  // a light on the point itself has no direction; 0 rather than 0/0
+        if (const std::optional<ReachingLight> reaching = reachingLight(scene, geometry, hit, light)) {
+            total += light.color * (light.intensity * reaching->cosTheta / reaching->distanceSquared);
         }
-        const glm::dvec3 directionToLight = toLight / std::sqrt(distanceSquared);
-        const double cosTheta = glm::dot(hit.facingNormal, directionToLight);
-        if (cosTheta <= 0.0) {
-            continue;  // lit from behind: no light, and no shadow ray to go wrong at the terminator
-        }
-        if (!isLightVisible(scene, geometry, hit, light.position)) {
-            continue;
-        }
-        total += light.color * (light.intensity * cosTheta / distanceSquared);
     }
     return total;
 }

@@ -2,6 +2,8 @@
 // Shading for the CPU reference renderer: checker texture, Lambert light with shadow rays,
 // constant colour. Double precision, written independently of the shader.
 
+#include <optional>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -37,6 +39,17 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
 // Whether the light at `lightPosition` can see the hit point (the shadow ray, offset as above).
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
                     const glm::dvec3& lightPosition);
+
+// How a light reaches a hit point that it lights.
+struct ReachingLight {
+    double cosTheta = 0.0;         // facing normal . direction to the light, > 0
+    double distanceSquared = 0.0;  // from the hit point to the light, > 0
+};
+
+// The light's cos and squared distance when it contributes to the hit; nothing when it does not:
+// it lies on the point itself, the surface faces away from it (cos <= 0), or it is shadowed.
+std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
+                                           const PointLight& light);
 
 // ambient + sum over visible lights of lightColor * intensity * max(0, cos) / r^2.
 // No pi factor: intensity 10000 at distance 100 at normal incidence gives 1.

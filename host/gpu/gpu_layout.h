@@ -2,8 +2,9 @@
 // The scene as the shader reads it: C++ mirrors of the std430 blocks in shaders/scene_data.glsl.
 // Every offset is pinned by a static_assert so that a change on one side cannot drift silently.
 //
-// All positions are camera-relative (the host subtracts the eye position in double before
-// converting to float), so large world coordinates cost the shader no precision.
+// Positions are stored in the shader's precision, `Real` (float for the f32 variants, double
+// for f64); colours are always float. In std430 a vec4 of doubles is 32-byte aligned, which
+// C++ does not do by itself: RealVec4 carries that alignment.
 
 #include <cstddef>
 #include <cstdint>
@@ -21,67 +22,108 @@ inline constexpr std::uint32_t kFrameBinding = 0;
 inline constexpr std::uint32_t kNodeBinding = 1;
 inline constexpr std::uint32_t kLightBinding = 2;
 inline constexpr std::uint32_t kPixelBinding = 3;
+inline constexpr std::uint32_t kClassBinding = 4;
 
 enum GeometryKind : std::uint32_t { kGeometryPlane = 0, kGeometrySphere = 1 };
 enum ShaderKind : std::uint32_t { kShaderConstant = 0, kShaderLambert = 1, kShaderChecker = 2 };
 
+template <typename Real>
+struct alignas(4 * sizeof(Real)) RealVec4 : glm::vec<4, Real> {
+    using glm::vec<4, Real>::vec;
+    RealVec4() : glm::vec<4, Real>(0) {}
+    RealVec4(const glm::vec<4, Real>& v) : glm::vec<4, Real>(v) {}
+};
+
+template <typename Real>
 struct GpuFrame {
-    glm::vec4 sheetTopLeft;  // .xyz: the pixel sheet, see camera.h (the eye is the origin)
-    glm::vec4 sheetRight;
-    glm::vec4 sheetDown;
+    RealVec4<Real> origin;        // .xyz: the eye; 0 when the scene is uploaded camera-relative
+    RealVec4<Real> sheetTopLeft;  // .xyz: the pixel sheet, see camera.h
+    RealVec4<Real> sheetRight;
+    RealVec4<Real> sheetDown;
     glm::vec4 background;  // .rgb
     glm::vec4 ambient;     // .rgb
     glm::uvec2 imageSize;
     float samplingOffset;  // 0.5: pixel centres; 0: the course's pixel corners
     std::uint32_t nodeCount;
     std::uint32_t lightCount;
-    std::uint32_t padding[3];
 };
-static_assert(offsetof(GpuFrame, sheetTopLeft) == 0);
-static_assert(offsetof(GpuFrame, sheetRight) == 16);
-static_assert(offsetof(GpuFrame, sheetDown) == 32);
-static_assert(offsetof(GpuFrame, background) == 48);
-static_assert(offsetof(GpuFrame, ambient) == 64);
-static_assert(offsetof(GpuFrame, imageSize) == 80);
-static_assert(offsetof(GpuFrame, samplingOffset) == 88);
-static_assert(offsetof(GpuFrame, nodeCount) == 92);
-static_assert(offsetof(GpuFrame, lightCount) == 96);
-static_assert(sizeof(GpuFrame) == 112);
 
 // A node carries its own copy of its shader's parameters: one fetch per candidate, no indirection.
+template <typename Real>
 struct GpuNode {
-    glm::uvec4 kinds;     // .x GeometryKind, .y ShaderKind
-    glm::vec4 geometry;   // plane: .x = height; sphere: .xyz = centre, .w = radius
-    glm::vec4 color1;     // .rgb: constant / lambert colour, checker's first colour
-    glm::vec4 color2;     // .rgb: checker's second colour
+    glm::uvec4 kinds;         // .x GeometryKind, .y ShaderKind
+    RealVec4<Real> geometry;  // plane: .x = height; sphere: .xyz = centre, .w = radius
+    glm::vec4 color1;         // .rgb: constant / lambert colour, checker's first colour
+    glm::vec4 color2;         // .rgb: checker's second colour
     // Checker: .x = square size; .yz = the eye's fractional cell position (x, z) / size on a
     // plane (the integer part is folded into .w), .w = parity (0 or 1) of the eye's whole cells.
-    glm::vec4 checker;
+    RealVec4<Real> checker;
 };
-static_assert(offsetof(GpuNode, kinds) == 0);
-static_assert(offsetof(GpuNode, geometry) == 16);
-static_assert(offsetof(GpuNode, color1) == 32);
-static_assert(offsetof(GpuNode, color2) == 48);
-static_assert(offsetof(GpuNode, checker) == 64);
-static_assert(sizeof(GpuNode) == 80);
 
+template <typename Real>
 struct GpuLight {
-    glm::vec4 position;  // .xyz
-    glm::vec4 power;     // .rgb = colour * intensity
+    RealVec4<Real> position;  // .xyz
+    glm::vec4 power;          // .rgb = colour * intensity
 };
-static_assert(offsetof(GpuLight, position) == 0);
-static_assert(offsetof(GpuLight, power) == 16);
-static_assert(sizeof(GpuLight) == 32);
 
-// Which rows of the image one dispatch covers (large images render in bands).
+// Which rows of the image one dispatch covers (large images render in bands): push constants.
 struct GpuBand {
     std::uint32_t firstRow;
     std::uint32_t rowCount;
 };
-static_assert(sizeof(GpuBand) == 8);
 
 // One output pixel: linear RGB in .rgb, .a unused.
 using GpuPixel = glm::vec4;
+
+// One output classification: PixelClass's node and flags (see image/pixel_class.h).
+using GpuPixelClass = glm::uvec2;
+
+// --- std430 offsets, float variant
+static_assert(offsetof(GpuFrame<float>, origin) == 0);
+static_assert(offsetof(GpuFrame<float>, sheetTopLeft) == 16);
+static_assert(offsetof(GpuFrame<float>, sheetRight) == 32);
+static_assert(offsetof(GpuFrame<float>, sheetDown) == 48);
+static_assert(offsetof(GpuFrame<float>, background) == 64);
+static_assert(offsetof(GpuFrame<float>, ambient) == 80);
+static_assert(offsetof(GpuFrame<float>, imageSize) == 96);
+static_assert(offsetof(GpuFrame<float>, samplingOffset) == 104);
+static_assert(offsetof(GpuFrame<float>, nodeCount) == 108);
+static_assert(offsetof(GpuFrame<float>, lightCount) == 112);
+static_assert(sizeof(GpuFrame<float>) == 128);
+static_assert(offsetof(GpuNode<float>, kinds) == 0);
+static_assert(offsetof(GpuNode<float>, geometry) == 16);
+static_assert(offsetof(GpuNode<float>, color1) == 32);
+static_assert(offsetof(GpuNode<float>, color2) == 48);
+static_assert(offsetof(GpuNode<float>, checker) == 64);
+static_assert(sizeof(GpuNode<float>) == 80);
+static_assert(offsetof(GpuLight<float>, position) == 0);
+static_assert(offsetof(GpuLight<float>, power) == 16);
+static_assert(sizeof(GpuLight<float>) == 32);
+
+// --- std430 offsets, double variant (dvec4 aligned to 32)
+static_assert(offsetof(GpuFrame<double>, origin) == 0);
+static_assert(offsetof(GpuFrame<double>, sheetTopLeft) == 32);
+static_assert(offsetof(GpuFrame<double>, sheetRight) == 64);
+static_assert(offsetof(GpuFrame<double>, sheetDown) == 96);
+static_assert(offsetof(GpuFrame<double>, background) == 128);
+static_assert(offsetof(GpuFrame<double>, ambient) == 144);
+static_assert(offsetof(GpuFrame<double>, imageSize) == 160);
+static_assert(offsetof(GpuFrame<double>, samplingOffset) == 168);
+static_assert(offsetof(GpuFrame<double>, nodeCount) == 172);
+static_assert(offsetof(GpuFrame<double>, lightCount) == 176);
+static_assert(sizeof(GpuFrame<double>) == 192);
+static_assert(offsetof(GpuNode<double>, kinds) == 0);
+static_assert(offsetof(GpuNode<double>, geometry) == 32);
+static_assert(offsetof(GpuNode<double>, color1) == 64);
+static_assert(offsetof(GpuNode<double>, color2) == 80);
+static_assert(offsetof(GpuNode<double>, checker) == 96);
+static_assert(sizeof(GpuNode<double>) == 128);
+static_assert(offsetof(GpuLight<double>, position) == 0);
+static_assert(offsetof(GpuLight<double>, power) == 32);
+static_assert(sizeof(GpuLight<double>) == 64);
+
+static_assert(sizeof(GpuBand) == 8);
 static_assert(sizeof(GpuPixel) == 16);
+static_assert(sizeof(GpuPixelClass) == 8);
 
 }  // namespace hexray::gpu

@@ -1,7 +1,6 @@
 #include "gpu/gpu_renderer.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdint>
 #include <span>
@@ -11,18 +10,30 @@
 #include "vulkan/host_visible_buffer.h"
 
 namespace {
-#include "render_comp_spv.h"  // kRenderCompSpv, generated from shaders/render.comp at build time
-}
+// SPIR-V generated from shaders/render.comp at build time, one array per precision variant.
+#include "kRenderF32NaiveSpv.h"
+#include "kRenderF32Spv.h"
+#include "kRenderF64Spv.h"
+}  // namespace
 
 namespace hexray {
 namespace {
 
 using gpu::GpuBand;
 using gpu::GpuPixel;
+using gpu::GpuPixelClass;
 using gpu::kWorkgroupSize;
 
-constexpr std::array<std::uint32_t, 4> kBindings = {gpu::kFrameBinding, gpu::kNodeBinding, gpu::kLightBinding,
-                                                    gpu::kPixelBinding};
+constexpr std::array<std::uint32_t, 5> kBindings = {gpu::kFrameBinding, gpu::kNodeBinding, gpu::kLightBinding,
+                                                    gpu::kPixelBinding, gpu::kClassBinding};
+
+std::span<const std::uint32_t> spirvFor(Precision precision) {
+    switch (precision) {
+        case Precision::F32Naive: return kRenderF32NaiveSpv;
+        case Precision::F64: return kRenderF64Spv;
+        default: return kRenderF32Spv;
+    }
+}
 
 vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device) {
     std::vector<vk::DescriptorSetLayoutBinding> bindings;
@@ -39,8 +50,9 @@ vk::raii::PipelineLayout createPipelineLayout(const vk::raii::Device& device,
     return vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo({}, layouts, band));
 }
 
-vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii::PipelineLayout& layout) {
-    const vk::raii::ShaderModule module(device, vk::ShaderModuleCreateInfo({}, sizeof(kRenderCompSpv), kRenderCompSpv));
+vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii::PipelineLayout& layout,
+                                  std::span<const std::uint32_t> spirv) {
+    const vk::raii::ShaderModule module(device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
     // Local size x and y are specialization constants 0 and 1, so the host's value is the only one.
     const std::array<vk::SpecializationMapEntry, 2> entries = {
         vk::SpecializationMapEntry(0, 0, sizeof(std::uint32_t)),
@@ -50,6 +62,33 @@ vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main",
                                                   &specialization);
     return vk::raii::Pipeline(device, nullptr, vk::ComputePipelineCreateInfo({}, stage, *layout));
+}
+
+// The scene in the chosen variant's layout, as the bytes the buffers receive.
+struct PackedScene {
+    std::vector<std::byte> frame;
+    std::vector<std::byte> nodes;
+    std::vector<std::byte> lights;
+};
+
+template <typename T>
+std::vector<std::byte> bytesOf(std::span<const T> values) {
+    const auto bytes = std::as_bytes(values);
+    return {bytes.begin(), bytes.end()};
+}
+
+template <typename Real>
+PackedScene packBytes(const Scene& scene, gpu::Placement placement) {
+    const gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, placement);
+    return {bytesOf(std::span(&packed.frame, 1)), bytesOf(std::span(packed.nodes)), bytesOf(std::span(packed.lights))};
+}
+
+PackedScene packFor(const Scene& scene, Precision precision) {
+    switch (precision) {
+        case Precision::F64: return packBytes<double>(scene, gpu::Placement::CameraRelative);
+        case Precision::F32Naive: return packBytes<float>(scene, gpu::Placement::World);
+        default: return packBytes<float>(scene, gpu::Placement::CameraRelative);
+    }
 }
 
 std::uint32_t groupsFor(std::uint32_t count) {
@@ -67,7 +106,6 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
       maxBandBytes_(maxBandBytes),
       setLayout_(createSetLayout(context.device())),
       pipelineLayout_(createPipelineLayout(context.device(), setLayout_)),
-      pipeline_(createPipeline(context.device(), pipelineLayout_)),
       commandPool_(context.device(),
                    vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, context.queueFamily())),
       timestamps_(nullptr) {
@@ -80,9 +118,31 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
     }
 }
 
-GpuRenderResult GpuRenderer::render(const Scene& scene) {
+Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
+    const bool hasFloat64 = context_.selected().hasFloat64;
+    if (requested == Precision::Auto) {
+        return choosePrecision(scene, hasFloat64);
+    }
+    if (requested == Precision::F64 && !hasFloat64) {
+        throw VulkanError("--precision f64 needs shaderFloat64, which " + context_.selected().name +
+                          " does not have; use --precision f32");
+    }
+    return requested;
+}
+
+const vk::raii::Pipeline& GpuRenderer::pipeline(Precision precision) {
+    std::optional<vk::raii::Pipeline>& slot = pipelines_[std::size_t(precision)];
+    if (!slot) {
+        slot.emplace(createPipeline(context_.device(), pipelineLayout_, spirvFor(precision)));
+    }
+    return *slot;
+}
+
+GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested) {
+    const Precision precision = resolve(scene, requested);
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
+    const vk::raii::Pipeline& computePipeline = pipeline(precision);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
 
@@ -90,16 +150,17 @@ GpuRenderResult GpuRenderer::render(const Scene& scene) {
     const vk::DeviceSize rowBytes = vk::DeviceSize{width} * sizeof(GpuPixel);
     const vk::DeviceSize bandBytes =
         std::min<vk::DeviceSize>(physicalDevice.getProperties().limits.maxStorageBufferRange, maxBandBytes_);
-    const std::uint32_t rowsPerBand =
-        std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
+    const std::uint32_t rowsPerBand = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
+    const std::size_t bandPixels = std::size_t(rowsPerBand) * width;
 
-    const gpu::GpuScene packed = gpu::packScene(scene);
+    const PackedScene packed = packFor(scene, precision);
     const vk::BufferUsageFlags usage = vk::BufferUsageFlagBits::eStorageBuffer;
-    HostVisibleBuffer frameBuffer(device, physicalDevice, sizeof(packed.frame), usage);
-    HostVisibleBuffer nodeBuffer(device, physicalDevice, std::span(packed.nodes).size_bytes(), usage);
-    HostVisibleBuffer lightBuffer(device, physicalDevice, std::span(packed.lights).size_bytes(), usage);
-    HostVisibleBuffer pixelBuffer(device, physicalDevice, rowsPerBand * rowBytes, usage);
-    frameBuffer.upload(std::span(&packed.frame, 1));
+    HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), usage);
+    HostVisibleBuffer nodeBuffer(device, physicalDevice, packed.nodes.size(), usage);
+    HostVisibleBuffer lightBuffer(device, physicalDevice, packed.lights.size(), usage);
+    HostVisibleBuffer pixelBuffer(device, physicalDevice, bandPixels * sizeof(GpuPixel), usage);
+    HostVisibleBuffer classBuffer(device, physicalDevice, bandPixels * sizeof(GpuPixelClass), usage);
+    frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
 
@@ -109,7 +170,8 @@ GpuRenderResult GpuRenderer::render(const Scene& scene) {
     const vk::DescriptorSetLayout layouts[] = {*setLayout_};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
-    const std::array<const HostVisibleBuffer*, 4> buffers = {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer};
+    const std::array<const HostVisibleBuffer*, 5> buffers = {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer,
+                                                             &classBuffer};
     for (std::size_t i = 0; i < kBindings.size(); ++i) {
         const vk::DescriptorBufferInfo info(*buffers[i]->buffer(), 0, buffers[i]->size());
         device.updateDescriptorSets(vk::WriteDescriptorSet(*set, kBindings[i], 0, vk::DescriptorType::eStorageBuffer,
@@ -131,14 +193,14 @@ GpuRenderResult GpuRenderer::render(const Scene& scene) {
             commands.resetQueryPool(*timestamps_, 0, 2);
             commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
         }
-        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *computePipeline);
         commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *set, nullptr);
         commands.pushConstants<GpuBand>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute, 0, band);
         commands.dispatch(groupsX, groupsY, 1);
         if (useTimestamps) {
             commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
         }
-        // The shader's writes must be visible to the host's reads of the mapped pixel buffer.
+        // The shader's writes must be visible to the host's reads of the mapped buffers.
         const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
         commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {},
                                  toHost, nullptr, nullptr);
@@ -162,6 +224,8 @@ GpuRenderResult GpuRenderer::render(const Scene& scene) {
 
     GpuRenderResult result;
     result.image = Image(width, height);
+    result.classes.resize(std::size_t(width) * height);
+    result.precision = precision;
     result.timing.fromTimestamps = static_cast<bool>(*timestamps_);
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
     // dispatch) is not counted as render time.
@@ -171,10 +235,14 @@ GpuRenderResult GpuRenderer::render(const Scene& scene) {
     for (std::uint32_t firstRow = 0; firstRow < height; firstRow += rowsPerBand) {
         const std::uint32_t rows = std::min(rowsPerBand, height - firstRow);
         result.timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
+        const std::size_t count = std::size_t(rows) * width;
+        const std::size_t first = std::size_t(firstRow) * width;
         const auto* pixels = reinterpret_cast<const GpuPixel*>(pixelBuffer.data());
-        std::transform(pixels, pixels + std::size_t(rows) * width,
-                       result.image.pixels.begin() + std::ptrdiff_t(std::size_t(firstRow) * width),
+        std::transform(pixels, pixels + count, result.image.pixels.begin() + std::ptrdiff_t(first),
                        [](const GpuPixel& p) { return glm::vec3(p); });
+        const auto* classes = reinterpret_cast<const GpuPixelClass*>(classBuffer.data());
+        std::transform(classes, classes + count, result.classes.begin() + std::ptrdiff_t(first),
+                       [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
     }
     return result;
 }

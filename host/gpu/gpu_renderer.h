@@ -1,7 +1,13 @@
 #pragma once
 // Renders a scene with the compute shader in shaders/render.comp.
 
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "gpu/precision.h"
 #include "image/image.h"
+#include "image/pixel_class.h"
 #include "scene/scene.h"
 #include "vulkan/vulkan_context.h"
 
@@ -15,10 +21,13 @@ struct GpuTiming {
 
 struct GpuRenderResult {
     Image image;
+    std::vector<PixelClass> classes;  // per pixel, row-major like the image
+    Precision precision = Precision::F32;  // the variant that rendered (never Auto)
     GpuTiming timing;
 };
 
-// Owns the pipeline for one device; render() may be called for any number of scenes.
+// Owns the pipelines for one device (each precision variant is built on first use);
+// render() may be called for any number of scenes.
 class GpuRenderer {
 public:
     // Images whose pixels exceed `maxBandBytes` (or the device's storage-buffer limit, if
@@ -27,14 +36,21 @@ public:
 
     explicit GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes = kDefaultMaxBandBytes);
 
-    GpuRenderResult render(const Scene& scene);
+    // Precision::Auto picks per scene (choosePrecision). Throws VulkanError for F64 on a
+    // device without shaderFloat64.
+    GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto);
+
+    // The precision render() would use for `scene`.
+    Precision resolve(const Scene& scene, Precision requested) const;
 
 private:
+    const vk::raii::Pipeline& pipeline(Precision precision);
+
     const VulkanContext& context_;
     std::uint64_t maxBandBytes_;
     vk::raii::DescriptorSetLayout setLayout_;
     vk::raii::PipelineLayout pipelineLayout_;
-    vk::raii::Pipeline pipeline_;
+    std::array<std::optional<vk::raii::Pipeline>, 4> pipelines_;  // indexed by Precision
     vk::raii::CommandPool commandPool_;
     vk::raii::QueryPool timestamps_;  // null when the queue cannot write timestamps
     double nanosecondsPerTick_ = 1.0;

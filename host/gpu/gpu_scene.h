@@ -1,5 +1,5 @@
 #pragma once
-// Packs the scene model into the shader's layout (gpu_layout.h), in camera-relative float.
+// Packs the scene model into the shader's layout (gpu_layout.h).
 
 #include <vector>
 
@@ -8,14 +8,26 @@
 
 namespace hexray::gpu {
 
+template <typename Real>
 struct GpuScene {
-    GpuFrame frame{};
-    std::vector<GpuNode> nodes;
-    std::vector<GpuLight> lights;
+    GpuFrame<Real> frame{};
+    std::vector<GpuNode<Real>> nodes;
+    std::vector<GpuLight<Real>> lights;
 };
 
-// Subtracts the eye position from every position in double before rounding to float, so a
-// scene far from the world origin renders as precisely as one at it.
-GpuScene packScene(const Scene& scene);
+enum class Placement {
+    // Subtract the eye in double and divide every length by a power of two near the scene's
+    // size before rounding to Real: far-off scenes lose no precision, and very large or very
+    // small scenes neither overflow nor underflow. Both are exact for a power of two.
+    CameraRelative,
+    // World coordinates as given, rounded to Real: the textbook upload, for f32-naive.
+    World,
+};
+
+template <typename Real>
+GpuScene<Real> packScene(const Scene& scene, Placement placement);
+
+// The power of two the camera-relative placement divides lengths by.
+double placementScale(const Scene& scene);
 
 }  // namespace hexray::gpu

@@ -21,10 +21,7 @@ public:
     vk::DeviceSize size() const { return size_; }
     std::byte* data() const { return mapped_; }
 
-    template <typename T>
-    void upload(std::span<const T> values) {
-        std::memcpy(mapped_, values.data(), values.size_bytes());
-    }
+    void upload(std::span<const std::byte> bytes) { std::memcpy(mapped_, bytes.data(), bytes.size()); }
 
 private:
     vk::DeviceSize size_;

@@ -189,8 +189,11 @@ VulkanContext::VulkanContext(const Options& options)
 
     const float priority = 1.0f;
     const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily_, 1, &priority);
+    // float64 only if the device has it; the f64 shader variant checks before it is used.
+    vk::PhysicalDeviceFeatures features;
+    features.shaderFloat64 = selected_.hasFloat64 ? VK_TRUE : VK_FALSE;
     try {
-        device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo));
+        device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo, {}, {}, &features));
     } catch (const vk::SystemError& error) {
         throw VulkanError("cannot create a Vulkan device on " + selected_.name + ": " + error.what());
     }

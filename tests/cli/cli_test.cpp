@@ -120,20 +120,46 @@ TEST_F(CliTest, RenderUnderTheValidationLayerIsClean) {
 TEST_F(CliTest, ComparePrintsMetricsAndPassesOnTheDemoScene) {
     const RunResult run = hexray("compare " + scene("lecture-demo.json") + " --diff diff.png");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    for (const char* expected : {"max abs", "mean abs", "RMSE", "PSNR", "pixels > 1 level", "linear [0,1]",
-                                 "8-bit [levels]", "PASS"}) {
+    for (const char* expected : {"ambiguous pixels", "topology mismatches on unambiguous pixels: 0", "max abs",
+                                 "mean abs", "RMSE", "PSNR", "pixels > 1 level", "linear [0,1]", "8-bit [levels]",
+                                 "gpu f32, chosen by auto", "PASS"}) {
         EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " missing from:\n" << run.out;
     }
     const Rgb8Image diff = readPng(dir_ / "diff.png");
     EXPECT_EQ(diff.width, 800u);
 }
 
-TEST_F(CliTest, CompareFailsWithExitCode1WhenTheToleranceIsExceeded) {
-    // The course scene has whole rows on checker edges, so float32 and double disagree somewhere.
-    const RunResult run = hexray("compare " + scene("course-2024-lecture4.json") + " --max-bad-pixels 0 --max-rmse 0");
+TEST_F(CliTest, CompareFailsWithExitCode1WhenTopologyDiffers) {
+    // The textbook formulas in world coordinates cannot place a checker edge at 1e7.
+    const RunResult run =
+        hexray("compare " + scene("hard/checker-far-1e7.json") + " --precision f32-naive");
     EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
     EXPECT_NE(run.out.find("EXCEEDED"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("FAIL"), std::string::npos);
+}
+
+TEST_F(CliTest, CompareAllPrintsOneTableOfScenesAndPrecisions) {
+    const RunResult run = hexray("compare --all " + scene("lecture-demo.json") + " " + scene("constant-debug.json"));
+    ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+    EXPECT_NE(run.out.find("| scene | precision | auto | topology mismatches | ambiguous |"), std::string::npos)
+        << run.out;
+    for (const char* row : {"| lecture-demo.json | f32-naive |", "| lecture-demo.json | f32 | ✓ |",
+                            "| lecture-demo.json | f64 |", "| constant-debug.json | f32 | ✓ |"}) {
+        EXPECT_NE(run.out.find(row), std::string::npos) << row << " missing from:\n" << run.out;
+    }
+}
+
+TEST_F(CliTest, RenderInDoublePrecisionSaysSo) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o d.png --precision f64 --width 64 --height 48");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("gpu f64"), std::string::npos) << run.out;
+}
+
+TEST_F(CliTest, PrecisionWithTheCpuBackendIsRejected) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o d.png --backend cpu --precision f64");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--precision"), std::string::npos) << run.err;
+    EXPECT_TRUE(createdFiles().empty());
 }
 
 TEST_F(CliTest, DevicesListsLavapipe) {

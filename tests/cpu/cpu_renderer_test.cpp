@@ -1,6 +1,7 @@
 // The CPU reference end to end: tiny scenes whose pixels can be worked out by hand.
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <tuple>
@@ -43,14 +44,14 @@ Scene groundScene() {
 }  // namespace
 
 TEST(RenderOnCpu, ImageHasTheScenesSize) {
-    const Image image = renderOnCpu(groundScene(), 1);
+    const Image image = renderOnCpu(groundScene(), 1).image;
     EXPECT_EQ(image.width, 8u);
     EXPECT_EQ(image.height, 6u);
     EXPECT_EQ(image.pixels.size(), 48u);
 }
 
 TEST(RenderOnCpu, PixelLookingAtTheSkyGetsTheBackground) {
-    const Image image = renderOnCpu(groundScene(), 1);
+    const Image image = renderOnCpu(groundScene(), 1).image;
     expectPixel(image, 0, 0, {0.1, 0.2, 0.3}, 0.0);  // aims up at (-0.8, 0.6, 1)
     expectPixel(image, 7, 2, {0.1, 0.2, 0.3}, 0.0);  // aims up at (0.6, 0.2, 1)
     // Pixel (4, 3) aims at the sheet's centre, (0, 0, 1): parallel to the plane, a miss.
@@ -58,7 +59,7 @@ TEST(RenderOnCpu, PixelLookingAtTheSkyGetsTheBackground) {
 }
 
 TEST(RenderOnCpu, LambertOnThePlaneMatchesHandComputation) {
-    const Image image = renderOnCpu(groundScene(), 1);
+    const Image image = renderOnCpu(groundScene(), 1).image;
     // Pixel (0, 5) aims at (-0.8, -0.4, 1); from height 2 it meets y = 0 at (-4, 0, 5).
     // To the light (-1, 12, 9): (3, 12, 4), r = 13, cos = 12/13; 169 * (12/13) / 169 = 12/13.
     const Color albedo(0.5, 1.0, 0.25);
@@ -73,7 +74,7 @@ TEST(RenderOnCpu, ShadowedPixelGetsOnlyAmbient) {
     // (its midpoint), puts pixel (0, 5) in shadow.
     Scene scene = groundScene();
     scene.nodes.push_back(Node{Sphere{{-2.5, 6, 7}, 1.0}, 0});
-    const Image image = renderOnCpu(scene, 1);
+    const Image image = renderOnCpu(scene, 1).image;
     expectPixel(image, 0, 5, Color(0.5, 1.0, 0.25) * 0.1);
 }
 
@@ -89,12 +90,12 @@ TEST(RenderOnCpu, CentreSamplingAimsAtPixelCentres) {
     scene.lights.push_back(PointLight{{-1, 9, 2 * std::sqrt(2.0)}, Color(1.0), 100.0});
     scene.shaders.push_back(LambertShader{{0.3, 0.6, 0.9}});
     scene.nodes.push_back(Node{Plane{-1.0}, 0});
-    const Image image = renderOnCpu(scene, 1);
+    const Image image = renderOnCpu(scene, 1).image;
     expectPixel(image, 0, 1, {0.3, 0.6, 0.9});
     expectPixel(image, 0, 0, {0, 0, 1}, 0.0);  // aims up
     // Corner sampling would aim pixel (0, 1) at (-m, 0, 1), parallel to the plane.
     scene.image.sampling = Sampling::Corner;
-    expectPixel(renderOnCpu(scene, 1), 0, 1, {0, 0, 1}, 0.0);
+    expectPixel(renderOnCpu(scene, 1).image, 0, 1, {0, 0, 1}, 0.0);
 }
 
 TEST(RenderOnCpu, ConstantSphereFillingTheViewIsItsColourEverywhere) {
@@ -109,7 +110,7 @@ TEST(RenderOnCpu, ConstantSphereFillingTheViewIsItsColourEverywhere) {
     scene.lights.push_back(PointLight{{0, 0, -1}, Color(1.0), 1000.0});
     scene.shaders.push_back(ConstantShader{{2.0, -0.5, 10.0}});
     scene.nodes.push_back(Node{Sphere{{0, 0, 10}, 9.9}, 0});
-    const Image image = renderOnCpu(scene, 1);
+    const Image image = renderOnCpu(scene, 1).image;
     for (std::uint32_t y = 0; y < image.height; ++y) {
         for (std::uint32_t x = 0; x < image.width; ++x) {
             expectPixel(image, x, y, {2.0, -0.5, 10.0}, 0.0);
@@ -136,18 +137,20 @@ TEST(RenderOnCpu, ThreadCountsGiveIdenticalImages) {
     scene.nodes.push_back(Node{Sphere{{-10, 60, 0}, 30}, 1});
     scene.nodes.push_back(Node{Sphere{{40, 25, 10}, 10}, 2});
 
-    const Image single = renderOnCpu(scene, 1);
+    const CpuRender single = renderOnCpu(scene, 1);
     std::set<std::tuple<float, float, float>> distinct;
-    for (const glm::vec3& p : single.pixels) {
+    for (const glm::vec3& p : single.image.pixels) {
         distinct.insert({p.x, p.y, p.z});
     }
     ASSERT_GT(distinct.size(), 10u) << "the scene should not be trivially uniform";
 
     for (unsigned threads : {3u, 0u, 100u}) {
-        const Image image = renderOnCpu(scene, threads);
-        ASSERT_EQ(image.width, single.width);
-        ASSERT_EQ(image.height, single.height);
-        EXPECT_TRUE(image.pixels == single.pixels) << threads << " threads";
+        const CpuRender render = renderOnCpu(scene, threads);
+        ASSERT_EQ(render.image.width, single.image.width);
+        ASSERT_EQ(render.image.height, single.image.height);
+        EXPECT_TRUE(render.image.pixels == single.image.pixels) << threads << " threads";
+        EXPECT_TRUE(render.classes == single.classes) << threads << " threads";
+        EXPECT_TRUE(render.margins == single.margins) << threads << " threads";
     }
 }
 
@@ -155,12 +158,100 @@ TEST(RenderOnCpu, EmptyImage) {
     Scene scene = groundScene();
     scene.image.width = 0;
     scene.image.height = 0;
-    const Image image = renderOnCpu(scene, 3);
-    EXPECT_EQ(image.pixels.size(), 0u);
+    const CpuRender render = renderOnCpu(scene, 3);
+    EXPECT_EQ(render.image.pixels.size(), 0u);
+    EXPECT_EQ(render.classes.size(), 0u);
+    EXPECT_EQ(render.margins.size(), 0u);
 }
 
 TEST(RenderOnCpu, BadShaderIndexThrowsInsteadOfCrashing) {
     Scene scene = groundScene();
     scene.nodes.push_back(Node{Plane{-5.0}, 7});
     EXPECT_THROW(renderOnCpu(scene, 2), std::out_of_range);
+}
+
+// ---------------------------------------------------------------- classification and margins
+
+TEST(RenderOnCpu, ClassesAndMarginsHaveOneEntryPerPixel) {
+    const CpuRender render = renderOnCpu(groundScene(), 1);
+    EXPECT_EQ(render.classes.size(), 48u);
+    EXPECT_EQ(render.margins.size(), 48u);
+}
+
+TEST(RenderOnCpu, BackgroundPixelsAreClassifiedAsBackground) {
+    const CpuRender render = renderOnCpu(groundScene(), 1);
+    EXPECT_EQ(render.classes[0 * 8 + 0], (PixelClass{PixelClass::kBackground, 0}));
+    EXPECT_EQ(render.classes[2 * 8 + 7], (PixelClass{PixelClass::kBackground, 0}));
+    EXPECT_EQ(render.classes[3 * 8 + 4], (PixelClass{PixelClass::kBackground, 0}));
+}
+
+TEST(RenderOnCpu, LitPlanePixelNamesItsNodeAndLight) {
+    const CpuRender render = renderOnCpu(groundScene(), 1);
+    EXPECT_EQ(render.classes[5 * 8 + 0], (PixelClass{0, PixelClass::litBit(0)}));
+    EXPECT_EQ(render.classes[5 * 8 + 1], (PixelClass{0, PixelClass::litBit(0)}));
+}
+
+TEST(RenderOnCpu, ShadowedPixelHasNoLitBit) {
+    Scene scene = groundScene();
+    scene.nodes.push_back(Node{Sphere{{-2.5, 6, 7}, 1.0}, 0});
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[5 * 8 + 0], (PixelClass{0, 0}));
+    // Pixel (7, 5) aims at (0.6, -0.4, 1) and lands at (3, 0, 5), well clear of the ball's shadow.
+    EXPECT_EQ(render.classes[5 * 8 + 7], (PixelClass{0, PixelClass::litBit(0)}));
+}
+
+TEST(RenderOnCpu, EachLightHasItsOwnBit) {
+    // Light 1 is below the floor (seen from behind), light 2 above it: pixel (0, 5) at
+    // (-4, 0, 5) is lit by lights 0 and 2.
+    Scene scene = groundScene();
+    scene.lights.push_back(PointLight{{0, -5, 0}, Color(1.0), 100.0});
+    scene.lights.push_back(PointLight{{-4, 3, 5}, Color(1.0), 100.0});
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[5 * 8 + 0], (PixelClass{0, PixelClass::litBit(0) | PixelClass::litBit(2)}));
+}
+
+TEST(RenderOnCpu, CheckerPixelsInColor2CellsSetTheOddBit) {
+    // Squares of 3: pixel (0, 5) lands at (-4, 0, 5), cell (-2, 1), odd; pixel (2, 5) at
+    // (-2, 0, 5), cell (-1, 1), even.
+    Scene scene = groundScene();
+    scene.shaders[0] = CheckerShader{{1, 1, 1}, {0, 0, 0}, 3.0};
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[5 * 8 + 0], (PixelClass{0, PixelClass::kOddCheckerBit | PixelClass::litBit(0)}));
+    EXPECT_EQ(render.classes[5 * 8 + 2], (PixelClass{0, PixelClass::litBit(0)}));
+    EXPECT_FALSE(render.isAmbiguous(5 * 8 + 0));
+    EXPECT_FALSE(render.isAmbiguous(5 * 8 + 2));
+}
+
+TEST(RenderOnCpu, ConstantShadedPixelsHaveNoFlags) {
+    // A constant sphere filling the view, with a light that would reach it: no lights evaluated.
+    Scene scene;
+    scene.image.width = 8;
+    scene.image.height = 6;
+    scene.lights.push_back(PointLight{{0, 0, -1}, Color(1.0), 1000.0});
+    scene.shaders.push_back(ConstantShader{{2.0, -0.5, 10.0}});
+    scene.nodes.push_back(Node{Plane{-100.0}, 0});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 10}, 9.9}, 0});
+    const CpuRender render = renderOnCpu(scene, 1);
+    for (const PixelClass& pixelClass : render.classes) {
+        EXPECT_EQ(pixelClass, (PixelClass{1, 0}));
+    }
+}
+
+TEST(RenderOnCpu, RayAlongThePlaneIsAmbiguousAndOthersAreNot) {
+    // Pixel (4, 3) aims exactly parallel to the floor: hit or miss is a coin toss in float32.
+    const CpuRender render = renderOnCpu(groundScene(), 1);
+    EXPECT_EQ(render.margins[3 * 8 + 4], 0.0f);
+    EXPECT_TRUE(render.isAmbiguous(3 * 8 + 4));
+    EXPECT_FALSE(render.isAmbiguous(5 * 8 + 0));
+    EXPECT_FALSE(render.isAmbiguous(0));
+}
+
+TEST(RenderOnCpu, NoNodesMeansNoDecisions) {
+    Scene scene = groundScene();
+    scene.nodes.clear();
+    const CpuRender render = renderOnCpu(scene, 1);
+    for (std::size_t pixel = 0; pixel < render.margins.size(); ++pixel) {
+        EXPECT_EQ(render.margins[pixel], std::numeric_limits<float>::infinity());
+        EXPECT_EQ(render.classes[pixel], (PixelClass{PixelClass::kBackground, 0}));
+    }
 }

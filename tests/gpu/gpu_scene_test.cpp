@@ -1,4 +1,5 @@
-// Packing the scene for the shader: camera-relative positions and the checker's cell phase.
+// Packing the scene for the shader: camera-relative, rescaled positions and the checker's cell
+// phase.
 
 #include <gtest/gtest.h>
 
@@ -17,16 +18,40 @@ Scene checkerPlaneAndBall(const glm::dvec3& eye) {
     return scene;
 }
 
-TEST(PackScene, PositionsAreRelativeToTheEye) {
-    const gpu::GpuScene packed = gpu::packScene(checkerPlaneAndBall({1, 60, -120}));
+gpu::GpuScene<float> packRelative(const Scene& scene) {
+    return gpu::packScene<float>(scene, gpu::Placement::CameraRelative);
+}
+
+TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
+    const Scene scene = checkerPlaneAndBall({1, 60, -120});
+    // Farthest: the sphere, |(-11, 0, 120)| + 30 = 150.5, so lengths are divided by 2^7.
+    ASSERT_EQ(gpu::placementScale(scene), 128.0);
+    const gpu::GpuScene<float> packed = packRelative(scene);
+    EXPECT_EQ(packed.frame.origin, glm::vec4(0));
     EXPECT_EQ(packed.nodes[0].kinds.x, gpu::kGeometryPlane);
-    EXPECT_FLOAT_EQ(packed.nodes[0].geometry.x, 15.0f - 60.0f);
+    EXPECT_EQ(packed.nodes[0].geometry.x, (15.0f - 60.0f) / 128);
     EXPECT_EQ(packed.nodes[1].kinds.x, gpu::kGeometrySphere);
-    EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30));
-    EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0));
-    EXPECT_EQ(packed.lights[0].power, glm::vec4(5000, 10000, 10000, 0));
+    EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30) / 128.0f);
+    EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0) / 128.0f);
+    // 1/r^2 falloff in units 128 times larger: the power is 128^2 times smaller.
+    EXPECT_EQ(packed.lights[0].power, glm::vec4(5000, 10000, 10000, 0) / (128.0f * 128.0f));
     EXPECT_EQ(packed.frame.nodeCount, 2u);
     EXPECT_EQ(packed.frame.lightCount, 1u);
+}
+
+TEST(PackScene, WorldPlacementUploadsTheSceneAsWritten) {
+    const gpu::GpuScene<float> packed = gpu::packScene<float>(checkerPlaneAndBall({1, 60, -120}), gpu::Placement::World);
+    EXPECT_EQ(packed.frame.origin, glm::vec4(1, 60, -120, 0));
+    EXPECT_EQ(packed.nodes[0].geometry.x, 15.0f);
+    EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-10, 60, 0, 30));
+    EXPECT_EQ(packed.nodes[0].checker, glm::vec4(20, 0, 0, 0));
+}
+
+TEST(PackScene, DoubleLayoutKeepsWhatFloatWouldRound) {
+    Scene scene = checkerPlaneAndBall({0, 0, 0});
+    scene.nodes[1].geometry = Sphere{{0.1, 0, 100}, 1};
+    const double scale = gpu::placementScale(scene);
+    EXPECT_EQ(gpu::packScene<double>(scene, gpu::Placement::CameraRelative).nodes[1].geometry.x, 0.1 / scale);
 }
 
 TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
@@ -35,8 +60,8 @@ TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
     moved.nodes[0].geometry = Plane{15.0 + far.y};
     moved.nodes[1].geometry = Sphere{glm::dvec3(-10, 60, 0) + far, 30};
     moved.lights[0].position += far;
-    const gpu::GpuScene atOrigin = gpu::packScene(checkerPlaneAndBall({0, 60, -120}));
-    const gpu::GpuScene packed = gpu::packScene(moved);
+    const gpu::GpuScene<float> atOrigin = packRelative(checkerPlaneAndBall({0, 60, -120}));
+    const gpu::GpuScene<float> packed = packRelative(moved);
     EXPECT_EQ(packed.nodes[0].geometry, atOrigin.nodes[0].geometry);
     EXPECT_EQ(packed.nodes[1].geometry, atOrigin.nodes[1].geometry);
     EXPECT_EQ(packed.lights[0].position, atOrigin.lights[0].position);
@@ -44,22 +69,23 @@ TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
 
 TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {
     // Eye x / 20 = -1.25: cell -2, fraction 0.75; z / 20 = 2.35: cell 2, fraction 0.35; parity 0.
-    gpu::GpuScene packed = gpu::packScene(checkerPlaneAndBall({-25, 60, 47}));
-    EXPECT_FLOAT_EQ(packed.nodes[0].checker.x, 20.0f);
+    const Scene scene = checkerPlaneAndBall({-25, 60, 47});
+    gpu::GpuScene<float> packed = packRelative(scene);
+    EXPECT_FLOAT_EQ(packed.nodes[0].checker.x, float(20.0 / gpu::placementScale(scene)));
     EXPECT_NEAR(packed.nodes[0].checker.y, 0.75f, 1e-7f);
     EXPECT_NEAR(packed.nodes[0].checker.z, 0.35f, 1e-6f);
     EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);
     // x / 20 = 1.5: cell 1 (odd), z cell 0: parity 1.
-    packed = gpu::packScene(checkerPlaneAndBall({30, 60, 0}));
+    packed = packRelative(checkerPlaneAndBall({30, 60, 0}));
     EXPECT_EQ(packed.nodes[0].checker.w, 1.0f);
     // Cells -3 and 1e6 + 1 (both odd): parity 0, at coordinates float32 could not hold exactly.
-    packed = gpu::packScene(checkerPlaneAndBall({-50, 60, 20e6 + 30}));
+    packed = packRelative(checkerPlaneAndBall({-50, 60, 20e6 + 30}));
     EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);
     EXPECT_NEAR(packed.nodes[0].checker.z, 0.5f, 1e-6f);
 }
 
 TEST(PackScene, SphereCheckerUsesAnglesThatDoNotMoveWithTheEye) {
-    const gpu::GpuScene packed = gpu::packScene(checkerPlaneAndBall({-25, 60, 47}));
+    const gpu::GpuScene<float> packed = packRelative(checkerPlaneAndBall({-25, 60, 47}));
     EXPECT_EQ(packed.nodes[1].checker, glm::vec4(9, 0, 0, 0));
 }
 

@@ -1,0 +1,62 @@
+#include "cli/command_support.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "image/image_io.h"
+#include "scene/scene_loader.h"
+
+namespace hexray::cli {
+
+void printError(const std::string& message) {
+    std::fprintf(stderr, "hexray: error: %s\n", message.c_str());
+}
+
+int guarded(const std::function<int()>& command) {
+    try {
+        return command();
+    } catch (const SceneError& error) {
+        printError(error.what());
+        return kBadInput;
+    } catch (const VulkanError& error) {
+        printError(error.what());
+        return kVulkanUnavailable;
+    } catch (const vk::SystemError& error) {
+        printError(std::string("Vulkan call failed: ") + error.what());
+        return kVulkanUnavailable;
+    } catch (const ImageIoError& error) {
+        printError(error.what());
+        return kOutputFailed;
+    }
+}
+
+Scene loadScene(const std::string& path, const SizeOverride& size) {
+    Scene scene = loadSceneFile(path);
+    if (size.width || size.height) {
+        const char* source = !size.height ? "--width" : !size.width ? "--height" : "--width/--height";
+        overrideImageSize(scene, size.width.value_or(scene.image.width), size.height.value_or(scene.image.height),
+                          source);
+    }
+    return scene;
+}
+
+unsigned threadCount(unsigned requested) {
+    return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
+int withValidationVerdict(int commandCode, const ValidationLog& log) {
+    const std::uint32_t count = log.messageCount.load();
+    if (commandCode != kSuccess || count == 0) {
+        return commandCode;
+    }
+    printError("the Vulkan validation layer reported " + std::to_string(count) + " message(s)");
+    return kValidationFailed;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace hexray::cli

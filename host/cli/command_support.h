@@ -1,0 +1,30 @@
+#pragma once
+// What the subcommands share: turning failures into messages and exit codes, loading the
+// scene with the command line's overrides, and the validation verdict.
+
+#include <chrono>
+#include <functional>
+#include <string>
+
+#include "cli/commands.h"
+#include "scene/scene.h"
+#include "vulkan/vulkan_context.h"
+
+namespace hexray::cli {
+
+void printError(const std::string& message);
+
+// Runs a command, turning each kind of failure into its message and exit code.
+int guarded(const std::function<int()>& command);
+
+Scene loadScene(const std::string& path, const SizeOverride& size);
+
+unsigned threadCount(unsigned requested);
+
+// Validation messages fail the command: a tester's run must be clean, not merely finish.
+// `commandCode` wins when it is already a failure.
+int withValidationVerdict(int commandCode, const ValidationLog& log);
+
+double millisecondsSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace hexray::cli

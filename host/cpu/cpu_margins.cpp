@@ -1,0 +1,143 @@
+#include "cpu/cpu_margins.h"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace hexray {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Distance from x to the nearest multiple of size (in x's units).
+double distanceToMultiple(double x, double size) {
+    const double cells = x / size;
+    return std::abs(cells - std::nearbyint(cells)) * size;
+}
+
+// How far t lies outside [low, high]; 0 inside.
+double distanceOutside(double t, double low, double high) {
+    return std::max({0.0, low - t, t - high});
+}
+
+// Distance in n-space from the outward normal to the nearest latitude edge that can be crossed.
+double latitudeEdgeDistance(const glm::dvec3& n, double size) {
+    const double latitude = glm::degrees(std::asin(std::clamp(n.y, -1.0, 1.0)));
+    double nearest = kInfinity;
+    for (const double edge : {std::floor(latitude / size) * size, std::ceil(latitude / size) * size}) {
+        // A multiple of size beyond a pole is no edge: no latitude reaches it. (sin is symmetric
+        // about 90 degrees, so it would otherwise look as near as one on this side.)
+        if (std::abs(edge) <= 90.0) {
+            nearest = std::min(nearest, std::abs(n.y - std::sin(glm::radians(edge))));
+        }
+    }
+    return nearest;
+}
+
+// Distance in n-space from the outward normal to the nearest meridian edge, atan2's cut included.
+double longitudeEdgeDistance(const glm::dvec3& n, double size) {
+    const double longitude = glm::degrees(std::atan2(n.x, n.z));
+    double nearestDegrees = 180.0 - std::abs(longitude);  // the cut at +-180
+    for (const double edge : {std::floor(longitude / size) * size, std::ceil(longitude / size) * size}) {
+        if (std::abs(edge) <= 180.0) {
+            nearestDegrees = std::min(nearestDegrees, std::abs(longitude - edge));
+        }
+    }
+    // A meridian is a half-plane ending on the polar axis: beyond a right angle the nearest
+    // point of it is on the axis, at distance rho.
+    const double rho = std::hypot(n.x, n.z);
+    return rho * std::sin(glm::radians(std::min(nearestDegrees, 90.0)));
+}
+
+}  // namespace
+
+void MarginAccumulator::add(double margin) {
+    if (std::isnan(margin)) {
+        margin = 0.0;
+    }
+    smallest = std::min(smallest, margin);
+}
+
+float MarginAccumulator::stored() const {
+    float rounded = static_cast<float>(smallest);
+    if (static_cast<double>(rounded) > smallest) {
+        rounded = std::nextafter(rounded, 0.0f);  // also brings an overflow to infinity back to FLT_MAX
+    }
+    return rounded;
+}
+
+double sphereScale(const Sphere& sphere, const glm::dvec3& eye) {
+    return glm::length(sphere.center - eye) + std::abs(sphere.radius);
+}
+
+double hitPointScale(const Geometry& geometry, const Hit& hit, const Ray& cameraRay) {
+    const double grazing = std::abs(glm::dot(cameraRay.direction, hit.geometricNormal));
+    const double along = std::holds_alternative<Plane>(geometry)
+                             ? glm::length(hit.point - cameraRay.origin)
+                             : sphereScale(std::get<Sphere>(geometry), cameraRay.origin);
+    return grazing > 0.0 ? along / grazing : kInfinity;
+}
+
+double sphereCrossingMargin(const Ray& ray, const Sphere& sphere, double tMax, double scale) {
+    const glm::dvec3& d = ray.direction;
+    const double r = sphere.radius;
+    const glm::dvec3 f = ray.origin - sphere.center;
+    const double closestT = -glm::dot(f, d);
+    const double lengthL = glm::length(f + closestT * d);
+    const double clearance = std::abs(r - lengthL);
+
+    if (lengthL > r) {
+        // The line misses. Float32 makes it touch the range only if it both reaches the sphere
+        // and touches it at a point of the range.
+        return std::max(clearance, distanceOutside(closestT, 0.0, tMax)) / scale;
+    }
+    const double halfChord = std::sqrt((r - lengthL) * (r + lengthL));
+    double nearest = kInfinity;
+    for (const double root : {closestT - halfChord, closestT + halfChord}) {
+        nearest = std::min(nearest, std::abs(root));  // crossing the start of the range
+        if (std::isfinite(tMax)) {
+            nearest = std::min(nearest, std::abs(root - tMax));  // crossing its end
+        }
+    }
+    const bool chordMeetsRange = closestT + halfChord > 0.0 && closestT - halfChord < tMax;
+    if (chordMeetsRange) {
+        nearest = std::min(nearest, clearance);  // the chord shrinking to nothing
+    }
+    return nearest / scale;
+}
+
+double cameraRayPlaneMargin(double directionY, double heightAboveCamera) {
+    if (heightAboveCamera == 0.0) {
+        return kInfinity;
+    }
+    return std::abs(directionY);
+}
+
+double planeSegmentMargin(double originHeight, double targetHeight, double scale) {
+    return std::min(std::abs(originHeight), std::abs(targetHeight)) / scale;
+}
+
+double nearestNodeMargin(double nearestT, double otherT, double scale) {
+    return (otherT - nearestT) / scale;
+}
+
+double planeCheckerMargin(const glm::dvec2& uv, double size, double hitScale) {
+    const double edgeDistance = std::min(distanceToMultiple(uv.x, size), distanceToMultiple(uv.y, size));
+    return edgeDistance / (hitScale + size);
+}
+
+double sphereCheckerMargin(const glm::dvec3& outwardNormal, double size, double normalRoundoff) {
+    const double edgeDistance =
+        std::min(latitudeEdgeDistance(outwardNormal, size), longitudeEdgeDistance(outwardNormal, size));
+    return edgeDistance / normalRoundoff;
+}
+
+double facingMargin(double cosTheta, double normalRoundoff, double directionRoundoff) {
+    return std::abs(cosTheta) / (normalRoundoff + directionRoundoff);
+}
+
+}  // namespace hexray

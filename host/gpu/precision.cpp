@@ -1,0 +1,71 @@
+#include "gpu/precision.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+namespace hexray {
+namespace {
+
+constexpr std::array<std::pair<Precision, std::string_view>, 4> kNames = {{
+    {Precision::Auto, "auto"},
+    {Precision::F32Naive, "f32-naive"},
+    {Precision::F32, "f32"},
+    {Precision::F64, "f64"},
+}};
+
+}  // namespace
+
+std::string_view precisionName(Precision precision) {
+    for (const auto& [value, name] : kNames) {
+        if (value == precision) {
+            return name;
+        }
+    }
+    return "?";
+}
+
+std::optional<Precision> parsePrecision(std::string_view name) {
+    for (const auto& [value, known] : kNames) {
+        if (known == name) {
+            return value;
+        }
+    }
+    return std::nullopt;
+}
+
+Conditioning estimateConditioning(const Scene& scene) {
+    const glm::dvec3 eye = scene.camera.position;
+    Conditioning conditioning;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const Node& node : scene.nodes) {
+        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+            conditioning.largestDistance =
+                std::max(conditioning.largestDistance, glm::length(sphere->center - eye) + sphere->radius);
+            smallest = std::min(smallest, sphere->radius);
+        } else {
+            // A plane reaches the horizon, but what the shader must resolve there is already
+            // smaller than a pixel: its height above the eye is the distance that matters.
+            conditioning.largestDistance =
+                std::max(conditioning.largestDistance, std::abs(std::get<Plane>(node.geometry).height - eye.y));
+            if (const auto* checker = std::get_if<CheckerShader>(&scene.shaders[node.shaderIndex])) {
+                smallest = std::min(smallest, checker->size);
+            }
+        }
+    }
+    for (const PointLight& light : scene.lights) {
+        conditioning.largestDistance = std::max(conditioning.largestDistance, glm::length(light.position - eye));
+    }
+    conditioning.smallestFeature = std::isfinite(smallest) ? smallest : 0.0;
+    return conditioning;
+}
+
+Precision choosePrecision(const Scene& scene, bool deviceHasFloat64) {
+    const bool float32Suffices = estimateConditioning(scene).ratio() <= kFloat32ConditioningLimit;
+    return float32Suffices || !deviceHasFloat64 ? Precision::F32 : Precision::F64;
+}
+
+}  // namespace hexray

@@ -1,0 +1,421 @@
+// Margins of the CPU reference's discrete decisions: each rule against hand-computed geometry,
+// then whole renders where a decision is known to be (or not to be) on a knife edge.
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "camera/camera.h"
+#include "cpu/cpu_intersect.h"
+#include "cpu/cpu_margins.h"
+#include "cpu/cpu_renderer.h"
+#include "cpu/cpu_shading.h"
+#include "scene/scene_loader.h"
+#include "support/test_paths.h"
+
+using namespace hexray;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+const glm::dvec3 kOrigin(0.0);
+
+Ray rayFrom(const glm::dvec3& origin, const glm::dvec3& toward) {
+    return Ray{origin, glm::normalize(toward)};
+}
+
+// The unit normal at (longitude, latitude) in degrees, as sphereTextureCoordinates reads it.
+glm::dvec3 normalAt(double longitudeDegrees, double latitudeDegrees) {
+    const double lon = glm::radians(longitudeDegrees);
+    const double lat = glm::radians(latitudeDegrees);
+    return {std::cos(lat) * std::sin(lon), std::sin(lat), std::cos(lat) * std::cos(lon)};
+}
+
+double sinDegrees(double degrees) {
+    return std::sin(glm::radians(degrees));
+}
+
+// The camera ray the renderer builds for pixel (x, y).
+Ray pixelRay(const Scene& scene, std::uint32_t x, std::uint32_t y) {
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    const double offset = samplingOffset(scene.image.sampling);
+    const glm::dvec3 aim = sheet.topLeft + sheet.right * ((double(x) + offset) / double(scene.image.width)) +
+                           sheet.down * ((double(y) + offset) / double(scene.image.height));
+    return Ray{sheet.origin, glm::normalize(aim)};
+}
+
+std::size_t pixelIndex(const Scene& scene, std::uint32_t x, std::uint32_t y) {
+    return std::size_t(y) * scene.image.width + x;
+}
+
+// 8x6, FOV 90, aspect 4/3, corner sampling: pixel (x, y) aims at (-0.8 + 0.2x, 0.6 - 0.2y, 1),
+// so pixel (4, 3) looks straight down +Z.
+Scene smallScene(const glm::dvec3& cameraPosition) {
+    Scene scene;
+    scene.image.width = 8;
+    scene.image.height = 6;
+    scene.image.sampling = Sampling::Corner;
+    scene.camera.position = cameraPosition;
+    scene.ambient = Color(0.1);
+    scene.shaders.push_back(LambertShader{{0.5, 0.5, 0.5}});
+    return scene;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- accumulator
+
+TEST(MarginAccumulator, KeepsTheSmallestAndStartsWithNoDecision) {
+    MarginAccumulator margins;
+    EXPECT_EQ(margins.smallest, kInfinity);
+    EXPECT_EQ(margins.stored(), std::numeric_limits<float>::infinity());
+    margins.add(0.5);
+    margins.add(0.25);
+    margins.add(2.0);
+    EXPECT_EQ(margins.smallest, 0.25);
+    EXPECT_EQ(margins.stored(), 0.25f);
+}
+
+TEST(MarginAccumulator, NaNCountsAsZero) {
+    MarginAccumulator margins;
+    margins.add(0.5);
+    margins.add(std::numeric_limits<double>::quiet_NaN());
+    EXPECT_EQ(margins.smallest, 0.0);
+}
+
+TEST(MarginAccumulator, StoredFloatNeverRoundsUpAcrossTheThreshold) {
+    // Just below 2^-17 in double rounds to exactly 2^-17 as a float, which would read as
+    // unambiguous; the stored value must stay below.
+    MarginAccumulator margins;
+    margins.add(kAmbiguityMargin * (1.0 - 0x1p-40));
+    EXPECT_LT(margins.stored(), static_cast<float>(kAmbiguityMargin));
+    EXPECT_LE(static_cast<double>(margins.stored()), margins.smallest);
+    // Beyond float range: the largest float, not infinity (which means "no decision").
+    MarginAccumulator huge;
+    huge.add(1e300);
+    EXPECT_EQ(huge.stored(), std::numeric_limits<float>::max());
+}
+
+// ---------------------------------------------------------------- scales
+
+TEST(HitPointScale, PlaneIsDistanceOverGrazingCosine) {
+    // From (0, 10, 0) at 45 degrees down: t = 10 sqrt 2, |d.n| = 1/sqrt 2, scale 20.
+    const Ray ray = rayFrom({0, 10, 0}, {0, -1, 1});
+    const Geometry plane = Plane{0.0};
+    const std::optional<Hit> hit = intersectGeometry(ray, plane);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hitPointScale(plane, *hit, ray), 20.0, 1e-12);
+}
+
+TEST(HitPointScale, SphereIsCentreDistancePlusRadiusOverGrazingCosine) {
+    const Geometry sphere = Sphere{{0, 0, 10}, 1.0};
+    const Ray centre = rayFrom(kOrigin, {0, 0, 1});
+    const std::optional<Hit> hit = intersectGeometry(centre, sphere);
+    ASSERT_TRUE(hit);
+    EXPECT_DOUBLE_EQ(hitPointScale(sphere, *hit, centre), 11.0);
+    EXPECT_DOUBLE_EQ(sphereScale(std::get<Sphere>(sphere), kOrigin), 11.0);
+    // A hit where the ray grazes the sphere at 60 degrees from the normal: twice the scale.
+    Hit oblique = *hit;
+    oblique.geometricNormal = {std::sqrt(3.0) / 2.0, 0.0, -0.5};
+    EXPECT_NEAR(hitPointScale(sphere, oblique, centre), 22.0, 1e-12);
+    // Tangent: no bound at all.
+    oblique.geometricNormal = {1.0, 0.0, 0.0};
+    EXPECT_EQ(hitPointScale(sphere, oblique, centre), kInfinity);
+}
+
+// ---------------------------------------------------------------- camera ray vs sphere
+
+TEST(SphereCrossingMargin, RayExactlyThroughTheSilhouetteIsZero) {
+    // Centre (1, 0, 10), radius 1, ray down +Z from the origin: |l| = 1 = r exactly.
+    const Sphere sphere{{1, 0, 10}, 1.0};
+    EXPECT_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, sphereScale(sphere, kOrigin)), 0.0);
+}
+
+TEST(SphereCrossingMargin, RayThroughTheCentreIsRadiusOverDistancePlusRadius) {
+    // D = 10, r = 1: the chord would have to shrink by r, the roots lie at 9 and 11 from the eye.
+    const Sphere sphere{{0, 0, 10}, 1.0};
+    const double margin = sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, sphereScale(sphere, kOrigin));
+    EXPECT_DOUBLE_EQ(margin, 1.0 / 11.0);
+    EXPECT_GE(margin, kAmbiguityMargin);
+}
+
+TEST(SphereCrossingMargin, NearMissIsItsClearance) {
+    const Sphere sphere{{1.5, 0, 10}, 1.0};
+    const double scale = sphereScale(sphere, kOrigin);
+    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, scale), 0.5 / scale);
+}
+
+TEST(SphereCrossingMargin, TangentBehindTheCameraDecidesNothing) {
+    // The line grazes a sphere 10 behind the eye: float32 could make it touch, but at t < 0.
+    const Sphere sphere{{1, 0, -10}, 1.0};
+    const double scale = sphereScale(sphere, kOrigin);
+    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, scale), 10.0 / scale);
+}
+
+TEST(SphereCrossingMargin, CameraOnTheSurfaceIsAmbiguous) {
+    // A root at t = 0: whether the sphere is in front is a coin toss.
+    const Sphere sphere{{0, 0, 1}, 1.0};
+    EXPECT_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, sphereScale(sphere, kOrigin)), 0.0);
+}
+
+// ---------------------------------------------------------------- shadow segment vs sphere
+
+TEST(SphereCrossingMargin, SegmentTangentToABlockerIsZero) {
+    // Segment from the origin to (0, 0, 20); a blocker of radius 1 at (1, 0, 10) touches it at its middle.
+    const Sphere sphere{{1, 0, 10}, 1.0};
+    EXPECT_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), 0.0);
+}
+
+TEST(SphereCrossingMargin, TangentBeyondTheLightDecidesNothing) {
+    // The same line grazes a sphere 10 beyond the segment's end at 20: the gap must close too.
+    const Sphere sphere{{1, 0, 30}, 1.0};
+    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), 10.0 / 40.0);
+}
+
+TEST(SphereCrossingMargin, SegmentEndingOnASphereIsZero) {
+    // A light exactly on a blocker's surface: the root t = 20 equals the segment's length.
+    const Sphere sphere{{0, 0, 21}, 1.0};
+    EXPECT_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), 0.0);
+}
+
+TEST(SphereCrossingMargin, BlockerWellInsideTheSegment) {
+    // Chord from 9 to 11 on a segment of 20: the nearest way out is the chord shrinking by r = 1.
+    const Sphere sphere{{0, 0, 10}, 1.0};
+    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), 1.0 / 40.0);
+}
+
+// ---------------------------------------------------------------- planes
+
+TEST(CameraRayPlaneMargin, IsTheVerticalComponentOfTheDirection) {
+    EXPECT_EQ(cameraRayPlaneMargin(1e-9, -5.0), 1e-9);
+    EXPECT_LT(cameraRayPlaneMargin(1e-9, -5.0), kAmbiguityMargin);
+    EXPECT_LT(cameraRayPlaneMargin(-1e-9, -5.0), kAmbiguityMargin);
+    EXPECT_EQ(cameraRayPlaneMargin(-0.5, -5.0), 0.5);
+    EXPECT_EQ(cameraRayPlaneMargin(0.0, 3.0), 0.0);
+}
+
+TEST(CameraRayPlaneMargin, PlaneThroughTheCameraIsNoDecision) {
+    EXPECT_EQ(cameraRayPlaneMargin(1e-9, 0.0), kInfinity);
+    EXPECT_EQ(cameraRayPlaneMargin(0.0, 0.0), kInfinity);
+}
+
+TEST(PlaneSegmentMargin, LightOnThePlaneIsZero) {
+    EXPECT_EQ(planeSegmentMargin(5.0, 0.0, 100.0), 0.0);
+    EXPECT_EQ(planeSegmentMargin(0.0, 5.0, 100.0), 0.0);  // the segment starts on it
+    EXPECT_DOUBLE_EQ(planeSegmentMargin(5.0, -2.0, 100.0), 0.02);
+    EXPECT_DOUBLE_EQ(planeSegmentMargin(5.0, 8.0, 100.0), 0.05);
+}
+
+// ---------------------------------------------------------------- nearest node
+
+TEST(NearestNodeMargin, IsTheGapOverTheScale) {
+    EXPECT_EQ(nearestNodeMargin(10.0, 10.0, 20.0), 0.0);
+    EXPECT_DOUBLE_EQ(nearestNodeMargin(10.0, 12.0, 20.0), 0.1);
+}
+
+TEST(NearestNodeMargin, SphereTouchingThePlaneTiesAtTheContactPoint) {
+    // A ball touching the floor y = 0 from below at (0, 0, 10), seen straight down from
+    // (0, 5, 10): the floor's hit and the ball's entry are the same point.
+    const Ray ray = rayFrom({0, 5, 10}, {0, -1, 0});
+    const Geometry floor = Plane{0.0};
+    const Geometry ball = Sphere{{0, -1, 10}, 1.0};
+    const std::optional<Hit> floorHit = intersectGeometry(ray, floor);
+    const std::optional<Hit> ballHit = intersectGeometry(ray, ball);
+    ASSERT_TRUE(floorHit);
+    ASSERT_TRUE(ballHit);
+    const double scale = hitPointScale(floor, *floorHit, ray) + hitPointScale(ball, *ballHit, ray);
+    EXPECT_LT(nearestNodeMargin(std::min(floorHit->t, ballHit->t), std::max(floorHit->t, ballHit->t), scale),
+              kAmbiguityMargin);
+}
+
+// ---------------------------------------------------------------- checker cells
+
+TEST(PlaneCheckerMargin, OnAnEdgeIsZeroAndMidCellIsHalfASize) {
+    EXPECT_EQ(planeCheckerMargin({40.0, 7.0}, 20.0, 100.0), 0.0);
+    EXPECT_EQ(planeCheckerMargin({7.0, -60.0}, 20.0, 100.0), 0.0);
+    EXPECT_DOUBLE_EQ(planeCheckerMargin({10.0, 30.0}, 20.0, 100.0), 10.0 / 120.0);
+    EXPECT_DOUBLE_EQ(planeCheckerMargin({-13.0, 30.0}, 20.0, 100.0), 7.0 / 120.0);
+}
+
+TEST(SphereCheckerMargin, MidCellIsTheNearestEdgeInNormalSpace) {
+    // (4.5, 4.5) in cells of 9 degrees: latitude edges at 0 and 9, meridians at 0 and 9.
+    const double expected = std::min({sinDegrees(4.5), sinDegrees(9.0) - sinDegrees(4.5),
+                                      std::cos(glm::radians(4.5)) * sinDegrees(4.5)});
+    EXPECT_NEAR(sphereCheckerMargin(normalAt(4.5, 4.5), 9.0, 1.0), expected, 1e-15);
+    EXPECT_NEAR(sphereCheckerMargin(normalAt(4.5, 4.5), 9.0, 4.0), expected / 4.0, 1e-15);
+}
+
+TEST(SphereCheckerMargin, OnAMeridianOrParallelIsZero) {
+    EXPECT_NEAR(sphereCheckerMargin(normalAt(18.0, 4.5), 9.0, 1.0), 0.0, 1e-15);
+    EXPECT_NEAR(sphereCheckerMargin(normalAt(4.5, -27.0), 9.0, 1.0), 0.0, 1e-15);
+}
+
+TEST(SphereCheckerMargin, LongitudeWrapsAtTheAtan2Cut) {
+    // Size 7 does not divide 180: near +-180 the nearest edge is the cut, not a multiple of 7.
+    EXPECT_NEAR(sphereCheckerMargin(normalAt(179.9, 3.5), 7.0, 1.0), std::cos(glm::radians(3.5)) * sinDegrees(0.1),
+                1e-12);
+    // Exactly on the cut (n.x = 0, n.z < 0).
+    const glm::dvec3 onCut(0.0, sinDegrees(3.5), -std::cos(glm::radians(3.5)));
+    EXPECT_EQ(sphereCheckerMargin(onCut, 7.0, 1.0), 0.0);
+}
+
+TEST(SphereCheckerMargin, MeridiansMeetAtThePoles) {
+    EXPECT_EQ(sphereCheckerMargin({0.0, 1.0, 0.0}, 7.0, 1.0), 0.0);
+    // Mid-cell in longitude, but 0.01 degrees from the pole: within rho = sin(0.01 deg) of every meridian.
+    EXPECT_LE(sphereCheckerMargin(normalAt(3.5, 89.99), 7.0, 1.0), sinDegrees(0.01));
+}
+
+TEST(SphereCheckerMargin, AMultipleOfSizeBeyondThePoleIsNoEdge) {
+    // Size 50, latitude 80: the edges around it are 50 and 100, but no latitude reaches 100
+    // (and sin 100 = sin 80, so counting it would make the point look like it is on an edge).
+    const double expected = std::min(sinDegrees(80.0) - sinDegrees(50.0), std::cos(glm::radians(80.0)) * sinDegrees(25.0));
+    EXPECT_NEAR(sphereCheckerMargin(normalAt(25.0, 80.0), 50.0, 1.0), expected, 1e-15);
+}
+
+// ---------------------------------------------------------------- facing a light
+
+TEST(FacingMargin, TerminatorIsAmbiguous) {
+    EXPECT_LT(facingMargin(1e-12, 11.0, 2.0), kAmbiguityMargin);
+    EXPECT_LT(facingMargin(-1e-12, 0.0, 2.0), kAmbiguityMargin);
+    EXPECT_DOUBLE_EQ(facingMargin(0.5, 0.0, 2.0), 0.25);
+    EXPECT_DOUBLE_EQ(facingMargin(-0.5, 3.0, 2.0), 0.1);
+}
+
+// ---------------------------------------------------------------- whole renders
+
+TEST(RenderMargins, CheckerEdgeRowOfTheLectureSceneIsAmbiguous) {
+    const Scene scene = loadSceneFile(test::sourcePath("scenes/course-2024-lecture4.json"));
+    ASSERT_EQ(scene.image.sampling, Sampling::Corner);
+    const CpuRender render = renderOnCpu(scene);
+    const Node& floor = scene.nodes[0];
+    const double size = std::get<CheckerShader>(scene.shaders[floor.shaderIndex]).size;
+
+    // Row 301 aims 0.002 below the horizon: from 45 above the floor it lands at z = -120 + 22500,
+    // a multiple of 20. Column 750 is floor, not ball.
+    const std::size_t edge = pixelIndex(scene, 750, 301);
+    EXPECT_EQ(render.classes[edge].node, 0u);
+    EXPECT_TRUE(render.isAmbiguous(edge));
+    const Ray edgeRay = pixelRay(scene, 750, 301);
+    const std::optional<Hit> edgeHit = intersectGeometry(edgeRay, floor.geometry);
+    ASSERT_TRUE(edgeHit);
+    EXPECT_NEAR(std::remainder(edgeHit->point.z, size), 0.0, 1e-9);
+    EXPECT_LT(planeCheckerMargin(textureCoordinates(floor.geometry, *edgeHit), size,
+                                 hitPointScale(floor.geometry, *edgeHit, edgeRay)),
+              kAmbiguityMargin);
+
+    // Pixel (100, 500) aims at (-0.6, -0.4, 1) and lands at (-67.5, 15, -7.5): 7.5 from the
+    // nearest edge in both directions, with nothing else close either.
+    const std::size_t middle = pixelIndex(scene, 100, 500);
+    EXPECT_EQ(render.classes[middle].node, 0u);
+    EXPECT_FALSE(render.isAmbiguous(middle)) << "margin " << render.margins[middle];
+    const Ray middleRay = pixelRay(scene, 100, 500);
+    const std::optional<Hit> middleHit = intersectGeometry(middleRay, floor.geometry);
+    ASSERT_TRUE(middleHit);
+    EXPECT_NEAR(middleHit->point.x, -67.5, 1e-9);
+    EXPECT_NEAR(middleHit->point.z, -7.5, 1e-9);
+
+    // Row 300 aims exactly along the horizon: whether the floor is hit at all is undecidable.
+    for (std::uint32_t x = 0; x < scene.image.width; ++x) {
+        EXPECT_TRUE(render.isAmbiguous(pixelIndex(scene, x, 300))) << "column " << x;
+    }
+}
+
+TEST(RenderMargins, TerminatorIsAmbiguous) {
+    // A unit ball at the origin seen from (0, 0, -10): pixel (4, 3) hits (0, 0, -1), normal
+    // (0, 0, -1). A light at (5, 0, -1) lies exactly in the tangent plane there: cos = 0.
+    Scene scene = smallScene({0, 0, -10});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 0}, 1.0}, 0});
+    scene.lights.push_back(PointLight{{5, 0, -1}, Color(1.0), 100.0});
+    const std::size_t centre = pixelIndex(scene, 4, 3);
+    CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[centre], (PixelClass{0, 0}));  // cos = 0 is not lit
+    EXPECT_TRUE(render.isAmbiguous(centre));
+
+    // The same point lit head-on is not.
+    scene.lights[0].position = {0, 0, -5};
+    render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[centre], (PixelClass{0, PixelClass::litBit(0)}));
+    EXPECT_FALSE(render.isAmbiguous(centre)) << "margin " << render.margins[centre];
+}
+
+TEST(RenderMargins, LightOnAPlaneMakesTheShadowTestAmbiguous) {
+    // Camera (0, 5, 0); pixel (4, 4) aims at (0, -0.2, 1), through the centre of a ball of
+    // radius 1 at (0, 3, 10) over the floor y = 0, and hits it at about (0, 3.2, 9.0). A light on
+    // the floor at (0, 0, 5) faces that point, and the shadow segment ends exactly on the floor.
+    Scene scene = smallScene({0, 5, 0});
+    scene.nodes.push_back(Node{Plane{0.0}, 0});
+    scene.nodes.push_back(Node{Sphere{{0, 3, 10}, 1.0}, 0});
+    scene.lights.push_back(PointLight{{0, 0, 5}, Color(1.0), 100.0});
+    const std::size_t pixel = pixelIndex(scene, 4, 4);
+    CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[pixel].node, 1u);
+    EXPECT_TRUE(render.isAmbiguous(pixel));
+
+    // Half a unit above the floor the segment clearly stays above it.
+    scene.lights[0].position = {0, 0.5, 5};
+    render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[pixel], (PixelClass{1, PixelClass::litBit(0)}));
+    EXPECT_FALSE(render.isAmbiguous(pixel)) << "margin " << render.margins[pixel];
+}
+
+TEST(RenderMargins, SphereTouchingThePlaneIsAmbiguousAtTheContactPoint) {
+    // Looking straight down from (0, 5, 10) at the floor y = 0, which a ball touches from below
+    // at (0, 0, 10): a 1x1 image's one ray meets floor and ball at the same point. Constant
+    // shading, so that the only decisions are the camera ray's.
+    Scene scene = smallScene({0, 5, 10});
+    scene.image.width = 1;
+    scene.image.height = 1;
+    scene.image.sampling = Sampling::Center;
+    scene.camera.pitchDegrees = -90.0;
+    scene.shaders[0] = ConstantShader{{1, 1, 1}};
+    scene.nodes.push_back(Node{Plane{0.0}, 0});
+    scene.nodes.push_back(Node{Sphere{{0, -1, 10}, 1.0}, 0});
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_NE(render.classes[0].node, PixelClass::kBackground);
+    EXPECT_TRUE(render.isAmbiguous(0));
+
+    // Hit or miss is clear for both: the floor is hit head-on, the ball's chord is 2 long.
+    const Ray ray = pixelRay(scene, 0, 0);
+    EXPECT_GT(cameraRayPlaneMargin(ray.direction.y, -5.0), 0.99);
+    const Sphere& ball = std::get<Sphere>(scene.nodes[1].geometry);
+    EXPECT_GT(sphereCrossingMargin(ray, ball, kInfinity, sphereScale(ball, ray.origin)), 0.1);
+
+    // With the ball 0.001 below the floor the floor is clearly nearer.
+    scene.nodes[1].geometry = Sphere{{0, -1.001, 10}, 1.0};
+    const CpuRender lowered = renderOnCpu(scene, 1);
+    EXPECT_EQ(lowered.classes[0], (PixelClass{0, 0}));
+    EXPECT_FALSE(lowered.isAmbiguous(0)) << "margin " << lowered.margins[0];
+}
+
+// ---------------------------------------------------------------- shipped scenes
+
+class ShippedSceneMargins : public testing::TestWithParam<std::filesystem::path> {};
+
+TEST_P(ShippedSceneMargins, MostPixelsAreUnambiguous) {
+    const Scene scene = loadSceneFile(GetParam());
+    const CpuRender render = renderOnCpu(scene);
+    ASSERT_EQ(render.margins.size(), render.image.pixels.size());
+    std::size_t ambiguous = 0;
+    for (std::size_t pixel = 0; pixel < render.margins.size(); ++pixel) {
+        ambiguous += render.isAmbiguous(pixel) ? 1 : 0;
+    }
+    const double share = double(ambiguous) / double(render.margins.size());
+    RecordProperty("ambiguous_pixels", std::to_string(ambiguous));
+    std::printf("[ ambiguous ] %s: %zu of %zu pixels (%.3f %%)\n", GetParam().filename().string().c_str(), ambiguous,
+                render.margins.size(), 100.0 * share);
+    // In the demo scenes edge rows, silhouettes, terminators and shadow edges are curves, not
+    // areas. Scenes in subfolders (scenes/hard/) are built to sit on knife edges: only reported.
+    if (GetParam().parent_path() == test::sourcePath("scenes")) {
+        EXPECT_LT(share, 0.05);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedSceneMargins, testing::ValuesIn(test::shippedScenes()),
+                         [](const testing::TestParamInfo<std::filesystem::path>& info) {
+                             return test::sceneTestName(info.param);
+                         });

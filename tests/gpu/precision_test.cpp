@@ -1,0 +1,64 @@
+// Choosing the shader's precision from the scene.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gpu/gpu_scene.h"
+#include "gpu/precision.h"
+#include "scene/scene_loader.h"
+#include "support/test_paths.h"
+
+namespace hexray {
+namespace {
+
+Scene tinySphereAt(double distance) {
+    Scene scene;
+    scene.shaderNames = {"paper"};
+    scene.shaders = {LambertShader{Color(0.5)}};
+    scene.nodes = {Node{Sphere{{0, 0, distance}, 1.0}, 0}};
+    return scene;
+}
+
+TEST(Precision, NamesRoundTrip) {
+    for (Precision p : {Precision::Auto, Precision::F32Naive, Precision::F32, Precision::F64}) {
+        EXPECT_EQ(parsePrecision(precisionName(p)), p);
+    }
+    EXPECT_EQ(parsePrecision("f16"), std::nullopt);
+}
+
+TEST(Precision, ConditioningOfTheLectureDemo) {
+    // Farthest: the sphere, |(-10, 0, 120)| + 10; smallest feature: its radius 10 (checker 20).
+    const Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    const Conditioning c = estimateConditioning(scene);
+    EXPECT_NEAR(c.largestDistance, std::sqrt(100.0 + 14400.0) + 10.0, 1e-9);
+    EXPECT_EQ(c.smallestFeature, 10.0);
+    EXPECT_EQ(choosePrecision(scene, true), Precision::F32);
+    EXPECT_EQ(gpu::placementScale(scene), 128.0);  // 2^round(log2(130.4))
+}
+
+TEST(Precision, ASphereTooSmallForItsDistanceNeedsDouble) {
+    EXPECT_EQ(choosePrecision(tinySphereAt(5e3), true), Precision::F32);   // ratio 5e3
+    EXPECT_EQ(choosePrecision(tinySphereAt(5e4), true), Precision::F64);   // ratio 5e4
+    EXPECT_EQ(choosePrecision(tinySphereAt(5e4), false), Precision::F32);  // the best this device can do
+}
+
+TEST(Precision, PositionFarFromTheOriginDoesNotMatterOnlyRelativeSize) {
+    Scene scene = tinySphereAt(100);
+    const double ratioAtOrigin = estimateConditioning(scene).ratio();
+    scene.camera.position = glm::dvec3(1e7, -1e7, 1e7);
+    scene.nodes[0].geometry = Sphere{glm::dvec3(1e7, -1e7, 1e7 + 100), 1.0};
+    EXPECT_NEAR(estimateConditioning(scene).ratio(), ratioAtOrigin, 1e-6);
+    EXPECT_EQ(choosePrecision(scene, true), Precision::F32);
+}
+
+TEST(Precision, ScaleOfTheSceneDoesNotMatter) {
+    Scene small = tinySphereAt(1e-27);
+    small.nodes[0].geometry = Sphere{{0, 0, 1e-27}, 1e-30};
+    EXPECT_NEAR(estimateConditioning(small).ratio(), 1001.0, 1e-9);
+    EXPECT_EQ(choosePrecision(small, true), Precision::F32);
+    EXPECT_EQ(gpu::placementScale(small), std::exp2(std::round(std::log2(1.001e-27))));
+}
+
+}  // namespace
+}  // namespace hexray
