@@ -14,8 +14,16 @@ real intersectPlane(Ray ray, real height) {
 #endif
 }
 
+// The power of a point with respect to a sphere, |f|^2 - r^2 for f = point - centre, as a
+// product so that a point just outside (a shadow ray's origin) keeps it positive.
+real originPower(vec3r f, real radius) {
+    real distance = length(f);
+    return (distance - radius) * (distance + radius);
+}
+
 // Nearest t > 0 on the sphere, or NO_HIT (the far root when the ray starts inside).
-real intersectSphere(Ray ray, vec3r center, real radius) {
+// `power` is originPower of the ray's origin.
+real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     vec3r f = ray.origin - center;
 #ifdef HEXRAY_NAIVE
     // Textbook b^2 - 4ac: both terms are about |f|^2 and cancel for small or distant spheres;
@@ -45,11 +53,8 @@ real intersectSphere(Ray ray, vec3r center, real radius) {
     if (q == 0.0) {
         return NO_HIT;  // tangent at the origin itself
     }
-    // |f|^2 - r^2 as a product, so a shadow ray's origin just outside the sphere keeps c > 0.
-    real originDistance = length(f);
-    real c = (originDistance - radius) * (originDistance + radius);
-    real near = min(c / q, q);
-    real far = max(c / q, q);
+    real near = min(power / q, q);
+    real far = max(power / q, q);
 #endif
     if (near > 0.0) {
         return near;
@@ -57,19 +62,15 @@ real intersectSphere(Ray ray, vec3r center, real radius) {
     return far > 0.0 ? far : NO_HIT;
 }
 
-real intersectNode(Ray ray, uint index) {
-    vec4r geometry = nodes[index].geometry;
-    if (nodes[index].kinds.x == GEOMETRY_PLANE) {
-        return intersectPlane(ray, geometry.x);
-    }
-    return intersectSphere(ray, geometry.xyz, geometry.w);
-}
-
-// On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
+// Camera rays all start at the eye, whose power with respect to each sphere the host computed.
 Hit findNearestHit(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
     for (uint i = 0u; i < frame.nodeCount; ++i) {
-        real t = intersectNode(ray, i);
+        vec4r geometry = nodes[i].geometry;
+        real t = nodes[i].kinds.x == GEOMETRY_PLANE
+                     ? intersectPlane(ray, geometry.x)
+                     : intersectSphere(ray, geometry.xyz, geometry.w, nodes[i].surface.x);
+        // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
         if (t < hit.t) {
             hit = Hit(t, i);
         }
@@ -77,10 +78,28 @@ Hit findNearestHit(Ray ray) {
     return hit;
 }
 
-bool isOccluded(Ray ray, real maxDistance) {
+// Whether anything lies strictly between the ray's origin and `target`, `distance` away.
+bool isOccluded(Ray ray, vec3r target, real distance) {
     for (uint i = 0u; i < frame.nodeCount; ++i) {
-        if (intersectNode(ray, i) < maxDistance) {
-            return true;
+        vec4r geometry = nodes[i].geometry;
+        if (nodes[i].kinds.x == GEOMETRY_PLANE) {
+#ifdef HEXRAY_NAIVE
+            bool blocks = intersectPlane(ray, geometry.x) < distance;
+#else
+            // A plane blocks a segment exactly when the ends lie strictly on opposite sides: no
+            // division, so a light lying in the plane is never blocked by it through rounding.
+            real originSide = ray.origin.y - geometry.x;
+            real targetSide = target.y - geometry.x;
+            bool blocks = (originSide < 0.0 && targetSide > 0.0) || (originSide > 0.0 && targetSide < 0.0);
+#endif
+            if (blocks) {
+                return true;
+            }
+        } else {
+            vec3r f = ray.origin - geometry.xyz;
+            if (intersectSphere(ray, geometry.xyz, geometry.w, originPower(f, geometry.w)) < distance) {
+                return true;
+            }
         }
     }
     return false;

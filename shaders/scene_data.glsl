@@ -23,6 +23,7 @@ layout(std430, set = 0, binding = 0) readonly buffer FrameBlock {
 struct Node {
     uvec4 kinds;      // .x geometry, .y shader
     vec4r geometry;   // plane: .x height; sphere: .xyz centre, .w radius
+    vec4r surface;    // sphere: .x the eye's power |eye - centre|^2 - r^2 (from the host, in double)
     vec4 color1;
     vec4 color2;
     vec4r checker;    // .x size, .yz eye's fractional cell (plane), .w parity of the eye's cells

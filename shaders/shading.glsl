@@ -16,7 +16,7 @@ vec3 incidentLight(Surface s, inout uint flags) {
         }
         vec3r shadowPath = lights[i].position.xyz - s.shadowOrigin;
         real shadowLength = length(shadowPath);
-        if (isOccluded(Ray(s.shadowOrigin, shadowPath / shadowLength), shadowLength)) {
+        if (isOccluded(Ray(s.shadowOrigin, shadowPath / shadowLength), lights[i].position.xyz, shadowLength)) {
             continue;
         }
         sum += lights[i].power.rgb * float(cosTheta / r2);

@@ -37,11 +37,25 @@ Surface surfaceAt(Ray ray, Hit hit) {
     }
     vec3r center = geometry.xyz;
     real radius = geometry.w;
-    s.outwardNormal = normalize(approximate - center);
 #ifdef HEXRAY_NAIVE
+    s.outwardNormal = normalize(approximate - center);
     s.position = approximate;
 #else
-    s.position = center + radius * s.outwardNormal;  // reprojected onto the sphere
+    // The normal from the intersection's own small quantities: with l the centre's offset to
+    // the ray's closest point and h the half-chord, the hit is c + l -+ h d (near / far root).
+    // o + t d - c would subtract numbers as large as the distance, and at 1e7 radii away
+    // that leaves the normal quantised.
+    vec3r f = ray.origin - center;
+    real b = dot(f, ray.direction);
+    vec3r l = f - b * ray.direction;
+    real lineDistance = length(l);
+    real halfChord = sqrt(max((radius - lineDistance) * (radius + lineDistance), 0.0));
+    // Camera rays take the near root from outside, the far one from inside (or on) the sphere:
+    // decided by the sign of the eye's power, not by comparing t with -b, which rounding
+    // cannot tell apart when the half-chord is below an ulp of the distance.
+    bool nearRoot = nodes[hit.node].surface.x > 0.0;
+    s.outwardNormal = normalize(nearRoot ? l - halfChord * ray.direction : l + halfChord * ray.direction);
+    s.position = center + radius * s.outwardNormal;  // on the sphere, up to rounding
 #endif
     s.normal = dot(s.outwardNormal, ray.direction) > 0.0 ? -s.outwardNormal : s.outwardNormal;
 #ifdef HEXRAY_NAIVE

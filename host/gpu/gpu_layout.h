@@ -53,6 +53,9 @@ template <typename Real>
 struct GpuNode {
     glm::uvec4 kinds;         // .x GeometryKind, .y ShaderKind
     RealVec4<Real> geometry;  // plane: .x = height; sphere: .xyz = centre, .w = radius
+    // Sphere: .x = |eye - centre|^2 - r^2, the eye's power with respect to the sphere, which
+    // every camera ray needs and float cannot form when the eye is close to a large sphere.
+    RealVec4<Real> surface;
     glm::vec4 color1;         // .rgb: constant / lambert colour, checker's first colour
     glm::vec4 color2;         // .rgb: checker's second colour
     // Checker: .x = square size; .yz = the eye's fractional cell position (x, z) / size on a
@@ -92,10 +95,11 @@ static_assert(offsetof(GpuFrame<float>, lightCount) == 112);
 static_assert(sizeof(GpuFrame<float>) == 128);
 static_assert(offsetof(GpuNode<float>, kinds) == 0);
 static_assert(offsetof(GpuNode<float>, geometry) == 16);
-static_assert(offsetof(GpuNode<float>, color1) == 32);
-static_assert(offsetof(GpuNode<float>, color2) == 48);
-static_assert(offsetof(GpuNode<float>, checker) == 64);
-static_assert(sizeof(GpuNode<float>) == 80);
+static_assert(offsetof(GpuNode<float>, surface) == 32);
+static_assert(offsetof(GpuNode<float>, color1) == 48);
+static_assert(offsetof(GpuNode<float>, color2) == 64);
+static_assert(offsetof(GpuNode<float>, checker) == 80);
+static_assert(sizeof(GpuNode<float>) == 96);
 static_assert(offsetof(GpuLight<float>, position) == 0);
 static_assert(offsetof(GpuLight<float>, power) == 16);
 static_assert(sizeof(GpuLight<float>) == 32);
@@ -114,10 +118,11 @@ static_assert(offsetof(GpuFrame<double>, lightCount) == 176);
 static_assert(sizeof(GpuFrame<double>) == 192);
 static_assert(offsetof(GpuNode<double>, kinds) == 0);
 static_assert(offsetof(GpuNode<double>, geometry) == 32);
-static_assert(offsetof(GpuNode<double>, color1) == 64);
-static_assert(offsetof(GpuNode<double>, color2) == 80);
-static_assert(offsetof(GpuNode<double>, checker) == 96);
-static_assert(sizeof(GpuNode<double>) == 128);
+static_assert(offsetof(GpuNode<double>, surface) == 64);
+static_assert(offsetof(GpuNode<double>, color1) == 96);
+static_assert(offsetof(GpuNode<double>, color2) == 112);
+static_assert(offsetof(GpuNode<double>, checker) == 128);
+static_assert(sizeof(GpuNode<double>) == 160);
 static_assert(offsetof(GpuLight<double>, position) == 0);
 static_assert(offsetof(GpuLight<double>, power) == 32);
 static_assert(sizeof(GpuLight<double>) == 64);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "camera/camera.h"
 #include "gpu/precision.h"
 
@@ -19,6 +21,7 @@ glm::vec4 toColor(const Color& c) {
 
 // World positions and lengths as the shader sees them.
 struct Placer {
+    glm::dvec3 eye{0.0};
     glm::dvec3 origin{0.0};
     double scale = 1.0;
     glm::dvec3 position(const glm::dvec3& world) const { return (world - origin) / scale; }
@@ -48,6 +51,10 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placer& pla
         const auto& sphere = std::get<Sphere>(node.geometry);
         packed.kinds.x = kGeometrySphere;
         packed.geometry = toReal4<Real>(placer.position(sphere.center), placer.length(sphere.radius));
+        // (D - r)(D + r) in double: exact enough even when D - r is tiny next to D.
+        const double eyeDistance = glm::length(placer.position(placer.eye) - placer.position(sphere.center));
+        const double radius = placer.length(sphere.radius);
+        packed.surface = toReal4<Real>(glm::dvec3((eyeDistance - radius) * (eyeDistance + radius), 0, 0));
     }
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         packed.kinds.y = kShaderConstant;
@@ -77,9 +84,9 @@ double placementScale(const Scene& scene) {
 template <typename Real>
 GpuScene<Real> packScene(const Scene& scene, Placement placement) {
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
-    Placer placer;
+    Placer placer{sheet.origin};
     if (placement == Placement::CameraRelative) {
-        placer = Placer{sheet.origin, placementScale(scene)};
+        placer = Placer{sheet.origin, sheet.origin, placementScale(scene)};
     }
 
     GpuScene<Real> packed;

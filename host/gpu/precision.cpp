@@ -43,9 +43,15 @@ Conditioning estimateConditioning(const Scene& scene) {
     double smallest = std::numeric_limits<double>::infinity();
     for (const Node& node : scene.nodes) {
         if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
-            conditioning.largestDistance =
-                std::max(conditioning.largestDistance, glm::length(sphere->center - eye) + sphere->radius);
+            const double centerDistance = glm::length(sphere->center - eye);
+            conditioning.largestDistance = std::max(conditioning.largestDistance, centerDistance + sphere->radius);
             smallest = std::min(smallest, sphere->radius);
+            // The eye's clearance from the surface: near a large sphere the hit points along
+            // the horizon come from differences of numbers as large as the radius.
+            const double clearance = std::abs(centerDistance - sphere->radius);
+            if (clearance > 0) {
+                smallest = std::min(smallest, clearance);
+            }
         } else {
             // A plane reaches the horizon, but what the shader must resolve there is already
             // smaller than a pixel: its height above the eye is the distance that matters.

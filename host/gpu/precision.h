@@ -23,7 +23,7 @@ std::optional<Precision> parsePrecision(std::string_view name);
 // distance the shader works with against the smallest feature it must resolve.
 struct Conditioning {
     double largestDistance = 0;  // camera to the farthest sphere surface, plane or light
-    double smallestFeature = 0;  // smallest sphere radius or plane checker square
+    double smallestFeature = 0;  // smallest sphere radius, eye-to-sphere clearance or plane checker square
     double ratio() const { return smallestFeature > 0 ? largestDistance / smallestFeature : 0; }
 };
 

@@ -43,6 +43,30 @@ TEST(Precision, ASphereTooSmallForItsDistanceNeedsDouble) {
     EXPECT_EQ(choosePrecision(tinySphereAt(5e4), false), Precision::F32);  // the best this device can do
 }
 
+TEST(Precision, TheEyeCloseToAHugeSphereNeedsDouble) {
+    // Camera 2 above a ground sphere of radius 1e6: the clearance 2 is the smallest feature.
+    Scene scene = tinySphereAt(0);
+    scene.camera.position = glm::dvec3(0, 2, 0);
+    scene.nodes[0].geometry = Sphere{{0, -1e6, 0}, 1e6};
+    EXPECT_NEAR(estimateConditioning(scene).smallestFeature, 2.0, 1e-9);
+    EXPECT_EQ(choosePrecision(scene, true), Precision::F64);
+}
+
+TEST(Precision, AutoPicksFloatForTheCourseScenesAndDoubleForTheHardestCases) {
+    for (const char* name : {"lecture-demo", "course-2024-lecture4", "spheres-and-lights", "constant-debug",
+                             "hard/tiny-sphere-far-1e3", "hard/scene-offset-1e7", "hard/checker-far-1e7",
+                             "hard/overflow-huge-scale", "hard/underflow-tiny-scale"}) {
+        EXPECT_EQ(choosePrecision(loadSceneFile(test::sourcePath(std::string("scenes/") + name + ".json")), true),
+                  Precision::F32)
+            << name;
+    }
+    for (const char* name : {"hard/tiny-sphere-far-1e5", "hard/tiny-sphere-far-1e7", "hard/huge-sphere-ground"}) {
+        EXPECT_EQ(choosePrecision(loadSceneFile(test::sourcePath(std::string("scenes/") + name + ".json")), true),
+                  Precision::F64)
+            << name;
+    }
+}
+
 TEST(Precision, PositionFarFromTheOriginDoesNotMatterOnlyRelativeSize) {
     Scene scene = tinySphereAt(100);
     const double ratioAtOrigin = estimateConditioning(scene).ratio();

@@ -22,12 +22,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <glm/vec3.hpp>
 #include <limits>
 #include <string>
 #include <variant>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "camera/camera.h"
 #include "image/image.h"
@@ -59,23 +58,24 @@ inline Real angleBetween(V3 a, V3 b) { return std::atan2(length(cross(a, b)), do
 // ---------------------------------------------------------------- margins
 
 struct Margins {
-    // Sphere silhouettes (hit or miss of a camera ray), in units of the pixel's own angular
-    // half-size: a pixel whose ray passes within half a pixel of the silhouette straddles it,
-    // so which side its one sample lands on is an accident of sampling, not of precision.
-    // The hard cases are built so that precision failures are whole pixels away from it.
+    // Sphere silhouettes (hit or miss of a camera ray): excluded within this many pixels of
+    // the silhouette, measured as the angle between the ray and the silhouette cone against
+    // the pixel's own angular size. A pixel that close straddles the silhouette, so which side
+    // its one sample lands on is an accident of sampling rather than something to demand of
+    // the arithmetic; beyond it a hit/miss error is a real one (float32 Hearn-Baker resolves
+    // the silhouette to ~1e-6 of the sphere's distance, far below half a pixel here).
     Real silhouettePixels = 0.5;
 
     // Plane hit or miss of a camera ray is the sign of d.y (camera off the plane). Excluded
-    // within this many half-pixel angles of the horizon d.y = 0, for the same reason as the
-    // silhouette. A scene whose camera is not rotated may set 0: then d.y = TL.y + down.y*s
-    // with no other terms, float32 keeps its sign exactly, and the horizon row with d.y == 0
-    // exactly must be a miss.
-    Real horizonHalfPixels = 1.0;
+    // within this many pixels of the horizon d.y = 0, for the same reason as the silhouette.
+    // A scene whose camera is not rotated may set 0: then d.y = TL.y + down.y * s with no other
+    // terms, float32 keeps its sign exactly, and a row with d.y == 0 exactly must be a miss.
+    Real horizonPixels = 0.5;
 
     // Relative margin for decisions whose float32 error is proportional to a length: which of
     // two hits is nearer, which checker cell, whether a segment to a light clears a surface.
     // 1e-5 is ~170 float32 units of roundoff (2^-24 = 6e-8): room for a chain of a dozen
-    // operations, yet far below a pixel in every hard case. The lengths it multiplies are
+    // operations, yet below a pixel wherever a ray does not graze a surface. The lengths it multiplies are
     // given where it is used; all are measured from the camera, as the renderers rebase there.
     Real relative = 1e-5L;
 
@@ -83,7 +83,7 @@ struct Margins {
     // normal comes from a hit point good to ~6e-8 * t, i.e. ~6e-8 * t / r in the normal, and
     // the light direction is good to ~6e-8 * |L - eye| / |L - p|; in these scenes t / r and
     // |L - eye| / |L - p| stay below ~20, except the far tiny spheres, whose checked cap has
-    // cos >= 0.19 anyway. So the float32 error is below ~1.2e-6; 1e-4 leaves ~80x.
+    // cos >= 0.2 anyway. So the float32 error is below ~1.2e-6; 1e-4 leaves ~80x.
     Real sphereCos = 1e-4L;
 };
 
@@ -91,8 +91,8 @@ struct Margins {
 
 struct PixelRay {
     V3 origin;
-    V3 direction;  // unit
-    Real halfPixelAngle = 0;  // half the angular size of the pixel at its sample point
+    V3 direction;         // unit
+    Real pixelAngle = 0;  // the angular size of the pixel at its sample point (the smaller side)
 };
 
 // The rays of a scene's image, built as both renderers build them:
@@ -106,8 +106,8 @@ public:
           offset_(samplingOffset(scene.image.sampling)) {}
 
     V3 direction(Real sx, Real sy) const {
-        const V3 target = toV3(sheet_.topLeft) + toV3(sheet_.right) * (sx / Real(width_)) +
-                          toV3(sheet_.down) * (sy / Real(height_));
+        const V3 target =
+            toV3(sheet_.topLeft) + toV3(sheet_.right) * (sx / Real(width_)) + toV3(sheet_.down) * (sy / Real(height_));
         return normalize(target);
     }
 
@@ -119,7 +119,7 @@ public:
         ray.direction = direction(sx, sy);
         const Real acrossX = angleBetween(ray.direction, direction(sx + 1, sy));
         const Real acrossY = angleBetween(ray.direction, direction(sx, sy + 1));
-        ray.halfPixelAngle = Real(0.5) * std::min(acrossX, acrossY);
+        ray.pixelAngle = std::min(acrossX, acrossY);
         return ray;
     }
 
@@ -167,18 +167,18 @@ struct NodeHit {
     bool hit = false;
     bool ambiguous = false;
     Real t = std::numeric_limits<Real>::infinity();  // hit: distance; near miss: closest approach
-    Real incidence = 0;                                // |d . n| at the hit (0: tangent)
+    Real incidence = 0;                              // |d . n| at the hit (0: tangent)
 };
 
 inline NodeHit planeHit(const PixelRay& ray, Real height, const Margins& margins) {
     NodeHit h;
-    const Real above = height - ray.origin.y;  // exact: both are doubles, long double has room
+    const Real above = height - ray.origin.y;  // two doubles: exactly 0 when they are equal
     const Real dy = ray.direction.y;
     if (above == 0) {
         return h;  // camera on the plane: t = 0 is not a hit, for every ray; exact
     }
     const Real elevation = std::asin(std::fabs(dy));
-    h.ambiguous = elevation < margins.horizonHalfPixels * ray.halfPixelAngle;
+    h.ambiguous = elevation < margins.horizonPixels * ray.pixelAngle;
     if (dy == 0) {
         return h;  // parallel: a miss ("hit at infinity" is not a hit)
     }
@@ -193,9 +193,10 @@ inline NodeHit sphereHit(const PixelRay& ray, V3 center, Real radius, const Marg
     NodeHit h;
     const V3 f = center - ray.origin;
     const Real distance = length(f);
-    const Real b = dot(f, ray.direction);           // along the ray to the closest approach
+    const Real b = dot(f, ray.direction);            // along the ray to the closest approach
     const Real l = length(cross(f, ray.direction));  // the centre's distance from the ray's line
-    const Real halfChord2 = (radius - l) * (radius + l);
+    // Clamped: within rounding of the silhouette (an excluded pixel anyway) it could dip below 0.
+    const Real halfChord2 = std::max(Real(0), (radius - l) * (radius + l));
     if (distance < radius) {
         // From inside every ray hits the far side, well away from any silhouette. (No hard case
         // puts the camera within rounding distance of a sphere's surface.)
@@ -207,7 +208,7 @@ inline NodeHit sphereHit(const PixelRay& ray, V3 center, Real radius, const Marg
     const Real theta = angleBetween(f, ray.direction);
     const Real alpha = std::atan2(radius, std::sqrt((distance - radius) * (distance + radius)));
     h.hit = theta < alpha;
-    h.ambiguous = std::fabs(theta - alpha) < margins.silhouettePixels * ray.halfPixelAngle;
+    h.ambiguous = std::fabs(theta - alpha) < margins.silhouettePixels * ray.pixelAngle;
     if (h.hit) {
         h.t = b - std::sqrt(halfChord2);
         h.incidence = std::sqrt(halfChord2) / radius;
@@ -237,8 +238,9 @@ struct Occlusion {
     bool ambiguous = false;
 };
 
-inline Occlusion segmentOcclusion(const Scene& scene, std::uint32_t ownNode, bool ownFromInside, V3 from,
-                                  V3 light, const Margins& margins) {
+inline Occlusion segmentOcclusion(const Scene& scene, std::uint32_t ownNode, bool ownFromInside, V3 from, V3 light,
+                                  const Margins& margins) {
+    const bool fromOnPlane = std::holds_alternative<Plane>(scene.nodes[ownNode].geometry);
     const V3 eye = toV3(scene.camera.position);
     const V3 toLight = light - from;
     const Real segment = length(toLight);
@@ -260,7 +262,11 @@ inline Occlusion segmentOcclusion(const Scene& scene, std::uint32_t ownNode, boo
             if (b == 0) {
                 continue;  // the light lies in this plane: it meets the segment at its end, not between
             }
-            const Real scale = baseScale + std::fabs(h - eye.y);
+            // Whether the ends lie on opposite sides: float32 perturbs each end's height by ~eps of
+            // its height above the eye (a point snapped onto a plane), or of its whole distance
+            // from the eye (a sphere point, which comes from t * d), and the plane's by ~eps of its own.
+            const Real scale = (fromOnPlane ? std::fabs(from.y - eye.y) : length(from - eye)) +
+                               std::fabs(light.y - eye.y) + std::fabs(h - eye.y);
             if (std::min(std::fabs(a), std::fabs(b)) < margins.relative * scale) {
                 ambiguous = true;
             } else if ((a < 0) != (b < 0)) {
@@ -480,11 +486,12 @@ struct CheckCount {
     std::uint64_t excluded = 0;
     std::uint64_t violations = 0;
     std::string firstViolations;  // "(x,y) want .. got ..; " for the first few
+    double worst = 0;             // colour checks: the largest channel difference seen
 
     void violation(std::uint32_t index, std::uint32_t width, const std::string& what) {
         if (violations < 4) {
-            firstViolations += "(" + std::to_string(index % width) + "," + std::to_string(index / width) + ") " +
-                               what + "; ";
+            firstViolations +=
+                "(" + std::to_string(index % width) + "," + std::to_string(index / width) + ") " + what + "; ";
         }
         ++violations;
     }
@@ -494,14 +501,20 @@ inline std::string nodeName(std::uint32_t node) {
     return node == kNoNode ? std::string("background") : "node " + std::to_string(node);
 }
 
-// The visible node (background included) on every pixel whose node decision is unambiguous.
-// `only`, if given, restricts the check to pixels whose true node is that one (a disc).
-inline CheckCount checkNodes(const ImageTruth& truth, const std::vector<PixelClass>& classes,
-                             std::uint32_t only = kNoNode - 1, const std::string& name = "node") {
+// Every pixel, for checks that look at all of them.
+struct Everywhere {
+    bool operator()(const PixelTruth&, const PixelRay&) const { return true; }
+};
+
+// The visible node (background included) on every pixel in `where` whose node decision is
+// unambiguous.
+template <typename Where = Everywhere>
+CheckCount checkNodes(const ImageTruth& truth, const std::vector<PixelClass>& classes, const std::string& name = "node",
+                      Where where = {}) {
     CheckCount c{name};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
-        if (only != kNoNode - 1 && p.node != only) continue;
+        if (!where(p, truth.rays[i])) continue;
         if (p.nodeAmbiguous) {
             ++c.excluded;
             continue;
@@ -553,15 +566,16 @@ inline CheckCount checkCheckerParity(const ImageTruth& truth, const std::vector<
     return c;
 }
 
-// Light `light` reaches the pixel (faces it and is not shadowed), where the render shows the
-// true node and the decision is unambiguous. `onlyNode` restricts it to one node's pixels.
-inline CheckCount checkLitBits(const ImageTruth& truth, const std::vector<PixelClass>& classes,
-                               std::uint32_t light, std::uint32_t onlyNode = kNoNode - 1) {
-    CheckCount c{"lit" + std::to_string(light) + (onlyNode == kNoNode - 1 ? "" : "@" + std::to_string(onlyNode))};
+// Light `light` reaches the pixel (faces it and is not shadowed), on the pixels in `where`
+// where the render shows the true node and the decision is unambiguous.
+template <typename Where = Everywhere>
+CheckCount checkLitBits(const ImageTruth& truth, const std::vector<PixelClass>& classes, std::uint32_t light,
+                        const std::string& name, Where where = {}) {
+    CheckCount c{name};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
         if (p.node == kNoNode || p.nodeAmbiguous || classes[i].node != p.node || light >= p.lights.size()) continue;
-        if (onlyNode != kNoNode - 1 && p.node != onlyNode) continue;
+        if (!where(p, truth.rays[i])) continue;
         if (p.lights[light].ambiguous || p.checkerAmbiguous) {
             ++c.excluded;
             continue;
@@ -577,11 +591,15 @@ inline CheckCount checkLitBits(const ImageTruth& truth, const std::vector<PixelC
     return c;
 }
 
-inline bool close(const glm::vec3& got, const glm::dvec3& want, double tolerance) {
+// Within `tolerance` in every channel (absolute, relative above 1); records the worst difference.
+inline bool nearlyEqual(const glm::vec3& got, const glm::dvec3& want, double tolerance, double& worst) {
+    bool ok = true;
     for (int k = 0; k < 3; ++k) {
-        if (!(std::fabs(double(got[k]) - want[k]) <= tolerance * std::max(1.0, std::fabs(want[k])))) return false;
+        const double difference = std::fabs(double(got[k]) - want[k]);
+        worst = std::isnan(difference) ? difference : std::max(worst, difference);
+        if (!(difference <= tolerance * std::max(1.0, std::fabs(want[k])))) ok = false;
     }
-    return true;
+    return ok;
 }
 
 inline std::string colorText(const glm::dvec3& c) {
@@ -591,20 +609,23 @@ inline std::string colorText(const glm::dvec3& c) {
 }
 
 // The linear colour against the model's value (albedo * (ambient + sum I cos / r^2)) on the
-// pixels whose every decision is unambiguous and whose node the render got right.
+// pixels in `where` whose every decision is unambiguous and whose node the render got right.
 // `tolerance` is absolute, relative above 1.
-inline CheckCount checkShading(const ImageTruth& truth, const std::vector<PixelClass>& classes, const Image& image,
-                               double tolerance) {
+template <typename Where = Everywhere>
+CheckCount checkShading(const ImageTruth& truth, const std::vector<PixelClass>& classes, const Image& image,
+                        double tolerance, Where where = {}) {
     CheckCount c{"shading"};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
+        if (!where(p, truth.rays[i])) continue;
         if (p.anyAmbiguous() || classes[i].node != p.node) {
             ++c.excluded;
             continue;
         }
         ++c.checked;
-        if (!close(image.pixels[i], p.color, tolerance)) {
-            c.violation(i, truth.width, "want " + colorText(p.color) + " got " + colorText(glm::dvec3(image.pixels[i])));
+        if (!nearlyEqual(image.pixels[i], p.color, tolerance, c.worst)) {
+            c.violation(i, truth.width,
+                        "want " + colorText(p.color) + " got " + colorText(glm::dvec3(image.pixels[i])));
         }
     }
     return c;
@@ -618,7 +639,7 @@ CheckCount checkUniform(const std::string& name, const Image& image, Where where
     for (std::uint32_t i = 0; i < image.pixels.size(); ++i) {
         if (!where(i)) continue;
         ++c.checked;
-        if (!close(image.pixels[i], value, tolerance)) {
+        if (!nearlyEqual(image.pixels[i], value, tolerance, c.worst)) {
             c.violation(i, image.width, "want " + colorText(value) + " got " + colorText(glm::dvec3(image.pixels[i])));
         }
     }
