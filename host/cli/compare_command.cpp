@@ -15,24 +15,30 @@ namespace {
 
 namespace fs = std::filesystem;
 
+struct SceneFile {
+    std::string path;
+    std::string name;  // for the table: the path under the directory given, without .json
+};
+
 // The scene files named, with directories expanded to the *.json files under them, sorted.
-std::vector<std::string> sceneFiles(const std::vector<std::string>& paths) {
-    std::vector<std::string> files;
+std::vector<SceneFile> sceneFiles(const std::vector<std::string>& paths) {
+    std::vector<SceneFile> files;
     for (const std::string& path : paths) {
         if (!fs::is_directory(path)) {
-            files.push_back(path);  // a missing file is reported when it is loaded
+            files.push_back({path, fs::path(path).stem().string()});  // a missing file is reported when loaded
             continue;
         }
-        std::vector<std::string> found;
+        std::vector<SceneFile> found;
         for (const auto& entry : fs::recursive_directory_iterator(path)) {
             if (entry.is_regular_file() && entry.path().extension() == ".json") {
-                found.push_back(entry.path().string());
+                found.push_back({entry.path().string(),
+                                 fs::relative(entry.path(), path).replace_extension().string()});
             }
         }
         if (found.empty()) {
             throw SceneError(path + ": no scene files (*.json) in this directory");
         }
-        std::sort(found.begin(), found.end());
+        std::sort(found.begin(), found.end(), [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
         files.insert(files.end(), found.begin(), found.end());
     }
     return files;
@@ -111,7 +117,7 @@ void printTableRow(const std::string& scene, const Row& row) {
 int runCompare(const CompareOptions& options) {
     ValidationLog log;
     const int code = guarded([&] {
-        const std::vector<std::string> files = sceneFiles(options.scenePaths);
+        const std::vector<SceneFile> files = sceneFiles(options.scenePaths);
         const bool table = options.allPrecisions || files.size() > 1;
         if (!options.diffPath.empty() && table) {
             throw SceneError("--diff: a heat map needs a single scene and a single precision");
@@ -122,8 +128,8 @@ int runCompare(const CompareOptions& options) {
         if (table) {
             printTableHeader();
         }
-        for (const std::string& file : files) {
-            const Scene scene = loadScene(file, options.size);
+        for (const SceneFile& file : files) {
+            const Scene scene = loadScene(file.path, options.size);
             const unsigned threads = threadCount(options.threads);
             const auto cpuStart = std::chrono::steady_clock::now();
             const CpuRender reference = renderOnCpu(scene, threads);
@@ -150,7 +156,7 @@ int runCompare(const CompareOptions& options) {
                 row.verdict = judge(row.comparison, options.tolerance);
                 allPassed = allPassed && (!row.judged || row.verdict.passed());
                 if (table) {
-                    printTableRow(fs::path(file).filename().string(), row);
+                    printTableRow(file.name, row);
                     continue;
                 }
                 char gpuHow[256];
@@ -161,7 +167,7 @@ int runCompare(const CompareOptions& options) {
                 char cpuHow[128];
                 std::snprintf(cpuHow, sizeof cpuHow, "cpu reference (%u threads): render %.2f ms", threads,
                               cpuMilliseconds);
-                printDetailed(file, scene, row, gpuHow, cpuHow, options.tolerance);
+                printDetailed(file.path, scene, row, gpuHow, cpuHow, options.tolerance);
                 if (!options.diffPath.empty()) {
                     writePng(options.diffPath, diffHeatMap(encodeImage(reference.image, scene.image.encoding),
                                                            encodeImage(gpu.image, scene.image.encoding)));

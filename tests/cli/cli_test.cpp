@@ -143,8 +143,8 @@ TEST_F(CliTest, CompareAllPrintsOneTableOfScenesAndPrecisions) {
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
     EXPECT_NE(run.out.find("| scene | precision | auto | topology mismatches | ambiguous |"), std::string::npos)
         << run.out;
-    for (const char* row : {"| lecture-demo.json | f32-naive |", "| lecture-demo.json | f32 | ✓ |",
-                            "| lecture-demo.json | f64 |", "| constant-debug.json | f32 | ✓ |"}) {
+    for (const char* row : {"| lecture-demo | f32-naive |", "| lecture-demo | f32 | ✓ |", "| lecture-demo | f64 |",
+                            "| constant-debug | f32 | ✓ |"}) {
         EXPECT_NE(run.out.find(row), std::string::npos) << row << " missing from:\n" << run.out;
     }
 }
