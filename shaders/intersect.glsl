@@ -65,9 +65,9 @@ real intersectSphere(Ray ray, vec3r center, real radius, real power) {
 // Camera rays all start at the eye, whose power with respect to each sphere the host computed.
 Hit findNearestHit(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
-    for (uint i = 0u; i < frame.nodeCount; ++i) {
+    for (uint i = 0u; i < nodeCount(); ++i) {
         vec4r geometry = nodes[i].geometry;
-        real t = nodes[i].kinds.x == GEOMETRY_PLANE
+        real t = isPlane(i)
                      ? intersectPlane(ray, geometry.x)
                      : intersectSphere(ray, geometry.xyz, geometry.w, nodes[i].surface.x);
         // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
@@ -80,9 +80,9 @@ Hit findNearestHit(Ray ray) {
 
 // Whether anything lies strictly between the ray's origin and `target`, `distance` away.
 bool isOccluded(Ray ray, vec3r target, real distance) {
-    for (uint i = 0u; i < frame.nodeCount; ++i) {
+    for (uint i = 0u; i < nodeCount(); ++i) {
         vec4r geometry = nodes[i].geometry;
-        if (nodes[i].kinds.x == GEOMETRY_PLANE) {
+        if (isPlane(i)) {
 #ifdef HEXRAY_NAIVE
             bool blocks = intersectPlane(ray, geometry.x) < distance;
 #else

@@ -8,6 +8,7 @@ layout(local_size_x_id = 0, local_size_y_id = 1) in;
 
 #include "precision.glsl"
 #include "scene_data.glsl"
+#include "specialization.glsl"
 #include "ray.glsl"
 #include "camera_ray.glsl"
 #include "intersect.glsl"
@@ -25,5 +26,7 @@ void main() {
     vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);
     uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
     pixels[index] = vec4(color, 1.0);
-    classes[index] = uvec2(hit.node, flags);
+    if (WRITE_CLASSES) {
+        classes[index] = uvec2(hit.node, flags);
+    }
 }

@@ -4,7 +4,7 @@
 // Sets the lit bit (see ClassBlock) of each light that contributes.
 vec3 incidentLight(Surface s, inout uint flags) {
     vec3 sum = frame.ambient.rgb;
-    for (uint i = 0u; i < frame.lightCount; ++i) {
+    for (uint i = 0u; i < lightCount(); ++i) {
         vec3r toLight = lights[i].position.xyz - s.position;
         real r2 = dot(toLight, toLight);
         if (r2 == 0.0) {
@@ -32,9 +32,9 @@ real parity(real wholeNumber) {
     return mod(wholeNumber, 2.0);
 }
 
-bool isOddChecker(Node node, Surface s) {
+bool isOddChecker(uint index, Node node, Surface s) {
     vec2r cell;
-    if (node.kinds.x == GEOMETRY_PLANE) {
+    if (isPlane(index)) {
         // u = x, v = z in world space: the eye's cell offset comes from the host in double.
         cell = floor(node.checker.yz + s.position.xz / node.checker.x);
     } else {
@@ -52,12 +52,12 @@ bool isOddChecker(Node node, Surface s) {
 vec3 shade(Ray ray, Hit hit, out uint flags) {
     Node node = nodes[hit.node];
     flags = 0u;
-    if (node.kinds.y == SHADER_CONSTANT) {
+    if (isConstantShaded(hit.node)) {
         return node.color1.rgb;
     }
     Surface s = surfaceAt(ray, hit);
     vec3 albedo = node.color1.rgb;
-    if (node.kinds.y == SHADER_CHECKER && isOddChecker(node, s)) {
+    if (isCheckerShaded(hit.node) && isOddChecker(hit.node, node, s)) {
         albedo = node.color2.rgb;
         flags |= ODD_CHECKER_BIT;
     }

@@ -21,7 +21,7 @@ Surface surfaceAt(Ray ray, Hit hit) {
     vec4r geometry = nodes[hit.node].geometry;
     vec3r approximate = ray.origin + hit.t * ray.direction;
     Surface s;
-    if (nodes[hit.node].kinds.x == GEOMETRY_PLANE) {
+    if (isPlane(hit.node)) {
         s.outwardNormal = vec3r(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);
         s.normal = s.outwardNormal;
 #ifdef HEXRAY_NAIVE

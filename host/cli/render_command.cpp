@@ -25,7 +25,7 @@ int runRender(const RenderOptions& options) {
         if (options.backend == Backend::Gpu) {
             const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
             GpuRenderer renderer(context);
-            GpuRenderResult result = renderer.render(scene, options.precision);
+            GpuRenderResult result = renderer.render(scene, options.precision, Classification::Skip);
             std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s, first dispatch %.1f ms incl. shader compile",
                           std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
                           result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",

@@ -81,6 +81,28 @@ using GpuPixel = glm::vec4;
 // One output classification: PixelClass's node and flags (see image/pixel_class.h).
 using GpuPixelClass = glm::uvec2;
 
+// A small scene (at most kSmallSceneCapacity nodes and as many lights) is uploaded in uniform
+// buffers of that many entries and gets a fully specialized pipeline; a larger one uses
+// storage buffers and the data-driven loops (shaders/scene_data.glsl, specialization.glsl).
+inline constexpr std::size_t kSmallSceneCapacity = 32;
+
+// Specialization constants 2 to 7 of render.comp (shaders/specialization.glsl), in id order:
+// what the pipeline is built for. A small scene gets loops the compiler unrolls and no
+// branches for kinds it does not use.
+inline constexpr std::uint32_t kDynamic = 0xffffffffu;
+
+struct ShaderSpecialization {
+    std::uint32_t nodeCount = kDynamic;  // kDynamic: read from the frame, kinds from the nodes
+    std::uint32_t lightCount = kDynamic;
+    std::uint32_t sphereNodes = 0;    // bit i: node i is a sphere (else a plane)
+    std::uint32_t constantNodes = 0;  // bit i: node i is constant-shaded
+    std::uint32_t checkerNodes = 0;   // bit i: node i is checker-shaded
+    std::uint32_t writeClasses = 1;   // a GLSL bool specialization constant is 32 bits
+
+    auto operator<=>(const ShaderSpecialization&) const = default;
+};
+static_assert(sizeof(ShaderSpecialization) == 6 * sizeof(std::uint32_t));
+
 // --- std430 offsets, float variant
 static_assert(offsetof(GpuFrame<float>, origin) == 0);
 static_assert(offsetof(GpuFrame<float>, sheetTopLeft) == 16);

@@ -10,10 +10,14 @@
 #include "vulkan/host_visible_buffer.h"
 
 namespace {
-// SPIR-V generated from shaders/render.comp at build time, one array per precision variant.
-#include "kRenderF32NaiveSpv.h"
-#include "kRenderF32Spv.h"
-#include "kRenderF64Spv.h"
+// SPIR-V generated from shaders/render.comp at build time, one array per precision variant
+// and scene storage.
+#include "kRenderF32NaiveStorageSpv.h"
+#include "kRenderF32NaiveUniformSpv.h"
+#include "kRenderF32StorageSpv.h"
+#include "kRenderF32UniformSpv.h"
+#include "kRenderF64StorageSpv.h"
+#include "kRenderF64UniformSpv.h"
 }  // namespace
 
 namespace hexray {
@@ -27,18 +31,27 @@ using gpu::kWorkgroupSize;
 constexpr std::array<std::uint32_t, 5> kBindings = {gpu::kFrameBinding, gpu::kNodeBinding, gpu::kLightBinding,
                                                     gpu::kPixelBinding, gpu::kClassBinding};
 
-std::span<const std::uint32_t> spirvFor(Precision precision) {
+using Spirv = std::span<const std::uint32_t>;
+
+Spirv spirvFor(Precision precision, bool smallScene) {
     switch (precision) {
-        case Precision::F32Naive: return kRenderF32NaiveSpv;
-        case Precision::F64: return kRenderF64Spv;
-        default: return kRenderF32Spv;
+        case Precision::F32Naive: return smallScene ? Spirv(kRenderF32NaiveUniformSpv) : Spirv(kRenderF32NaiveStorageSpv);
+        case Precision::F64: return smallScene ? Spirv(kRenderF64UniformSpv) : Spirv(kRenderF64StorageSpv);
+        default: return smallScene ? Spirv(kRenderF32UniformSpv) : Spirv(kRenderF32StorageSpv);
     }
 }
 
-vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device) {
+// The frame, nodes and lights (bindings 0 to 2) come in uniform buffers for a small scene;
+// the pixels and classes are always storage buffers.
+vk::DescriptorType descriptorType(std::uint32_t binding, bool smallScene) {
+    return smallScene && binding <= gpu::kLightBinding ? vk::DescriptorType::eUniformBuffer
+                                                       : vk::DescriptorType::eStorageBuffer;
+}
+
+vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device, bool smallScene) {
     std::vector<vk::DescriptorSetLayoutBinding> bindings;
     for (std::uint32_t binding : kBindings) {
-        bindings.emplace_back(binding, vk::DescriptorType::eStorageBuffer, 1, vk::ShaderStageFlagBits::eCompute);
+        bindings.emplace_back(binding, descriptorType(binding, smallScene), 1, vk::ShaderStageFlagBits::eCompute);
     }
     return vk::raii::DescriptorSetLayout(device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
 }
@@ -50,15 +63,23 @@ vk::raii::PipelineLayout createPipelineLayout(const vk::raii::Device& device,
     return vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo({}, layouts, band));
 }
 
+// Specialization constants in id order: 0 and 1 the local size, 2 to 7 the scene's.
+struct SpecializationData {
+    std::uint32_t localSizeX = kWorkgroupSize;
+    std::uint32_t localSizeY = kWorkgroupSize;
+    gpu::ShaderSpecialization scene;
+};
+
 vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii::PipelineLayout& layout,
-                                  std::span<const std::uint32_t> spirv) {
+                                  Spirv spirv, const gpu::ShaderSpecialization& scene) {
     const vk::raii::ShaderModule module(device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
-    // Local size x and y are specialization constants 0 and 1, so the host's value is the only one.
-    const std::array<vk::SpecializationMapEntry, 2> entries = {
-        vk::SpecializationMapEntry(0, 0, sizeof(std::uint32_t)),
-        vk::SpecializationMapEntry(1, sizeof(std::uint32_t), sizeof(std::uint32_t))};
-    const std::array<std::uint32_t, 2> localSize = {kWorkgroupSize, kWorkgroupSize};
-    const vk::SpecializationInfo specialization(entries, vk::ArrayProxyNoTemporaries<const std::uint32_t>(localSize));
+    const SpecializationData data{kWorkgroupSize, kWorkgroupSize, scene};
+    constexpr std::uint32_t kConstants = sizeof(SpecializationData) / sizeof(std::uint32_t);
+    std::array<vk::SpecializationMapEntry, kConstants> entries;
+    for (std::uint32_t id = 0; id < kConstants; ++id) {
+        entries[id] = vk::SpecializationMapEntry(id, id * sizeof(std::uint32_t), sizeof(std::uint32_t));
+    }
+    const vk::SpecializationInfo specialization(entries, vk::ArrayProxyNoTemporaries<const SpecializationData>(data));
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main",
                                                   &specialization);
     return vk::raii::Pipeline(device, nullptr, vk::ComputePipelineCreateInfo({}, stage, *layout));
@@ -72,22 +93,27 @@ struct PackedScene {
 };
 
 template <typename T>
-std::vector<std::byte> bytesOf(std::span<const T> values) {
+std::vector<std::byte> bytesOf(std::span<T> values) {
     const auto bytes = std::as_bytes(values);
     return {bytes.begin(), bytes.end()};
 }
 
 template <typename Real>
-PackedScene packBytes(const Scene& scene, gpu::Placement placement) {
-    const gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, placement);
+PackedScene packBytes(const Scene& scene, gpu::Placement placement, bool smallScene) {
+    gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, placement);
+    if (smallScene) {
+        // A uniform block declares all kSmallSceneCapacity entries: the buffers must hold them.
+        packed.nodes.resize(gpu::kSmallSceneCapacity);
+        packed.lights.resize(gpu::kSmallSceneCapacity);
+    }
     return {bytesOf(std::span(&packed.frame, 1)), bytesOf(std::span(packed.nodes)), bytesOf(std::span(packed.lights))};
 }
 
-PackedScene packFor(const Scene& scene, Precision precision) {
+PackedScene packFor(const Scene& scene, Precision precision, bool smallScene) {
     switch (precision) {
-        case Precision::F64: return packBytes<double>(scene, gpu::Placement::CameraRelative);
-        case Precision::F32Naive: return packBytes<float>(scene, gpu::Placement::World);
-        default: return packBytes<float>(scene, gpu::Placement::CameraRelative);
+        case Precision::F64: return packBytes<double>(scene, gpu::Placement::CameraRelative, smallScene);
+        case Precision::F32Naive: return packBytes<float>(scene, gpu::Placement::World, smallScene);
+        default: return packBytes<float>(scene, gpu::Placement::CameraRelative, smallScene);
     }
 }
 
@@ -104,11 +130,13 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes)
     : context_(context),
       maxBandBytes_(maxBandBytes),
-      setLayout_(createSetLayout(context.device())),
-      pipelineLayout_(createPipelineLayout(context.device(), setLayout_)),
+      uniformScene_{createSetLayout(context.device(), true), nullptr},
+      storageScene_{createSetLayout(context.device(), false), nullptr},
       commandPool_(context.device(),
                    vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, context.queueFamily())),
       timestamps_(nullptr) {
+    uniformScene_.pipelineLayout = createPipelineLayout(context.device(), uniformScene_.setLayout);
+    storageScene_.pipelineLayout = createPipelineLayout(context.device(), storageScene_.setLayout);
     const auto families = context.physicalDevice().getQueueFamilyProperties();
     const std::uint32_t validBits = families[context.queueFamily()].timestampValidBits;
     if (validBits > 0) {
@@ -130,19 +158,27 @@ Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
     return requested;
 }
 
-const vk::raii::Pipeline& GpuRenderer::pipeline(Precision precision) {
-    std::optional<vk::raii::Pipeline>& slot = pipelines_[std::size_t(precision)];
-    if (!slot) {
-        slot.emplace(createPipeline(context_.device(), pipelineLayout_, spirvFor(precision)));
+const vk::raii::Pipeline& GpuRenderer::pipeline(const PipelineKey& key) {
+    auto found = pipelines_.find(key);
+    if (found == pipelines_.end()) {
+        const auto& [precision, smallScene, specialization] = key;
+        found = pipelines_
+                    .emplace(key, createPipeline(context_.device(), bindings(smallScene).pipelineLayout,
+                                                 spirvFor(precision, smallScene), specialization))
+                    .first;
     }
-    return *slot;
+    return found->second;
 }
 
-GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested) {
+GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Classification classification) {
     const Precision precision = resolve(scene, requested);
+    const bool classify = classification == Classification::Report;
+    const bool smallScene = gpu::isSmallScene(scene);
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
-    const vk::raii::Pipeline& computePipeline = pipeline(precision);
+    const vk::raii::Pipeline& computePipeline =
+        pipeline({precision, smallScene, gpu::specializationFor(scene, classify)});
+    const SceneBindings& sceneBindings = bindings(smallScene);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
 
@@ -153,30 +189,33 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested) {
     const std::uint32_t rowsPerBand = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
     const std::size_t bandPixels = std::size_t(rowsPerBand) * width;
 
-    const PackedScene packed = packFor(scene, precision);
-    const vk::BufferUsageFlags usage = vk::BufferUsageFlagBits::eStorageBuffer;
-    HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), usage);
-    HostVisibleBuffer nodeBuffer(device, physicalDevice, packed.nodes.size(), usage);
-    HostVisibleBuffer lightBuffer(device, physicalDevice, packed.lights.size(), usage);
-    HostVisibleBuffer pixelBuffer(device, physicalDevice, bandPixels * sizeof(GpuPixel), usage);
-    HostVisibleBuffer classBuffer(device, physicalDevice, bandPixels * sizeof(GpuPixelClass), usage);
+    const PackedScene packed = packFor(scene, precision, smallScene);
+    const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
+    const vk::BufferUsageFlags sceneUsage = smallScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
+    HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), sceneUsage);
+    HostVisibleBuffer nodeBuffer(device, physicalDevice, packed.nodes.size(), sceneUsage);
+    HostVisibleBuffer lightBuffer(device, physicalDevice, packed.lights.size(), sceneUsage);
+    HostVisibleBuffer pixelBuffer(device, physicalDevice, bandPixels * sizeof(GpuPixel), storage);
+    HostVisibleBuffer classBuffer(device, physicalDevice, classify ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
     frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
 
-    const vk::DescriptorPoolSize poolSize(vk::DescriptorType::eStorageBuffer, std::uint32_t(kBindings.size()));
+    const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, std::uint32_t(kBindings.size())),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, std::uint32_t(kBindings.size()))};
     const vk::raii::DescriptorPool pool(
-        device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSize));
-    const vk::DescriptorSetLayout layouts[] = {*setLayout_};
+        device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
+    const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
     const std::array<const HostVisibleBuffer*, 5> buffers = {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer,
                                                              &classBuffer};
     for (std::size_t i = 0; i < kBindings.size(); ++i) {
         const vk::DescriptorBufferInfo info(*buffers[i]->buffer(), 0, buffers[i]->size());
-        device.updateDescriptorSets(vk::WriteDescriptorSet(*set, kBindings[i], 0, vk::DescriptorType::eStorageBuffer,
-                                                           nullptr, info),
-                                    nullptr);
+        device.updateDescriptorSets(
+            vk::WriteDescriptorSet(*set, kBindings[i], 0, descriptorType(kBindings[i], smallScene), nullptr, info),
+            nullptr);
     }
 
     vk::raii::CommandBuffers commandBuffers(
@@ -194,8 +233,8 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested) {
             commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
         }
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *computePipeline);
-        commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *set, nullptr);
-        commands.pushConstants<GpuBand>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute, 0, band);
+        commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *sceneBindings.pipelineLayout, 0, *set, nullptr);
+        commands.pushConstants<GpuBand>(*sceneBindings.pipelineLayout, vk::ShaderStageFlagBits::eCompute, 0, band);
         commands.dispatch(groupsX, groupsY, 1);
         if (useTimestamps) {
             commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
@@ -224,7 +263,7 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested) {
 
     GpuRenderResult result;
     result.image = Image(width, height);
-    result.classes.resize(std::size_t(width) * height);
+    result.classes.resize(classify ? std::size_t(width) * height : 0);
     result.precision = precision;
     result.timing.fromTimestamps = static_cast<bool>(*timestamps_);
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
@@ -240,9 +279,11 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested) {
         const auto* pixels = reinterpret_cast<const GpuPixel*>(pixelBuffer.data());
         std::transform(pixels, pixels + count, result.image.pixels.begin() + std::ptrdiff_t(first),
                        [](const GpuPixel& p) { return glm::vec3(p); });
-        const auto* classes = reinterpret_cast<const GpuPixelClass*>(classBuffer.data());
-        std::transform(classes, classes + count, result.classes.begin() + std::ptrdiff_t(first),
-                       [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
+        if (classify) {
+            const auto* classes = reinterpret_cast<const GpuPixelClass*>(classBuffer.data());
+            std::transform(classes, classes + count, result.classes.begin() + std::ptrdiff_t(first),
+                           [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
+        }
     }
     return result;
 }

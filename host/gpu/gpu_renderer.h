@@ -1,10 +1,11 @@
 #pragma once
 // Renders a scene with the compute shader in shaders/render.comp.
 
-#include <array>
-#include <optional>
+#include <map>
+#include <tuple>
 #include <vector>
 
+#include "gpu/gpu_layout.h"
 #include "gpu/precision.h"
 #include "image/image.h"
 #include "image/pixel_class.h"
@@ -19,15 +20,18 @@ struct GpuTiming {
     bool fromTimestamps = false;           // false: host wall time (no timestamp support)
 };
 
+// Whether render() also reports what each pixel shows (compare needs it, an image does not).
+enum class Classification { Report, Skip };
+
 struct GpuRenderResult {
     Image image;
-    std::vector<PixelClass> classes;  // per pixel, row-major like the image
+    std::vector<PixelClass> classes;  // per pixel, row-major like the image; empty with Skip
     Precision precision = Precision::F32;  // the variant that rendered (never Auto)
     GpuTiming timing;
 };
 
-// Owns the pipelines for one device (each precision variant is built on first use);
-// render() may be called for any number of scenes.
+// Owns the pipelines for one device: one per precision variant and scene specialization,
+// each built on first use. render() may be called for any number of scenes.
 class GpuRenderer {
 public:
     // Images whose pixels exceed `maxBandBytes` (or the device's storage-buffer limit, if
@@ -38,19 +42,28 @@ public:
 
     // Precision::Auto picks per scene (choosePrecision). Throws VulkanError for F64 on a
     // device without shaderFloat64.
-    GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto);
+    GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto,
+                           Classification classification = Classification::Report);
 
     // The precision render() would use for `scene`.
     Precision resolve(const Scene& scene, Precision requested) const;
 
 private:
-    const vk::raii::Pipeline& pipeline(Precision precision);
+    // The descriptor set layout and pipeline layout for one way of uploading the scene.
+    struct SceneBindings {
+        vk::raii::DescriptorSetLayout setLayout;
+        vk::raii::PipelineLayout pipelineLayout;
+    };
+    using PipelineKey = std::tuple<Precision, bool, gpu::ShaderSpecialization>;  // bool: small scene
+
+    const SceneBindings& bindings(bool smallScene) const { return smallScene ? uniformScene_ : storageScene_; }
+    const vk::raii::Pipeline& pipeline(const PipelineKey& key);
 
     const VulkanContext& context_;
     std::uint64_t maxBandBytes_;
-    vk::raii::DescriptorSetLayout setLayout_;
-    vk::raii::PipelineLayout pipelineLayout_;
-    std::array<std::optional<vk::raii::Pipeline>, 4> pipelines_;  // indexed by Precision
+    SceneBindings uniformScene_;  // small scenes: scene data in uniform buffers
+    SceneBindings storageScene_;  // larger ones: in storage buffers
+    std::map<PipelineKey, vk::raii::Pipeline> pipelines_;
     vk::raii::CommandPool commandPool_;
     vk::raii::QueryPool timestamps_;  // null when the queue cannot write timestamps
     double nanosecondsPerTick_ = 1.0;

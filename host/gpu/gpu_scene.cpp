@@ -76,6 +76,28 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placer& pla
 
 }  // namespace
 
+bool isSmallScene(const Scene& scene) {
+    return scene.nodes.size() <= kSmallSceneCapacity && scene.lights.size() <= kSmallSceneCapacity;
+}
+
+ShaderSpecialization specializationFor(const Scene& scene, bool writeClasses) {
+    ShaderSpecialization specialization;
+    specialization.writeClasses = writeClasses ? 1 : 0;
+    if (!isSmallScene(scene)) {
+        return specialization;
+    }
+    specialization.nodeCount = std::uint32_t(scene.nodes.size());
+    specialization.lightCount = std::uint32_t(scene.lights.size());
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+        const std::uint32_t bit = 1u << i;
+        const Shader& shader = scene.shaders[scene.nodes[i].shaderIndex];
+        specialization.sphereNodes |= std::holds_alternative<Sphere>(scene.nodes[i].geometry) ? bit : 0;
+        specialization.constantNodes |= std::holds_alternative<ConstantShader>(shader) ? bit : 0;
+        specialization.checkerNodes |= std::holds_alternative<CheckerShader>(shader) ? bit : 0;
+    }
+    return specialization;
+}
+
 double placementScale(const Scene& scene) {
     const double largest = estimateConditioning(scene).largestDistance;
     return largest > 0 && std::isfinite(largest) ? std::exp2(std::round(std::log2(largest))) : 1.0;

@@ -27,6 +27,12 @@ enum class Placement {
 template <typename Real>
 GpuScene<Real> packScene(const Scene& scene, Placement placement);
 
+// Whether the scene fits the uniform-buffer layout (see kSmallSceneCapacity).
+bool isSmallScene(const Scene& scene);
+
+// The pipeline's specialization for this scene (see gpu_layout.h).
+ShaderSpecialization specializationFor(const Scene& scene, bool writeClasses);
+
 // The power of two the camera-relative placement divides lengths by.
 double placementScale(const Scene& scene);
 

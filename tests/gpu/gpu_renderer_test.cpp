@@ -5,7 +5,10 @@
 #include <glm/vec4.hpp>
 #include <gtest/gtest.h>
 
+#include "compare/compare.h"
+#include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "gpu/gpu_scene.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
 #include "validated_vulkan.h"
@@ -85,6 +88,39 @@ TEST_F(GpuRendererTest, BandsOfRowsGiveTheSameImageAsOneDispatch) {
     GpuRenderer whole(context());
     GpuRenderer banded(context(), 100 * sizeof(glm::vec4) * 7);  // 7 rows per band: 11 bands
     EXPECT_EQ(whole.render(scene).image.pixels, banded.render(scene).image.pixels);
+}
+
+TEST_F(GpuRendererTest, ASceneTooLargeForUniformBuffersUsesTheDataDrivenShaderAndAgrees) {
+    // 48 spheres in a grid over a checkered floor, and 34 lights: past the specialized path.
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    overrideImageSize(scene, 96, 72, "test");
+    for (int i = 0; i < 48; ++i) {
+        scene.nodes.push_back(Node{Sphere{{-60.0 + 20.0 * (i % 8), 4.0 + (i % 3), 20.0 * (i / 8)}, 4.0}, 1});
+    }
+    for (int i = 0; i < 34; ++i) {
+        scene.lights.push_back(PointLight{{-100.0 + 6.0 * i, 150, -50}, Color(1), 300});
+    }
+    ASSERT_FALSE(gpu::isSmallScene(scene));
+    GpuRenderer renderer(context());
+    const CpuRender cpu = renderOnCpu(scene);
+    for (Precision precision : {Precision::F32, Precision::F64}) {
+        const GpuRenderResult gpu = renderer.render(scene, precision);
+        const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
+                                                  gpu.image, gpu.classes, scene.image.encoding);
+        EXPECT_EQ(c.topology.mismatches, 0u) << precisionName(precision);
+        EXPECT_LT(c.topology.ambiguousShare(), 0.2) << precisionName(precision);
+        EXPECT_LE(c.encoded.maxAbs, 1.0) << precisionName(precision);
+    }
+}
+
+TEST_F(GpuRendererTest, SkippingTheClassificationLeavesTheImageAlone) {
+    const Scene scene = loadSceneFile(test::sourcePath("scenes/spheres-and-lights.json"));
+    GpuRenderer renderer(context());
+    const GpuRenderResult with = renderer.render(scene, Precision::F32, Classification::Report);
+    const GpuRenderResult without = renderer.render(scene, Precision::F32, Classification::Skip);
+    EXPECT_EQ(with.classes.size(), with.image.pixels.size());
+    EXPECT_TRUE(without.classes.empty());
+    EXPECT_EQ(with.image.pixels, without.image.pixels);
 }
 
 TEST_F(GpuRendererTest, ReportsRenderTimeAfterTheWarmUp) {
