@@ -14,6 +14,7 @@ layout(local_size_x_id = 0, local_size_y_id = 1) in;
 #include "intersect.glsl"
 #include "surface.glsl"
 #include "shading.glsl"
+#include "encode.glsl"
 
 void main() {
     uvec2 bandPixel = gl_GlobalInvocationID.xy;
@@ -25,8 +26,10 @@ void main() {
     uint flags = 0u;
     vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);
     uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
-    pixels[index] = vec4(color, 1.0);
-    if (WRITE_CLASSES) {
+    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES) {
+        pixels[index] = vec4(color, 1.0);
         classes[index] = uvec2(hit.node, flags);
+    } else {
+        encodedPixels[index] = encode8(color);
     }
 }

@@ -61,6 +61,11 @@ layout(std430, set = 0, binding = 4) writeonly buffer ClassBlock {
     uvec2 classes[];
 };
 const uint BACKGROUND = 0xffffffffu;
+
+// The finished image, when that is all the host wants: RGBA8 packed in a uint, R lowest.
+layout(std430, set = 0, binding = 5) writeonly buffer EncodedBlock {
+    uint encodedPixels[];
+};
 const uint ODD_CHECKER_BIT = 1u;
 const uint CLASSIFIED_LIGHTS = 31u;
 

@@ -9,7 +9,12 @@ layout(constant_id = 3) const uint SCENE_LIGHT_COUNT = DYNAMIC;
 layout(constant_id = 4) const uint SPHERE_NODES = 0u;    // bit i: node i is a sphere (else a plane)
 layout(constant_id = 5) const uint CONSTANT_NODES = 0u;  // bit i: node i is constant-shaded
 layout(constant_id = 6) const uint CHECKER_NODES = 0u;   // bit i: node i is checker-shaded
-layout(constant_id = 7) const bool WRITE_CLASSES = true;  // the per-pixel classification is wanted
+// What the render produces (GpuOutput on the host): linear RGB and the classification, for
+// comparisons; or only the finished 8-bit image, encoded here so the host has nothing to do.
+const uint OUTPUT_LINEAR_AND_CLASSES = 0u;
+const uint OUTPUT_8BIT_LINEAR = 1u;
+const uint OUTPUT_8BIT_SRGB = 2u;
+layout(constant_id = 7) const uint OUTPUT_MODE = OUTPUT_LINEAR_AND_CLASSES;
 
 const bool NODES_SPECIALISED = SCENE_NODE_COUNT != DYNAMIC;
 

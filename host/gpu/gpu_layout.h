@@ -23,6 +23,7 @@ inline constexpr std::uint32_t kNodeBinding = 1;
 inline constexpr std::uint32_t kLightBinding = 2;
 inline constexpr std::uint32_t kPixelBinding = 3;
 inline constexpr std::uint32_t kClassBinding = 4;
+inline constexpr std::uint32_t kEncodedBinding = 5;
 
 enum GeometryKind : std::uint32_t { kGeometryPlane = 0, kGeometrySphere = 1 };
 enum ShaderKind : std::uint32_t { kShaderConstant = 0, kShaderLambert = 1, kShaderChecker = 2 };
@@ -81,6 +82,9 @@ using GpuPixel = glm::vec4;
 // One output classification: PixelClass's node and flags (see image/pixel_class.h).
 using GpuPixelClass = glm::uvec2;
 
+// One encoded output pixel: RGBA8, R in the lowest byte.
+using GpuEncodedPixel = std::uint32_t;
+
 // A small scene (at most kSmallSceneCapacity nodes and as many lights) is uploaded in uniform
 // buffers of that many entries and gets a fully specialized pipeline; a larger one uses
 // storage buffers and the data-driven loops (shaders/scene_data.glsl, specialization.glsl).
@@ -90,6 +94,9 @@ inline constexpr std::size_t kSmallSceneCapacity = 32;
 // what the pipeline is built for. A small scene gets loops the compiler unrolls and no
 // branches for kinds it does not use.
 inline constexpr std::uint32_t kDynamic = 0xffffffffu;
+inline constexpr std::uint32_t kOutputLinearAndClasses = 0;  // pixels and classes buffers
+inline constexpr std::uint32_t kOutput8BitLinear = 1;        // the encoded buffer
+inline constexpr std::uint32_t kOutput8BitSrgb = 2;
 
 struct ShaderSpecialization {
     std::uint32_t nodeCount = kDynamic;  // kDynamic: read from the frame, kinds from the nodes
@@ -97,7 +104,7 @@ struct ShaderSpecialization {
     std::uint32_t sphereNodes = 0;    // bit i: node i is a sphere (else a plane)
     std::uint32_t constantNodes = 0;  // bit i: node i is constant-shaded
     std::uint32_t checkerNodes = 0;   // bit i: node i is checker-shaded
-    std::uint32_t writeClasses = 1;   // a GLSL bool specialization constant is 32 bits
+    std::uint32_t outputMode = kOutputLinearAndClasses;
 
     auto operator<=>(const ShaderSpecialization&) const = default;
 };

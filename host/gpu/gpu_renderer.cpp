@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 #include "gpu/gpu_layout.h"
@@ -28,8 +29,8 @@ using gpu::GpuPixel;
 using gpu::GpuPixelClass;
 using gpu::kWorkgroupSize;
 
-constexpr std::array<std::uint32_t, 5> kBindings = {gpu::kFrameBinding, gpu::kNodeBinding, gpu::kLightBinding,
-                                                    gpu::kPixelBinding, gpu::kClassBinding};
+constexpr std::array<std::uint32_t, 6> kBindings = {gpu::kFrameBinding, gpu::kNodeBinding, gpu::kLightBinding,
+                                                    gpu::kPixelBinding, gpu::kClassBinding, gpu::kEncodedBinding};
 
 using Spirv = std::span<const std::uint32_t>;
 
@@ -170,14 +171,17 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(const PipelineKey& key) {
     return found->second;
 }
 
-GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Classification classification) {
+GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, GpuOutput output) {
     const Precision precision = resolve(scene, requested);
-    const bool classify = classification == Classification::Report;
+    const bool linear = output == GpuOutput::LinearAndClasses;
+    const std::uint32_t outputMode = linear                                     ? gpu::kOutputLinearAndClasses
+                                     : scene.image.encoding == Encoding::Srgb ? gpu::kOutput8BitSrgb
+                                                                              : gpu::kOutput8BitLinear;
     const bool smallScene = gpu::isSmallScene(scene);
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
     const vk::raii::Pipeline& computePipeline =
-        pipeline({precision, smallScene, gpu::specializationFor(scene, classify)});
+        pipeline({precision, smallScene, gpu::specializationFor(scene, outputMode)});
     const SceneBindings& sceneBindings = bindings(smallScene);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
@@ -195,8 +199,11 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Cla
     HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), sceneUsage);
     HostVisibleBuffer nodeBuffer(device, physicalDevice, packed.nodes.size(), sceneUsage);
     HostVisibleBuffer lightBuffer(device, physicalDevice, packed.lights.size(), sceneUsage);
-    HostVisibleBuffer pixelBuffer(device, physicalDevice, bandPixels * sizeof(GpuPixel), storage);
-    HostVisibleBuffer classBuffer(device, physicalDevice, classify ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
+    // Only the output mode's buffers get their full size; the others are bound but never written.
+    HostVisibleBuffer pixelBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixel) : 0, storage);
+    HostVisibleBuffer classBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
+    HostVisibleBuffer encodedBuffer(device, physicalDevice, linear ? 0 : bandPixels * sizeof(gpu::GpuEncodedPixel),
+                                    storage);
     frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
@@ -209,8 +216,8 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Cla
     const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
-    const std::array<const HostVisibleBuffer*, 5> buffers = {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer,
-                                                             &classBuffer};
+    const std::array<const HostVisibleBuffer*, 6> buffers = {&frameBuffer, &nodeBuffer,  &lightBuffer,
+                                                             &pixelBuffer, &classBuffer, &encodedBuffer};
     for (std::size_t i = 0; i < kBindings.size(); ++i) {
         const vk::DescriptorBufferInfo info(*buffers[i]->buffer(), 0, buffers[i]->size());
         device.updateDescriptorSets(
@@ -262,8 +269,12 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Cla
     };
 
     GpuRenderResult result;
-    result.image = Image(width, height);
-    result.classes.resize(classify ? std::size_t(width) * height : 0);
+    if (linear) {
+        result.image = Image(width, height);
+        result.classes.resize(std::size_t(width) * height);
+    } else {
+        result.encoded = Rgb8Image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
+    }
     result.precision = precision;
     result.timing.fromTimestamps = static_cast<bool>(*timestamps_);
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
@@ -276,13 +287,19 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Cla
         result.timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
         const std::size_t count = std::size_t(rows) * width;
         const std::size_t first = std::size_t(firstRow) * width;
-        const auto* pixels = reinterpret_cast<const GpuPixel*>(pixelBuffer.data());
-        std::transform(pixels, pixels + count, result.image.pixels.begin() + std::ptrdiff_t(first),
-                       [](const GpuPixel& p) { return glm::vec3(p); });
-        if (classify) {
+        if (linear) {
+            const auto* pixels = reinterpret_cast<const GpuPixel*>(pixelBuffer.data());
+            std::transform(pixels, pixels + count, result.image.pixels.begin() + std::ptrdiff_t(first),
+                           [](const GpuPixel& p) { return glm::vec3(p); });
             const auto* classes = reinterpret_cast<const GpuPixelClass*>(classBuffer.data());
             std::transform(classes, classes + count, result.classes.begin() + std::ptrdiff_t(first),
                            [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
+        } else {
+            const auto* rgba = reinterpret_cast<const std::uint8_t*>(encodedBuffer.data());
+            std::uint8_t* rgb = result.encoded.bytes.data() + 3 * first;
+            for (std::size_t i = 0; i < count; ++i) {
+                std::memcpy(rgb + 3 * i, rgba + 4 * i, 3);
+            }
         }
     }
     return result;

@@ -8,6 +8,7 @@
 #include "gpu/gpu_layout.h"
 #include "gpu/precision.h"
 #include "image/image.h"
+#include "image/image_io.h"
 #include "image/pixel_class.h"
 #include "scene/scene.h"
 #include "vulkan/vulkan_context.h"
@@ -20,12 +21,14 @@ struct GpuTiming {
     bool fromTimestamps = false;           // false: host wall time (no timestamp support)
 };
 
-// Whether render() also reports what each pixel shows (compare needs it, an image does not).
-enum class Classification { Report, Skip };
+// What render() produces: linear RGB and what each pixel shows, for comparisons; or only the
+// finished 8-bit image, encoded on the device as the scene asks (sRGB or linear).
+enum class GpuOutput { LinearAndClasses, Encoded8 };
 
 struct GpuRenderResult {
-    Image image;
-    std::vector<PixelClass> classes;  // per pixel, row-major like the image; empty with Skip
+    Image image;                      // LinearAndClasses
+    std::vector<PixelClass> classes;  // LinearAndClasses: per pixel, row-major like the image
+    Rgb8Image encoded;                // Encoded8
     Precision precision = Precision::F32;  // the variant that rendered (never Auto)
     GpuTiming timing;
 };
@@ -43,7 +46,7 @@ public:
     // Precision::Auto picks per scene (choosePrecision). Throws VulkanError for F64 on a
     // device without shaderFloat64.
     GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto,
-                           Classification classification = Classification::Report);
+                           GpuOutput output = GpuOutput::LinearAndClasses);
 
     // The precision render() would use for `scene`.
     Precision resolve(const Scene& scene, Precision requested) const;

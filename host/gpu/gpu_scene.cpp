@@ -80,9 +80,9 @@ bool isSmallScene(const Scene& scene) {
     return scene.nodes.size() <= kSmallSceneCapacity && scene.lights.size() <= kSmallSceneCapacity;
 }
 
-ShaderSpecialization specializationFor(const Scene& scene, bool writeClasses) {
+ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputMode) {
     ShaderSpecialization specialization;
-    specialization.writeClasses = writeClasses ? 1 : 0;
+    specialization.outputMode = outputMode;
     if (!isSmallScene(scene)) {
         return specialization;
     }

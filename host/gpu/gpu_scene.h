@@ -31,7 +31,7 @@ GpuScene<Real> packScene(const Scene& scene, Placement placement);
 bool isSmallScene(const Scene& scene);
 
 // The pipeline's specialization for this scene (see gpu_layout.h).
-ShaderSpecialization specializationFor(const Scene& scene, bool writeClasses);
+ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputMode);
 
 // The power of two the camera-relative placement divides lengths by.
 double placementScale(const Scene& scene);

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
+#include <spng.h>
 #include <stb_image.h>
-#include <stb_image_write.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -67,20 +67,46 @@ Rgb8Image encodeImage(const Image& image, Encoding encoding) {
     return out;
 }
 
-void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
-    std::vector<std::uint8_t> png;
-    const auto append = [](void* context, void* data, int size) {
-        auto* bytes = static_cast<std::uint8_t*>(data);
-        static_cast<std::vector<std::uint8_t>*>(context)->insert(
-            static_cast<std::vector<std::uint8_t>*>(context)->end(), bytes, bytes + size);
-    };
-    if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 3, image.bytes.data(),
-                                int(image.width * 3))) {
-        throw ImageIoError(path.string() + ": cannot encode PNG");
+namespace {
+
+// zlib level 2 without row filters: about 10x faster than stb's encoder on hexray's images
+// (15 ms for 1080p here), whose flat regions compress well without filtering.
+std::vector<std::uint8_t> encodePng(const Rgb8Image& image, const std::filesystem::path& path) {
+    const std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> context(spng_ctx_new(SPNG_CTX_ENCODER), spng_ctx_free);
+    spng_ihdr header{};
+    header.width = image.width;
+    header.height = image.height;
+    header.bit_depth = 8;
+    header.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
+    int error = context ? 0 : SPNG_EMEM;
+    for (const auto& [option, value] : {std::pair{SPNG_ENCODE_TO_BUFFER, 1}, std::pair{SPNG_IMG_COMPRESSION_LEVEL, 2},
+                                        std::pair{SPNG_FILTER_CHOICE, int(SPNG_FILTER_CHOICE_NONE)}}) {
+        error = error ? error : spng_set_option(context.get(), option, value);
     }
+    error = error ? error : spng_set_ihdr(context.get(), &header);
+    error = error ? error
+                  : spng_encode_image(context.get(), image.bytes.data(), image.bytes.size(), SPNG_FMT_PNG,
+                                      SPNG_ENCODE_FINALIZE);
+    std::size_t size = 0;
+    const std::unique_ptr<std::uint8_t, void (*)(void*)> png(
+        error ? nullptr : static_cast<std::uint8_t*>(spng_get_png_buffer(context.get(), &size, &error)), std::free);
+    if (error || !png) {
+        throw ImageIoError(path.string() + ": cannot encode PNG: " + spng_strerror(error));
+    }
+    return {png.get(), png.get() + size};
+}
+
+}  // namespace
+
+void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
+    const std::vector<std::uint8_t> png = encodePng(image, path);
 
     const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
-    TemporaryFile temporary{(directory / ("." + path.filename().string() + ".XXXXXX")).string()};
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about "." + string + "...".
+    std::string temporaryName = ".";
+    temporaryName += path.filename().string();
+    temporaryName += ".XXXXXX";
+    TemporaryFile temporary{(directory / temporaryName).string()};
     const int fd = ::mkstemp(temporary.path.data());
     if (fd < 0) {
         temporary.keep = true;  // nothing was created
