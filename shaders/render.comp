@@ -21,14 +21,25 @@ void main() {
     if (bandPixel.x >= frame.imageSize.x || bandPixel.y >= band.rowCount) {
         return;
     }
-    Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y));
-    Hit hit = findNearestHit(ray);
+    // The pixel is classified by its first sample (as the CPU reference does).
+    uint node = NO_NODE;
     uint flags = 0u;
-    vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);
+    vec3 sum = vec3(0.0);
+    for (uint sampleIndex = 0u; sampleIndex < SAMPLES_PER_PIXEL; ++sampleIndex) {
+        Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y), sampleIndex);
+        Hit hit = findNearestHit(ray);
+        uint sampleFlags = 0u;
+        sum += hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, sampleFlags);
+        if (sampleIndex == 0u) {
+            node = hit.node;
+            flags = sampleFlags;
+        }
+    }
+    vec3 color = sum / float(SAMPLES_PER_PIXEL);
     uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
     if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES) {
         pixels[index] = vec4(color, 1.0);
-        classes[index] = uvec2(hit.node, flags);
+        classes[index] = uvec2(node, flags);
     } else {
         encodedPixels[index] = encode8(color);
     }

@@ -15,6 +15,7 @@ const uint OUTPUT_LINEAR_AND_CLASSES = 0u;
 const uint OUTPUT_8BIT_LINEAR = 1u;
 const uint OUTPUT_8BIT_SRGB = 2u;
 layout(constant_id = 7) const uint OUTPUT_MODE = OUTPUT_LINEAR_AND_CLASSES;
+layout(constant_id = 8) const uint SAMPLES_PER_PIXEL = 1u;  // anti-aliasing
 
 const bool NODES_SPECIALISED = SCENE_NODE_COUNT != DYNAMIC;
 

@@ -35,4 +35,17 @@ PixelSheet makePixelSheet(const CameraSettings& camera, double aspect) {
     return sheet;
 }
 
+glm::dvec2 sampleOffset(std::uint32_t index, std::uint32_t count, Sampling sampling) {
+    std::uint32_t reversed = index;  // bit reversal of a 32-bit index
+    reversed = (reversed << 16) | (reversed >> 16);
+    reversed = ((reversed & 0x00ff00ffu) << 8) | ((reversed & 0xff00ff00u) >> 8);
+    reversed = ((reversed & 0x0f0f0f0fu) << 4) | ((reversed & 0xf0f0f0f0u) >> 4);
+    reversed = ((reversed & 0x33333333u) << 2) | ((reversed & 0xccccccccu) >> 2);
+    reversed = ((reversed & 0x55555555u) << 1) | ((reversed & 0xaaaaaaaau) >> 1);
+    const double u = (double(index) + 0.5) / double(count);
+    const double radicalInverse = double(reversed) * 0x1p-32;
+    const double v = std::fmod(radicalInverse + 0.5 / double(count), 1.0);
+    return glm::dvec2(u, v) - (0.5 - samplingOffset(sampling));
+}
+
 }  // namespace hexray

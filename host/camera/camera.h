@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "scene/scene.h"
@@ -35,5 +36,11 @@ PixelSheet makePixelSheet(const CameraSettings& camera, double aspect);
 inline double samplingOffset(Sampling sampling) {
     return sampling == Sampling::Center ? 0.5 : 0.0;
 }
+
+// Where sample `index` of `count` aims, as an offset from pixel (x, y): a stratified
+// Hammersley pattern, u = (i + 0.5) / n, v = radical inverse of i in base 2 + 0.5 / n (mod 1),
+// over the pixel's footprint: the unit square with samplingOffset at its centre. One sample is
+// exactly samplingOffset. The shader computes the same pattern (shaders/camera_ray.glsl).
+glm::dvec2 sampleOffset(std::uint32_t index, std::uint32_t count, Sampling sampling);
 
 }  // namespace hexray

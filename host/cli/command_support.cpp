@@ -32,12 +32,15 @@ int guarded(const std::function<int()>& command) {
     }
 }
 
-Scene loadScene(const std::string& path, const SizeOverride& size) {
+Scene loadScene(const std::string& path, const ImageOverride& image) {
     Scene scene = loadSceneFile(path);
-    if (size.width || size.height) {
-        const char* source = !size.height ? "--width" : !size.width ? "--height" : "--width/--height";
-        overrideImageSize(scene, size.width.value_or(scene.image.width), size.height.value_or(scene.image.height),
+    if (image.width || image.height) {
+        const char* source = !image.height ? "--width" : !image.width ? "--height" : "--width/--height";
+        overrideImageSize(scene, image.width.value_or(scene.image.width), image.height.value_or(scene.image.height),
                           source);
+    }
+    if (image.samplesPerPixel) {
+        overrideSamplesPerPixel(scene, *image.samplesPerPixel, "--spp");
     }
     return scene;
 }

@@ -17,7 +17,7 @@ void printError(const std::string& message);
 // Runs a command, turning each kind of failure into its message and exit code.
 int guarded(const std::function<int()>& command);
 
-Scene loadScene(const std::string& path, const SizeOverride& size);
+Scene loadScene(const std::string& path, const ImageOverride& image);
 
 unsigned threadCount(unsigned requested);
 

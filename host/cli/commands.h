@@ -22,9 +22,11 @@ enum ExitCode : int {
 
 enum class Backend { Gpu, Cpu };
 
-struct SizeOverride {
+// Command-line replacements for the scene file's image settings.
+struct ImageOverride {
     std::optional<std::int64_t> width;
     std::optional<std::int64_t> height;
+    std::optional<std::int64_t> samplesPerPixel;
 };
 
 struct VulkanOptions {
@@ -34,7 +36,7 @@ struct VulkanOptions {
 
 struct RenderOptions {
     std::string scenePath;
-    SizeOverride size;
+    ImageOverride image;
     VulkanOptions vulkan;
     Backend backend = Backend::Gpu;
     Precision precision = Precision::Auto;
@@ -44,7 +46,7 @@ struct RenderOptions {
 
 struct CompareOptions {
     std::vector<std::string> scenePaths;  // scene files or directories of them
-    SizeOverride size;
+    ImageOverride image;
     VulkanOptions vulkan;
     Precision precision = Precision::Auto;
     bool allPrecisions = false;  // f32-naive, f32 and f64 for every scene, as one table

@@ -129,7 +129,7 @@ int runCompare(const CompareOptions& options) {
             printTableHeader();
         }
         for (const SceneFile& file : files) {
-            const Scene scene = loadScene(file.path, options.size);
+            const Scene scene = loadScene(file.path, options.image);
             const unsigned threads = threadCount(options.threads);
             const auto cpuStart = std::chrono::steady_clock::now();
             const CpuRender reference = renderOnCpu(scene, threads);

@@ -15,9 +15,11 @@ constexpr const char* kExitCodes =
     "3 Vulkan unavailable or failed; 4 --validate and the validation layer reported messages;\n"
     "5 the output image could not be written.";
 
-void addSizeOptions(CLI::App& command, SizeOverride& size) {
-    command.add_option("--width", size.width, "Override the scene's image width (pixels)");
-    command.add_option("--height", size.height, "Override the scene's image height (pixels)");
+void addImageOptions(CLI::App& command, ImageOverride& image) {
+    command.add_option("--width", image.width, "Override the scene's image width (pixels)");
+    command.add_option("--height", image.height, "Override the scene's image height (pixels)");
+    command.add_option("--spp", image.samplesPerPixel,
+                       "Override the scene's samples per pixel (anti-aliasing, 1 to 1024; default 1)");
 }
 
 void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
@@ -59,7 +61,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"gpu", "cpu"}))
         ->capture_default_str();
     addPrecisionOption(*renderCommand, renderPrecision);
-    addSizeOptions(*renderCommand, render.size);
+    addImageOptions(*renderCommand, render.image);
     addDeviceOption(*renderCommand, render.vulkan);
     renderCommand->add_option("--threads", render.threads, "CPU backend threads (default: all cores)")
         ->check(CLI::PositiveNumber);
@@ -77,7 +79,7 @@ int main(int argc, char** argv) {
                    "Every precision (f32-naive, f32, f64) for every scene, as one table; f32-naive rows are "
                    "shown but not judged")
         ->excludes(precisionOption);
-    addSizeOptions(*compareCommand, compare.size);
+    addImageOptions(*compareCommand, compare.image);
     addDeviceOption(*compareCommand, compare.vulkan);
     compareCommand->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)");
     compareCommand

@@ -19,7 +19,7 @@ std::string defaultOutputPath(const std::string& scenePath) {
 int runRender(const RenderOptions& options) {
     ValidationLog log;
     const int code = guarded([&] {
-        const Scene scene = loadScene(options.scenePath, options.size);
+        const Scene scene = loadScene(options.scenePath, options.image);
         Rgb8Image image;
         char how[512];
         if (options.backend == Backend::Gpu) {

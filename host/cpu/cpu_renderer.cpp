@@ -23,10 +23,11 @@ namespace {
 
 constexpr double kNoEnd = std::numeric_limits<double>::infinity();  // a camera ray's range
 
-Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y) {
-    const double offset = samplingOffset(image.sampling);
-    const double sx = double(x) + offset;
-    const double sy = double(y) + offset;
+Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
+              std::uint32_t sample) {
+    const glm::dvec2 offset = sampleOffset(sample, image.samplesPerPixel, image.sampling);
+    const double sx = double(x) + offset.x;
+    const double sy = double(y) + offset.y;
     const glm::dvec3 aim = sheet.topLeft + sheet.right * (sx / double(image.width)) +
                            sheet.down * (sy / double(image.height));
     // Camera rays start at t = 0 exactly: no offset, so nothing right in front of the eye is lost.
@@ -174,12 +175,22 @@ TracedPixel tracePixel(const Scene& scene, const Ray& ray) {
 
 void renderRow(const Scene& scene, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
     Image& image = render.image;
+    const std::uint32_t samples = scene.image.samplesPerPixel;
     for (std::uint32_t x = 0; x < image.width; ++x) {
-        const TracedPixel pixel = tracePixel(scene, cameraRay(sheet, scene.image, x, y));
+        // With several samples the pixel is classified by its first and is as ambiguous as its
+        // closest call: only then do equal classes mean equal colours.
+        const TracedPixel first = tracePixel(scene, cameraRay(sheet, scene.image, x, y, 0));
+        Color sum = first.color;
+        float margin = first.margin;
+        for (std::uint32_t sample = 1; sample < samples; ++sample) {
+            const TracedPixel pixel = tracePixel(scene, cameraRay(sheet, scene.image, x, y, sample));
+            sum += pixel.color;
+            margin = std::min(margin, pixel.margin);
+        }
         const std::size_t index = std::size_t(y) * image.width + x;
-        image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
-        render.classes[index] = pixel.pixelClass;
-        render.margins[index] = pixel.margin;
+        image.pixels[index] = glm::vec3(sum / double(samples));  // linear, not clamped: encoding happens later
+        render.classes[index] = first.pixelClass;
+        render.margins[index] = margin;
     }
 }
 

@@ -90,7 +90,7 @@ using GpuEncodedPixel = std::uint32_t;
 // storage buffers and the data-driven loops (shaders/scene_data.glsl, specialization.glsl).
 inline constexpr std::size_t kSmallSceneCapacity = 32;
 
-// Specialization constants 2 to 7 of render.comp (shaders/specialization.glsl), in id order:
+// Specialization constants 2 to 8 of render.comp (shaders/specialization.glsl), in id order:
 // what the pipeline is built for. A small scene gets loops the compiler unrolls and no
 // branches for kinds it does not use.
 inline constexpr std::uint32_t kDynamic = 0xffffffffu;
@@ -105,10 +105,11 @@ struct ShaderSpecialization {
     std::uint32_t constantNodes = 0;  // bit i: node i is constant-shaded
     std::uint32_t checkerNodes = 0;   // bit i: node i is checker-shaded
     std::uint32_t outputMode = kOutputLinearAndClasses;
+    std::uint32_t samplesPerPixel = 1;
 
     auto operator<=>(const ShaderSpecialization&) const = default;
 };
-static_assert(sizeof(ShaderSpecialization) == 6 * sizeof(std::uint32_t));
+static_assert(sizeof(ShaderSpecialization) == 7 * sizeof(std::uint32_t));
 
 // --- std430 offsets, float variant
 static_assert(offsetof(GpuFrame<float>, origin) == 0);

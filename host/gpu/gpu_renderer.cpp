@@ -64,7 +64,7 @@ vk::raii::PipelineLayout createPipelineLayout(const vk::raii::Device& device,
     return vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo({}, layouts, band));
 }
 
-// Specialization constants in id order: 0 and 1 the local size, 2 to 7 the scene's.
+// Specialization constants in id order: 0 and 1 the local size, 2 to 8 the scene's.
 struct SpecializationData {
     std::uint32_t localSizeX = kWorkgroupSize;
     std::uint32_t localSizeY = kWorkgroupSize;

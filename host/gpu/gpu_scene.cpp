@@ -83,6 +83,7 @@ bool isSmallScene(const Scene& scene) {
 ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputMode) {
     ShaderSpecialization specialization;
     specialization.outputMode = outputMode;
+    specialization.samplesPerPixel = scene.image.samplesPerPixel;
     if (!isSmallScene(scene)) {
         return specialization;
     }

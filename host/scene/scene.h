@@ -22,11 +22,13 @@ struct ImageSettings {
     std::uint32_t height = 600;
     Sampling sampling = Sampling::Center;
     Encoding encoding = Encoding::Srgb;
+    std::uint32_t samplesPerPixel = 1;  // anti-aliasing: rays per pixel, averaged
 };
 
 // Requests beyond these would exhaust memory rather than render; checked at load time.
 inline constexpr std::uint32_t kMaxImageDimension = 16384;
 inline constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 26;  // 8192 x 8192
+inline constexpr std::uint32_t kMaxSamplesPerPixel = 1024;
 
 struct CameraSettings {
     glm::dvec3 position{0.0};

@@ -326,13 +326,16 @@ constexpr std::pair<const char*, ShaderType> kShaderTypes[] = {
     {"constant", ShaderType::Constant}, {"lambert", ShaderType::Lambert}, {"checker", ShaderType::Checker}};
 
 ImageSettings readImage(const JsonReader& image) {
-    image.rejectUnknownKeys({"width", "height", "sampling", "encoding"});
+    image.rejectUnknownKeys({"width", "height", "sampling", "encoding", "spp"});
     ImageSettings settings;
     settings.width = std::uint32_t(image.at("width").integer(1, kMaxImageDimension));
     settings.height = std::uint32_t(image.at("height").integer(1, kMaxImageDimension));
     if (auto problem = pixelCountProblem(settings.width, settings.height)) image.fail(*problem);
     settings.sampling = image.choiceOr("sampling", settings.sampling, kSamplingNames);
     settings.encoding = image.choiceOr("encoding", settings.encoding, kEncodingNames);
+    if (const auto spp = image.find("spp")) {
+        settings.samplesPerPixel = std::uint32_t(spp->integer(1, kMaxSamplesPerPixel));
+    }
     return settings;
 }
 
@@ -568,6 +571,13 @@ void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, co
     }
     scene.image.width = std::uint32_t(width);
     scene.image.height = std::uint32_t(height);
+}
+
+void overrideSamplesPerPixel(Scene& scene, std::int64_t samples, const std::string& source) {
+    if (samples < 1 || samples > std::int64_t{kMaxSamplesPerPixel}) {
+        throw SceneError(source + ": " + rangeProblem(1, kMaxSamplesPerPixel, std::to_string(samples)));
+    }
+    scene.image.samplesPerPixel = std::uint32_t(samples);
 }
 
 }  // namespace hexray

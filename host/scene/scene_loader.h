@@ -24,4 +24,7 @@ Scene parseScene(const std::string& text, const std::string& sourceName);
 // `source` names where the numbers came from, for the message.
 void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, const std::string& source);
 
+// Replaces the samples per pixel, with the same check as the file's "spp".
+void overrideSamplesPerPixel(Scene& scene, std::int64_t samples, const std::string& source);
+
 }  // namespace hexray

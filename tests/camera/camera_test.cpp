@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -134,4 +135,32 @@ TEST(Camera, SheetAspectPrefersTheCamerasOwn) {
 TEST(Camera, SamplingOffsets) {
     EXPECT_EQ(samplingOffset(Sampling::Center), 0.5);
     EXPECT_EQ(samplingOffset(Sampling::Corner), 0.0);
+}
+
+TEST(SampleOffset, OneSampleIsTheCentreOrTheCorner) {
+    EXPECT_EQ(sampleOffset(0, 1, Sampling::Center), glm::dvec2(0.5, 0.5));
+    EXPECT_EQ(sampleOffset(0, 1, Sampling::Corner), glm::dvec2(0.0, 0.0));
+}
+
+TEST(SampleOffset, FourSamplesAreStratifiedInRowsAndColumns) {
+    // u = (i + 0.5) / 4; v = radical inverse of i (0, 1/2, 1/4, 3/4) + 1/8.
+    const glm::dvec2 expected[] = {{0.125, 0.125}, {0.375, 0.625}, {0.625, 0.375}, {0.875, 0.875}};
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(sampleOffset(i, 4, Sampling::Center), expected[i]) << i;
+        EXPECT_EQ(sampleOffset(i, 4, Sampling::Corner), expected[i] - 0.5) << i;
+    }
+}
+
+TEST(SampleOffset, ManySamplesCoverThePixelEvenly) {
+    // Every one of the 16 x 16 cells of the pixel holds exactly one of 256 samples.
+    std::set<std::pair<int, int>> cells;
+    for (std::uint32_t i = 0; i < 256; ++i) {
+        const glm::dvec2 offset = sampleOffset(i, 256, Sampling::Center);
+        ASSERT_GE(offset.x, 0.0);
+        ASSERT_LT(offset.x, 1.0);
+        ASSERT_GE(offset.y, 0.0);
+        ASSERT_LT(offset.y, 1.0);
+        cells.insert({int(offset.x * 16), int(offset.y * 16)});
+    }
+    EXPECT_EQ(cells.size(), 256u);
 }

@@ -1,5 +1,6 @@
 // The GPU renderer on small scenes whose pixels are known by hand.
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/vec4.hpp>
@@ -126,6 +127,50 @@ TEST_F(GpuRendererTest, EncodingOnTheDeviceMatchesTheHostsEncoding) {
         EXPECT_LE(m.maxAbs, 1.0) << name;
         EXPECT_LT(m.meanAbs, 1e-3) << name;
     }
+}
+
+TEST_F(GpuRendererTest, AntiAliasingBlendsASilhouetteOnlyWhereItCrossesAPixel) {
+    // A constant white disc on black: one sample per pixel gives only black and white; 16 give
+    // edge pixels in between, and the whole image keeps its total of white to within a pixel.
+    Scene scene = smallScene(32, 32);
+    scene.camera.fovDegrees = 60;
+    scene.shaderNames = {"white"};
+    scene.shaders = {ConstantShader{Color(1.0)}};
+    scene.nodes = {Node{Sphere{{0, 0, 10}, 2.5}, 0}};
+    GpuRenderer renderer(context());
+    const auto partialPixels = [](const Image& image) {
+        return std::count_if(image.pixels.begin(), image.pixels.end(),
+                             [](const glm::vec3& p) { return p.r > 0.0f && p.r < 1.0f; });
+    };
+    const auto total = [](const Image& image) {
+        double sum = 0;
+        for (const glm::vec3& p : image.pixels) sum += p.r;
+        return sum;
+    };
+    const Image sharp = renderer.render(scene).image;
+    scene.image.samplesPerPixel = 16;
+    const Image smooth = renderer.render(scene).image;
+    EXPECT_EQ(partialPixels(sharp), 0);
+    EXPECT_GT(partialPixels(smooth), 40);
+    EXPECT_NEAR(total(smooth), total(sharp), 8.0);
+    for (const glm::vec3& p : smooth.pixels) {
+        EXPECT_FLOAT_EQ(p.r * 16.0f, std::round(p.r * 16.0f));  // an average of 16 samples of 0 or 1
+    }
+}
+
+TEST_F(GpuRendererTest, AntiAliasedRendersAgreeWithTheCpuReference) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/spheres-and-lights.json"));
+    overrideImageSize(scene, 240, 135, "test");
+    overrideSamplesPerPixel(scene, 4, "test");
+    GpuRenderer renderer(context());
+    const CpuRender cpu = renderOnCpu(scene);
+    const GpuRenderResult gpu = renderer.render(scene, Precision::F32);
+    const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
+                                              gpu.image, gpu.classes, scene.image.encoding);
+    const Tolerance tolerance;
+    EXPECT_EQ(c.topology.mismatches, 0u);
+    EXPECT_LE(100.0 * c.encoded.shareOverOneLevel, tolerance.maxSharePercent);
+    EXPECT_LE(c.encoded.rmse, tolerance.maxRmseLevels);
 }
 
 TEST_F(GpuRendererTest, ReportsRenderTimeAfterTheWarmUp) {

@@ -429,7 +429,7 @@ TEST(SceneLoaderRejects, UnknownKeysAtEveryDepth) {
     EXPECT_EQ(errorForChange(R"("lights":)", R"("lihgts":)"),
               "test.json: lihgts: unknown key (allowed: ambient, background, camera, image, lights, nodes, shaders)");
     EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 8, "depth": 3)"),
-              "test.json: image.depth: unknown key (allowed: encoding, height, sampling, width)");
+              "test.json: image.depth: unknown key (allowed: encoding, height, sampling, spp, width)");
     EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "fvo": 60)"),
               "test.json: camera.fvo: unknown key (allowed: aspect, fov, pitch, position, roll, yaw)");
     EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("intensity": 100, "colour": [1, 1, 1])"),
@@ -534,4 +534,27 @@ TEST(OverrideImageSize, RejectsWithTheSameChecksAndLeavesTheSceneAlone) {
               "command line: 16384 x 16384 = 268435456 pixels exceeds the limit of 67108864 pixels");
     EXPECT_EQ(scene.image.width, 8u);
     EXPECT_EQ(scene.image.height, 6u);
+}
+
+TEST(SamplesPerPixel, DefaultOneReadFromSppAndChecked) {
+    EXPECT_EQ(parseScene(kValidScene, "test.json").image.samplesPerPixel, 1u);
+    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8,)", R"("width": 8, "spp": 16,)"), "test.json").image.samplesPerPixel,
+              16u);
+    EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, "spp": 0,)"),
+              "test.json: image.spp: must be between 1 and 1024 (got 0)");
+    EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, "spp": 2.5,)"),
+              "test.json: image.spp: must be an integer (got 2.5)");
+}
+
+TEST(SamplesPerPixel, OverrideIsCheckedTheSameWay) {
+    Scene scene = parseScene(kValidScene, "test.json");
+    overrideSamplesPerPixel(scene, 64, "--spp");
+    EXPECT_EQ(scene.image.samplesPerPixel, 64u);
+    try {
+        overrideSamplesPerPixel(scene, 5000, "--spp");
+        ADD_FAILURE() << "5000 samples were accepted";
+    } catch (const SceneError& error) {
+        EXPECT_STREQ(error.what(), "--spp: must be between 1 and 1024 (got 5000)");
+    }
+    EXPECT_EQ(scene.image.samplesPerPixel, 64u);
 }
