@@ -55,8 +55,19 @@ struct CompareOptions {
     unsigned threads = 0;
 };
 
+struct BenchOptions {
+    std::vector<std::string> scenePaths;
+    ImageOverride image;
+    VulkanOptions vulkan;
+    unsigned rounds = 5;
+    std::vector<std::uint32_t> samples = {1, 4};  // spp of the configurations measured
+    std::uint32_t referenceSamples = 64;          // spp of the converged CPU reference
+    std::string csvPath;                          // empty: no CSV
+};
+
 int runRender(const RenderOptions& options);
 int runCompare(const CompareOptions& options);
 int runDevices(const VulkanOptions& options);
+int runBench(const BenchOptions& options);
 
 }  // namespace hexray::cli

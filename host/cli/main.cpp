@@ -100,6 +100,25 @@ int main(int argc, char** argv) {
     compareCommand->add_option("--threads", compare.threads, "CPU reference threads (default: all cores)")
         ->check(CLI::PositiveNumber);
 
+    BenchOptions bench;
+    CLI::App* benchCommand = app.add_subcommand(
+        "bench",
+        "Measure speed against error: interleaved rounds of every backend, precision and sample count on each "
+        "scene, against a converged CPU reference; prints a table and optionally writes CSV");
+    benchCommand->add_option("scenes", bench.scenePaths, "Scene files")->required();
+    addImageOptions(*benchCommand, bench.image);
+    addDeviceOption(*benchCommand, bench.vulkan);
+    benchCommand->add_option("--rounds", bench.rounds, "Interleaved rounds")->check(CLI::Range(1u, 1000u))
+        ->capture_default_str();
+    benchCommand->add_option("--samples", bench.samples, "Samples per pixel to measure (several allowed)")
+        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
+        ->capture_default_str();
+    benchCommand->add_option("--reference-samples", bench.referenceSamples,
+                             "Samples per pixel of the converged CPU reference")
+        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
+        ->capture_default_str();
+    benchCommand->add_option("--csv", bench.csvPath, "Also write the table as CSV");
+
     VulkanOptions devices;
     CLI::App* devicesCommand = app.add_subcommand("devices", "List the Vulkan devices and the one hexray would use");
     addDeviceOption(*devicesCommand, devices);
@@ -124,6 +143,10 @@ int main(int argc, char** argv) {
         compare.vulkan.validate = validate;
         compare.precision = *parsePrecision(comparePrecision);
         return runCompare(compare);
+    }
+    if (benchCommand->parsed()) {
+        bench.vulkan.validate = validate;
+        return runBench(bench);
     }
     devices.validate = validate;
     return runDevices(devices);
