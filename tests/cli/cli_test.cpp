@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -160,6 +161,24 @@ TEST_F(CliTest, PrecisionWithTheCpuBackendIsRejected) {
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("--precision"), std::string::npos) << run.err;
     EXPECT_TRUE(createdFiles().empty());
+}
+
+TEST_F(CliTest, BenchPrintsSpeedAgainstErrorAndWritesCsv) {
+    const RunResult run = hexray("bench " + scene("lecture-demo.json") +
+                                 " --width 48 --height 36 --rounds 2 --samples 1 --reference-samples 4 --csv b.csv");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("| scene | resolution | backend | precision | spp | Mpix/s median |"), std::string::npos)
+        << run.out;
+    const std::string csv = readFile(dir_ / "b.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5) << csv;  // header + f32-naive, f32, f64, cpu-reference
+    // The robust shader agrees with the reference on every unambiguous pixel: topology 0.
+    EXPECT_NE(csv.find("lecture-demo,48,36,lavapipe,f32,1,"), std::string::npos) << csv;
+    for (const std::string& line : {std::string("lavapipe,f32,1,"), std::string("lavapipe,f64,1,")}) {
+        const auto at = csv.find(line);
+        ASSERT_NE(at, std::string::npos) << csv;
+        const std::string row = csv.substr(at, csv.find('\n', at) - at);
+        EXPECT_EQ(row.substr(row.rfind(',') + 1), "0") << row;
+    }
 }
 
 TEST_F(CliTest, DevicesListsLavapipe) {
