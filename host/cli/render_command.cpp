@@ -1,6 +1,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <span>
+
+#include <unistd.h>
 
 #include "cli/command_support.h"
 #include "cpu/cpu_renderer.h"
@@ -14,32 +17,66 @@ std::string defaultOutputPath(const std::string& scenePath) {
     return std::filesystem::path(scenePath).stem().string() + ".png";
 }
 
+// A progress line on stderr while a large image renders band by band; silent unless stderr
+// is a terminal, and for images that render in one band.
+class Progress {
+public:
+    explicit Progress(std::uint32_t rows) : rows_(rows), shown_(::isatty(STDERR_FILENO) != 0) {}
+    ~Progress() {
+        if (started_) {
+            std::fprintf(stderr, "\r%40s\r", "");
+        }
+    }
+    void rowsDone(std::uint32_t done) {
+        if (!shown_ || done >= rows_) {
+            return;
+        }
+        started_ = true;
+        std::fprintf(stderr, "\rrendering: %3u%% (%u of %u rows)", unsigned(100.0 * done / rows_), done, rows_);
+        std::fflush(stderr);
+    }
+
+private:
+    std::uint32_t rows_;
+    bool shown_;
+    bool started_ = false;
+};
+
 }  // namespace
 
 int runRender(const RenderOptions& options) {
     ValidationLog log;
     const int code = guarded([&] {
         const Scene scene = loadScene(options.scenePath, options.image);
-        Rgb8Image image;
+        const std::string output = options.outputPath.empty() ? defaultOutputPath(options.scenePath) : options.outputPath;
+        // Opened first, so a bad output path fails before any rendering; renamed into place
+        // only once every row is in.
+        PngRowWriter writer(output, scene.image.width, scene.image.height);
         char how[512];
         if (options.backend == Backend::Gpu) {
             const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
             GpuRenderer renderer(context);
-            GpuRenderResult result = renderer.render(scene, options.precision, GpuOutput::Encoded8);
+            Progress progress(scene.image.height);
+            // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image
+            // never sits whole in memory.
+            const GpuRenderResult result = renderer.renderEncodedRows(
+                scene, options.precision, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
+                    writer.writeRows(rgbRows);
+                    progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
+                });
             std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s, first dispatch %.1f ms incl. shader compile",
                           std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
                           result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
                           result.timing.firstDispatchMilliseconds);
-            image = std::move(result.encoded);
         } else {
             const unsigned threads = threadCount(options.threads);
             const auto start = std::chrono::steady_clock::now();
-            image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
+            const Rgb8Image image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
             std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads,
                           millisecondsSince(start));
+            writer.writeRows(image.bytes);
         }
-        const std::string output = options.outputPath.empty() ? defaultOutputPath(options.scenePath) : options.outputPath;
-        writePng(output, image);
+        writer.finish();
         std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how);
         return int(kSuccess);
     });

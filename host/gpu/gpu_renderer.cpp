@@ -172,7 +172,48 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(const PipelineKey& key) {
 }
 
 GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, GpuOutput output) {
-    const Precision precision = resolve(scene, requested);
+    GpuRenderResult result;
+    result.precision = resolve(scene, requested);
+    const std::uint32_t width = scene.image.width;
+    if (output == GpuOutput::LinearAndClasses) {
+        result.image = Image(width, scene.image.height);
+        result.classes.resize(result.image.pixels.size());
+        result.timing = renderBands(scene, result.precision, output, [&](const Band& band) {
+            const std::size_t count = std::size_t(band.rows) * width;
+            const std::ptrdiff_t first = std::ptrdiff_t(band.firstRow) * width;
+            std::transform(band.pixels, band.pixels + count, result.image.pixels.begin() + first,
+                           [](const GpuPixel& p) { return glm::vec3(p); });
+            std::transform(band.classes, band.classes + count, result.classes.begin() + first,
+                           [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
+        });
+        return result;
+    }
+    result.encoded = Rgb8Image{width, scene.image.height, {}};
+    result.encoded.bytes.reserve(std::size_t(width) * scene.image.height * 3);
+    const GpuRenderResult streamed = renderEncodedRows(scene, result.precision, [&](std::uint32_t, auto rgbRows) {
+        result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
+    });
+    result.timing = streamed.timing;
+    return result;
+}
+
+GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, Precision requested, const RowConsumer& consume) {
+    GpuRenderResult result;
+    result.precision = resolve(scene, requested);
+    std::vector<std::uint8_t> rgb;
+    result.timing = renderBands(scene, result.precision, GpuOutput::Encoded8, [&](const Band& band) {
+        const std::size_t count = std::size_t(band.rows) * scene.image.width;
+        rgb.resize(count * 3);
+        for (std::size_t i = 0; i < count; ++i) {
+            std::memcpy(&rgb[3 * i], &band.encoded[i], 3);  // RGBA8, R in the lowest byte: drop A
+        }
+        consume(band.firstRow, rgb);
+    });
+    return result;
+}
+
+GpuTiming GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput output,
+                                   const std::function<void(const Band&)>& consume) {
     const bool linear = output == GpuOutput::LinearAndClasses;
     const std::uint32_t outputMode = linear                                     ? gpu::kOutputLinearAndClasses
                                      : scene.image.encoding == Encoding::Srgb ? gpu::kOutput8BitSrgb
@@ -268,41 +309,20 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
         return double((ticks[1] - ticks[0]) & timestampMask_) * nanosecondsPerTick_ * 1e-6;
     };
 
-    GpuRenderResult result;
-    if (linear) {
-        result.image = Image(width, height);
-        result.classes.resize(std::size_t(width) * height);
-    } else {
-        result.encoded = Rgb8Image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
-    }
-    result.precision = precision;
-    result.timing.fromTimestamps = static_cast<bool>(*timestamps_);
+    GpuTiming timing;
+    timing.fromTimestamps = static_cast<bool>(*timestamps_);
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
     // dispatch) is not counted as render time.
-    result.timing.firstDispatchMilliseconds =
-        runDispatch(GpuBand{0, std::min(rowsPerBand, kWorkgroupSize)}, 1, 1, false);
+    timing.firstDispatchMilliseconds = runDispatch(GpuBand{0, std::min(rowsPerBand, kWorkgroupSize)}, 1, 1, false);
 
     for (std::uint32_t firstRow = 0; firstRow < height; firstRow += rowsPerBand) {
         const std::uint32_t rows = std::min(rowsPerBand, height - firstRow);
-        result.timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
-        const std::size_t count = std::size_t(rows) * width;
-        const std::size_t first = std::size_t(firstRow) * width;
-        if (linear) {
-            const auto* pixels = reinterpret_cast<const GpuPixel*>(pixelBuffer.data());
-            std::transform(pixels, pixels + count, result.image.pixels.begin() + std::ptrdiff_t(first),
-                           [](const GpuPixel& p) { return glm::vec3(p); });
-            const auto* classes = reinterpret_cast<const GpuPixelClass*>(classBuffer.data());
-            std::transform(classes, classes + count, result.classes.begin() + std::ptrdiff_t(first),
-                           [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
-        } else {
-            const auto* rgba = reinterpret_cast<const std::uint8_t*>(encodedBuffer.data());
-            std::uint8_t* rgb = result.encoded.bytes.data() + 3 * first;
-            for (std::size_t i = 0; i < count; ++i) {
-                std::memcpy(rgb + 3 * i, rgba + 4 * i, 3);
-            }
-        }
+        timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
+        consume(Band{firstRow, rows, reinterpret_cast<const GpuPixel*>(pixelBuffer.data()),
+                     reinterpret_cast<const GpuPixelClass*>(classBuffer.data()),
+                     reinterpret_cast<const gpu::GpuEncodedPixel*>(encodedBuffer.data())});
     }
-    return result;
+    return timing;
 }
 
 }  // namespace hexray

@@ -1,7 +1,9 @@
 #pragma once
 // Renders a scene with the compute shader in shaders/render.comp.
 
+#include <functional>
 #include <map>
+#include <span>
 #include <tuple>
 #include <vector>
 
@@ -48,10 +50,26 @@ public:
     GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto,
                            GpuOutput output = GpuOutput::LinearAndClasses);
 
+    // The 8-bit image a band of rows at a time, each handed to `consume` (first row, and the
+    // rows' RGB bytes) as soon as it is read back: the whole image is never in memory.
+    using RowConsumer = std::function<void(std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows)>;
+    GpuRenderResult renderEncodedRows(const Scene& scene, Precision precision, const RowConsumer& consume);
+
     // The precision render() would use for `scene`.
     Precision resolve(const Scene& scene, Precision requested) const;
 
 private:
+    // One band of rows as the device left it; only the output's own buffer is meaningful.
+    struct Band {
+        std::uint32_t firstRow;
+        std::uint32_t rows;
+        const gpu::GpuPixel* pixels;
+        const gpu::GpuPixelClass* classes;
+        const gpu::GpuEncodedPixel* encoded;
+    };
+    GpuTiming renderBands(const Scene& scene, Precision precision, GpuOutput output,
+                          const std::function<void(const Band&)>& consume);
+
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
     struct SceneBindings {
         vk::raii::DescriptorSetLayout setLayout;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -28,8 +29,26 @@ struct Rgb8Image {
 std::uint8_t encodeChannel(float linear, Encoding encoding);
 Rgb8Image encodeImage(const Image& image, Encoding encoding);
 
-// Writes atomically: a temporary file beside `path` is renamed over it only once complete, so
-// a failure or an interruption never leaves a partial or clobbered image.
+// Writes a PNG row by row, so an image need never be whole in memory. Atomic: the rows go to a
+// temporary file beside `path`, which finish() renames over it only once complete; a writer
+// destroyed without finish() (a failure, an interruption) removes it, so no partial or
+// clobbered image is ever left behind.
+class PngRowWriter {
+public:
+    PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height);
+    ~PngRowWriter();
+    PngRowWriter(const PngRowWriter&) = delete;
+    PngRowWriter& operator=(const PngRowWriter&) = delete;
+
+    void writeRows(std::span<const std::uint8_t> rgbRows);  // whole rows, 3 bytes per pixel
+    void finish();
+
+private:
+    struct Encoder;
+    std::unique_ptr<Encoder> encoder_;
+};
+
+// The whole image through a PngRowWriter.
 void writePng(const std::filesystem::path& path, const Rgb8Image& image);
 
 Rgb8Image readPng(const std::filesystem::path& path);

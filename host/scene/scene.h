@@ -25,10 +25,11 @@ struct ImageSettings {
     std::uint32_t samplesPerPixel = 1;  // anti-aliasing: rays per pixel, averaged
 };
 
-// Requests beyond these would exhaust memory rather than render; checked at load time.
+// Requests beyond these would take hours rather than render; checked at load time. (The GPU
+// path streams the image in bands of rows, so 16384 x 16384 fits in a fixed memory budget.)
 inline constexpr std::uint32_t kMaxImageDimension = 16384;
-inline constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 26;  // 8192 x 8192
 inline constexpr std::uint32_t kMaxSamplesPerPixel = 1024;
+inline constexpr std::uint64_t kMaxImageSamples = std::uint64_t{1} << 32;  // width x height x spp
 
 struct CameraSettings {
     glm::dvec3 position{0.0};

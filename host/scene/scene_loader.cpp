@@ -82,10 +82,12 @@ std::string rangeProblem(std::int64_t min, std::int64_t max, const std::string& 
     return "must be between " + std::to_string(min) + " and " + std::to_string(max) + " (got " + got + ")";
 }
 
-std::optional<std::string> pixelCountProblem(std::uint64_t width, std::uint64_t height) {
-    if (width * height <= kMaxImagePixels) return std::nullopt;  // both <= 16384: no overflow
-    return std::to_string(width) + " x " + std::to_string(height) + " = " + std::to_string(width * height) +
-           " pixels exceeds the limit of " + std::to_string(kMaxImagePixels) + " pixels";
+std::optional<std::string> sampleCountProblem(std::uint64_t width, std::uint64_t height, std::uint64_t spp) {
+    const std::uint64_t samples = width * height * spp;  // <= 16384^2 * 1024: no overflow
+    if (samples <= kMaxImageSamples) return std::nullopt;
+    return std::to_string(width) + " x " + std::to_string(height) + " pixels x " + std::to_string(spp) +
+           " samples = " + std::to_string(samples) + " exceeds the limit of " + std::to_string(kMaxImageSamples) +
+           " samples per image (lower spp or the image size)";
 }
 
 // ---------------------------------------------------------------- JSON paths
@@ -330,11 +332,13 @@ ImageSettings readImage(const JsonReader& image) {
     ImageSettings settings;
     settings.width = std::uint32_t(image.at("width").integer(1, kMaxImageDimension));
     settings.height = std::uint32_t(image.at("height").integer(1, kMaxImageDimension));
-    if (auto problem = pixelCountProblem(settings.width, settings.height)) image.fail(*problem);
     settings.sampling = image.choiceOr("sampling", settings.sampling, kSamplingNames);
     settings.encoding = image.choiceOr("encoding", settings.encoding, kEncodingNames);
     if (const auto spp = image.find("spp")) {
         settings.samplesPerPixel = std::uint32_t(spp->integer(1, kMaxSamplesPerPixel));
+    }
+    if (auto problem = sampleCountProblem(settings.width, settings.height, settings.samplesPerPixel)) {
+        image.fail(*problem);
     }
     return settings;
 }
@@ -566,7 +570,7 @@ void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, co
     };
     checkDimension(width, "width", "height");
     checkDimension(height, "height", "width");
-    if (auto problem = pixelCountProblem(std::uint64_t(width), std::uint64_t(height))) {
+    if (auto problem = sampleCountProblem(std::uint64_t(width), std::uint64_t(height), scene.image.samplesPerPixel)) {
         throw SceneError(source + ": " + *problem);
     }
     scene.image.width = std::uint32_t(width);
@@ -576,6 +580,9 @@ void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, co
 void overrideSamplesPerPixel(Scene& scene, std::int64_t samples, const std::string& source) {
     if (samples < 1 || samples > std::int64_t{kMaxSamplesPerPixel}) {
         throw SceneError(source + ": " + rangeProblem(1, kMaxSamplesPerPixel, std::to_string(samples)));
+    }
+    if (auto problem = sampleCountProblem(scene.image.width, scene.image.height, std::uint64_t(samples))) {
+        throw SceneError(source + ": " + *problem);
     }
     scene.image.samplesPerPixel = std::uint32_t(samples);
 }

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -74,6 +75,34 @@ TEST_F(PngFileTest, MissingDirectoryIsAnErrorNamingThePath) {
         EXPECT_NE(std::string(error.what()).find(target.string()), std::string::npos) << error.what();
     }
     EXPECT_FALSE(fs::exists(target));
+}
+
+TEST_F(PngFileTest, RowsWrittenInPiecesMakeTheSameImage) {
+    const Rgb8Image image = gradient(7, 9);
+    PngRowWriter writer(dir_ / "rows.png", 7, 9);
+    const std::span<const std::uint8_t> bytes(image.bytes);
+    writer.writeRows(bytes.subspan(0, 7 * 3 * 2));  // rows 0-1
+    writer.writeRows(bytes.subspan(7 * 3 * 2));     // rows 2-8
+    writer.finish();
+    EXPECT_EQ(readPng(dir_ / "rows.png").bytes, image.bytes);
+}
+
+TEST_F(PngFileTest, AnUnfinishedWriterLeavesNothingAndKeepsTheOldFile) {
+    std::ofstream(dir_ / "g.png") << "old contents";
+    {
+        PngRowWriter writer(dir_ / "g.png", 4, 4);
+        writer.writeRows(gradient(4, 2).bytes);  // interrupted after two of four rows
+    }
+    std::stringstream kept;
+    kept << std::ifstream(dir_ / "g.png").rdbuf();
+    EXPECT_EQ(kept.str(), "old contents");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+TEST_F(PngFileTest, FinishingBeforeEveryRowIsInIsAnError) {
+    PngRowWriter writer(dir_ / "short.png", 4, 4);
+    writer.writeRows(gradient(4, 3).bytes);
+    EXPECT_THROW(writer.finish(), ImageIoError);
 }
 
 TEST_F(PngFileTest, ReadingANonPngIsAnError) {

@@ -233,9 +233,9 @@ TEST(SceneLoader, AcceptsTheLargestAllowedImages) {
     EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 16384, "height": 1)"), "wide.json")
                   .image.width,
               16384u);
-    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 8192, "height": 8192)"), "big.json")
+    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 16384, "height": 16384, "spp": 16)"), "big.json")
                   .image.height,
-              8192u);
+              16384u);
 }
 
 TEST(SceneLoader, ShaderIndicesFollowShaderNames) {
@@ -343,9 +343,10 @@ TEST(SceneLoaderRejects, WidthOrHeightOutOfRange) {
               "test.json: image.height: must be between 1 and 16384 (got 18446744073709551615)");
 }
 
-TEST(SceneLoaderRejects, TooManyPixels) {
-    EXPECT_EQ(errorForChange(R"("width": 8, "height": 6)", R"("width": 16384, "height": 8193)"),
-              "test.json: image: 16384 x 8193 = 134234112 pixels exceeds the limit of 67108864 pixels");
+TEST(SceneLoaderRejects, TooManySamples) {
+    EXPECT_EQ(errorForChange(R"("width": 8, "height": 6)", R"("width": 16384, "height": 16384, "spp": 17)"),
+              "test.json: image: 16384 x 16384 pixels x 17 samples = 4563402752 exceeds the limit of 4294967296 "
+              "samples per image (lower spp or the image size)");
 }
 
 // ---------------------------------------------------------------- numeric ranges
@@ -530,8 +531,10 @@ TEST(OverrideImageSize, RejectsWithTheSameChecksAndLeavesTheSceneAlone) {
     EXPECT_EQ(errorFor(8, 20000, "--height"), "--height: must be between 1 and 16384 (got 20000)");
     EXPECT_EQ(errorFor(-1, 6, "command line"), "command line: width must be between 1 and 16384 (got -1)");
     EXPECT_EQ(errorFor(8, 0, "--width/--height"), "--width/--height: height must be between 1 and 16384 (got 0)");
+    scene.image.samplesPerPixel = 32;
     EXPECT_EQ(errorFor(16384, 16384, "command line"),
-              "command line: 16384 x 16384 = 268435456 pixels exceeds the limit of 67108864 pixels");
+              "command line: 16384 x 16384 pixels x 32 samples = 8589934592 exceeds the limit of 4294967296 "
+              "samples per image (lower spp or the image size)");
     EXPECT_EQ(scene.image.width, 8u);
     EXPECT_EQ(scene.image.height, 6u);
 }
@@ -557,4 +560,13 @@ TEST(SamplesPerPixel, OverrideIsCheckedTheSameWay) {
         EXPECT_STREQ(error.what(), "--spp: must be between 1 and 1024 (got 5000)");
     }
     EXPECT_EQ(scene.image.samplesPerPixel, 64u);
+    overrideSamplesPerPixel(scene, 1, "--spp");
+    overrideImageSize(scene, 16384, 16384, "--width/--height");
+    try {
+        overrideSamplesPerPixel(scene, 17, "--spp");
+        ADD_FAILURE() << "17 samples of 16384 x 16384 were accepted";
+    } catch (const SceneError& error) {
+        EXPECT_NE(std::string(error.what()).find("--spp: 16384 x 16384 pixels x 17 samples"), std::string::npos)
+            << error.what();
+    }
 }
