@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <functional>
 #include <map>
 
@@ -9,6 +9,7 @@
 #include "compare/compare.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
 
@@ -105,15 +106,9 @@ int runBench(const BenchOptions& options) {
             }
         }
 
-        std::ofstream csv;
-        if (!options.csvPath.empty()) {
-            csv.open(options.csvPath);
-            if (!csv) {
-                throw ImageIoError(options.csvPath + ": cannot write the CSV file");
-            }
-            csv << "scene,width,height,backend,precision,spp,median_mpix_s,best_mpix_s,median_render_ms,"
+        std::ostringstream csv;
+        csv << "scene,width,height,backend,precision,spp,median_mpix_s,best_mpix_s,median_render_ms,"
                    "median_frame_ms,rmse_levels,max_abs_levels,pixels_over_one_level,topology_mismatches\n";
-        }
         std::printf("| scene | resolution | backend | precision | spp | Mpix/s median | Mpix/s best | frame ms | "
                     "RMSE (levels) | max abs (levels) | > 1 level | topology mismatches |\n");
         std::printf("|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -139,13 +134,19 @@ int runBench(const BenchOptions& options) {
                         configuration.samplesPerPixel, megapixels / medianMs * 1e3, megapixels / bestMs * 1e3,
                         median(measurement.frameMilliseconds), error.rmse, error.maxAbs, 100.0 * error.shareOverOneLevel,
                         static_cast<unsigned long long>(topology.mismatches));
-            if (csv) {
-                csv << name << ',' << scene.image.width << ',' << scene.image.height << ',' << configuration.backend
-                    << ',' << precision << ',' << configuration.samplesPerPixel << ',' << megapixels / medianMs * 1e3
-                    << ',' << megapixels / bestMs * 1e3 << ',' << medianMs << ',' << median(measurement.frameMilliseconds)
-                    << ',' << error.rmse << ',' << error.maxAbs << ',' << error.pixelsOverOneLevel << ','
-                    << topology.mismatches << '\n';
+            csv << name << ',' << scene.image.width << ',' << scene.image.height << ',' << configuration.backend << ','
+                << precision << ',' << configuration.samplesPerPixel << ',' << megapixels / medianMs * 1e3 << ','
+                << megapixels / bestMs * 1e3 << ',' << medianMs << ',' << median(measurement.frameMilliseconds) << ','
+                << error.rmse << ',' << error.maxAbs << ',' << error.pixelsOverOneLevel << ',' << topology.mismatches
+                << '\n';
+        }
+        if (!options.csvPath.empty()) {
+            AtomicFile file(options.csvPath);
+            const std::string text = csv.str();
+            if (std::fwrite(text.data(), 1, text.size(), file.stream()) != text.size()) {
+                file.fail("cannot write", "short write");
             }
+            file.commit();
         }
         return int(kSuccess);
     });

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
+#include <filesystem>
 #include <thread>
 
 #include "image/image_io.h"
@@ -29,6 +31,12 @@ int guarded(const std::function<int()>& command) {
     } catch (const ImageIoError& error) {
         printError(error.what());
         return kOutputFailed;
+    } catch (const std::filesystem::filesystem_error& error) {
+        printError(error.what());
+        return kBadInput;  // a path on the command line that cannot be read
+    } catch (const std::exception& error) {
+        printError(std::string("unexpected failure: ") + error.what());
+        return kInternalError;
     }
 }
 

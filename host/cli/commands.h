@@ -17,7 +17,8 @@ enum ExitCode : int {
     kBadInput = 2,           // scene file or command line
     kVulkanUnavailable = 3,  // no driver or device, or a Vulkan call failed
     kValidationFailed = 4,   // --validate and the validation layer reported something
-    kOutputFailed = 5,       // the image could not be written
+    kOutputFailed = 5,       // the image (or CSV) could not be written
+    kInternalError = 6,      // anything else: out of memory, a thread that could not start
 };
 
 enum class Backend { Gpu, Cpu };

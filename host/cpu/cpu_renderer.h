@@ -26,7 +26,8 @@ struct CpuRender {
     bool isAmbiguous(std::size_t pixel) const { return margins[pixel] < kAmbiguityMargin; }
 };
 
-// Renders one ray per pixel, rows spread over `threadCount` threads (0 = all cores).
+// Renders image.samplesPerPixel rays per pixel, rows spread over `threadCount` threads
+// (0 = all cores).
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
 
 }  // namespace hexray

@@ -1,5 +1,7 @@
 #include "image/image_io.h"
 
+#include "image/atomic_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -11,8 +13,6 @@
 
 #include <spng.h>
 #include <stb_image.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace hexray {
 namespace {
@@ -46,70 +46,43 @@ Rgb8Image encodeImage(const Image& image, Encoding encoding) {
 // zlib level 2 without row filters: about 10x faster than stb's encoder on hexray's images
 // (15 ms for 1080p here), whose flat regions compress well without filtering.
 struct PngRowWriter::Encoder {
-    std::filesystem::path target;
-    std::string temporaryPath;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file{nullptr, std::fclose};
+    // Declared first so the encoder is released before the file it writes to.
+    AtomicFile file;
     std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> context{nullptr, spng_ctx_free};
     std::uint32_t width = 0;
     std::uint32_t rowsLeft = 0;
 
-    [[noreturn]] void fail(const std::string& what, const std::string& why) const {
-        throw ImageIoError(target.string() + ": " + what + ": " + why);
-    }
+    Encoder(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h) : file(path), width(w), rowsLeft(h) {}
+
     void check(int spngError) const {
         if (spngError != 0 && spngError != SPNG_EOI) {
-            fail("cannot write image", errno && std::ferror(file.get()) ? systemError() : spng_strerror(spngError));
+            file.fail("cannot write image", std::ferror(file.stream()) ? systemError() : spng_strerror(spngError));
         }
     }
 };
 
+// zlib level 2 without row filters: about 10x faster than stb's encoder on hexray's images
+// (15 ms for 1080p here), whose flat regions compress well without filtering.
 PngRowWriter::PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height)
-    : encoder_(std::make_unique<Encoder>()) {
+    : encoder_(std::make_unique<Encoder>(path, width, height)) {
     Encoder& e = *encoder_;
-    e.target = path;
-    e.width = width;
-    e.rowsLeft = height;
-    const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
-    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about "." + string + "...".
-    std::string temporaryName = ".";
-    temporaryName += path.filename().string();
-    temporaryName += ".XXXXXX";
-    e.temporaryPath = (directory / temporaryName).string();
-    const int fd = ::mkstemp(e.temporaryPath.data());
-    if (fd < 0) {
-        e.temporaryPath.clear();  // nothing was created
-        e.fail("cannot create output file", systemError());
-    }
-    ::fchmod(fd, 0644);  // mkstemp makes the file 0600; an image should get the usual permissions
-    e.file.reset(::fdopen(fd, "wb"));
-    if (!e.file) {
-        ::close(fd);
-        ::unlink(e.temporaryPath.c_str());
-        e.fail("cannot create output file", systemError());
-    }
     e.context.reset(spng_ctx_new(SPNG_CTX_ENCODER));
     if (!e.context) {
-        e.fail("cannot encode PNG", "out of memory");
+        e.file.fail("cannot encode PNG", "out of memory");
     }
     spng_ihdr header{};
     header.width = width;
     header.height = height;
     header.bit_depth = 8;
     header.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
-    e.check(spng_set_png_file(e.context.get(), e.file.get()));
+    e.check(spng_set_png_file(e.context.get(), e.file.stream()));
     e.check(spng_set_option(e.context.get(), SPNG_IMG_COMPRESSION_LEVEL, 2));
     e.check(spng_set_option(e.context.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_NONE));
     e.check(spng_set_ihdr(e.context.get(), &header));
     e.check(spng_encode_image(e.context.get(), nullptr, 0, SPNG_FMT_PNG, SPNG_ENCODE_PROGRESSIVE | SPNG_ENCODE_FINALIZE));
 }
 
-PngRowWriter::~PngRowWriter() {
-    if (encoder_ && !encoder_->temporaryPath.empty()) {
-        encoder_->context.reset();
-        encoder_->file.reset();
-        ::unlink(encoder_->temporaryPath.c_str());
-    }
-}
+PngRowWriter::~PngRowWriter() = default;
 
 void PngRowWriter::writeRows(std::span<const std::uint8_t> rows) {
     Encoder& e = *encoder_;
@@ -123,17 +96,10 @@ void PngRowWriter::writeRows(std::span<const std::uint8_t> rows) {
 void PngRowWriter::finish() {
     Encoder& e = *encoder_;
     if (e.rowsLeft != 0) {
-        e.fail("cannot write image", std::to_string(e.rowsLeft) + " rows were never rendered");
+        e.file.fail("cannot write image", std::to_string(e.rowsLeft) + " rows were never rendered");
     }
     e.context.reset();  // the last row finished the PNG; release before closing the file
-    std::FILE* file = e.file.release();
-    if (std::fflush(file) != 0 || ::fsync(::fileno(file)) != 0 || std::fclose(file) != 0) {
-        e.fail("cannot write image", systemError());
-    }
-    if (::rename(e.temporaryPath.c_str(), e.target.c_str()) != 0) {
-        e.fail("cannot write image", systemError());
-    }
-    e.temporaryPath.clear();
+    e.file.commit();
 }
 
 void writePng(const std::filesystem::path& path, const Rgb8Image& image) {

@@ -29,10 +29,9 @@ struct Rgb8Image {
 std::uint8_t encodeChannel(float linear, Encoding encoding);
 Rgb8Image encodeImage(const Image& image, Encoding encoding);
 
-// Writes a PNG row by row, so an image need never be whole in memory. Atomic: the rows go to a
-// temporary file beside `path`, which finish() renames over it only once complete; a writer
-// destroyed without finish() (a failure, an interruption) removes it, so no partial or
-// clobbered image is ever left behind.
+// Writes a PNG row by row, so an image need never be whole in memory. Atomic (see
+// atomic_file.h): the image appears at `path` only when finish() succeeds; a writer destroyed
+// without finish(), or a SIGINT/SIGTERM meanwhile, leaves no partial or clobbered image.
 class PngRowWriter {
 public:
     PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height);

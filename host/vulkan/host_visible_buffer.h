@@ -1,5 +1,6 @@
 #pragma once
-// A storage buffer the host maps directly: how hexray uploads the scene and reads pixels back.
+// A buffer the host maps directly (uniform or storage): how hexray uploads the scene and reads
+// pixels back.
 // On lavapipe all memory is host-visible; on a discrete GPU this is slower than a staging copy
 // but correct, and hexray's buffers are small next to its render time.
 
@@ -13,7 +14,7 @@ namespace hexray {
 
 class HostVisibleBuffer {
 public:
-    // `size` is rounded up to at least 1 byte's worth so empty arrays still bind.
+    // `size` is raised to at least 16 bytes so an empty array (or an unused output) still binds.
     HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                       vk::DeviceSize size, vk::BufferUsageFlags usage);
 

@@ -3,6 +3,8 @@
 
 #include <sys/wait.h>
 
+#include <csignal>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -179,6 +181,32 @@ TEST_F(CliTest, BenchPrintsSpeedAgainstErrorAndWritesCsv) {
         const std::string row = csv.substr(at, csv.find('\n', at) - at);
         EXPECT_EQ(row.substr(row.rfind(',') + 1), "0") << row;
     }
+}
+
+TEST_F(CliTest, AnUnwritableOutputIsExitCode5AndLeavesNothing) {
+    const RunResult run = hexray("render " + scene("constant-debug.json") + " -o no-such-dir/x.png --width 8 --height 8");
+    EXPECT_EQ(run.exitCode, 5) << run.err;
+    EXPECT_NE(run.err.find("no-such-dir/x.png: cannot create output file"), std::string::npos) << run.err;
+    EXPECT_TRUE(createdFiles().empty());
+}
+
+TEST_F(CliTest, AnUnreadablePathIsBadInputNotACrash) {
+    const RunResult run = hexray("compare " + std::string(300, 'a') + "/x.json");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("hexray: error: "), std::string::npos) << run.err;
+}
+
+TEST_F(CliTest, AnInterruptedRenderLeavesTheOldImageAndNoTemporaryFile) {
+    std::ofstream(dir_ / "big.png") << "keep me";
+    // A render of several seconds, interrupted after one: SIGINT must remove the partial file.
+    const std::string command = "cd '" + dir_.string() + "' && ('" HEXRAY_EXECUTABLE "' render " +
+                                scene("lecture-demo.json") +
+                                " -o big.png --width 8192 --height 8192 --spp 2 >/dev/null 2>&1 & pid=$!; sleep 1; "
+                                "kill -INT $pid; wait $pid)";
+    const int status = std::system(command.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 128 + SIGINT);  // killed by the signal
+    EXPECT_EQ(readFile(dir_ / "big.png"), "keep me");
+    EXPECT_EQ(createdFiles(), std::vector<std::string>{"big.png"});
 }
 
 TEST_F(CliTest, DevicesListsLavapipe) {

@@ -3,6 +3,8 @@
 // decision must match and the colours may differ only by rounding (compare's defaults).
 
 #include <cstdio>
+#include <set>
+#include <string>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -18,6 +20,15 @@ namespace hexray {
 namespace {
 
 const Tolerance kTolerance;  // hexray compare's defaults, see compare.h
+
+// Scenes built so that nearly every pixel is a close call (rays within float32 rounding of a
+// silhouette, a horizon or a shadow edge): here the comparison has little to compare, and the
+// analytic hard-case suite (hard_case_test.cpp) is the real check. Every other scene must
+// leave at least a quarter of its pixels unambiguous, so this test cannot pass vacuously.
+const std::set<std::string> kAmbiguityDominated = {
+    "hard_tiny_sphere_far_1e5", "hard_tiny_sphere_far_1e7", "hard_grazing_sphere_silhouette",
+    "hard_grazing_plane_slopes", "hard_light_on_top_of_sphere"};
+constexpr double kMaxAmbiguousShare = 0.75;
 
 class SceneAgreementTest : public test::ValidatedVulkanTest,
                            public ::testing::WithParamInterface<std::tuple<std::filesystem::path, Precision>> {};
@@ -42,6 +53,9 @@ TEST_P(SceneAgreementTest, GpuMatchesCpuReferenceOutsideAmbiguousPixels) {
                 static_cast<unsigned long long>(c.topology.checkerMismatches),
                 static_cast<unsigned long long>(c.topology.lightMismatches), c.encoded.maxAbs, c.encoded.rmse,
                 100.0 * c.encoded.shareOverOneLevel, c.linear.maxAbs);
+    if (!kAmbiguityDominated.contains(test::sceneTestName(path))) {
+        EXPECT_LE(c.topology.ambiguousShare(), kMaxAmbiguousShare);
+    }
     EXPECT_EQ(c.topology.mismatches, kTolerance.maxTopologyMismatches);
     EXPECT_LE(100.0 * c.encoded.shareOverOneLevel, kTolerance.maxSharePercent);
     EXPECT_LE(c.encoded.rmse, kTolerance.maxRmseLevels);
