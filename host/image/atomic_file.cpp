@@ -36,8 +36,13 @@ extern "C" void removePendingAndDie(int signal) {
 int registerPending(const std::string& path) {
     static std::once_flag installed;
     std::call_once(installed, [] {
-        std::signal(SIGINT, removePendingAndDie);
-        std::signal(SIGTERM, removePendingAndDie);
+        for (const int signal : {SIGINT, SIGTERM}) {
+            struct sigaction previous {};
+            ::sigaction(signal, nullptr, &previous);
+            if (previous.sa_handler != SIG_IGN) {  // an ignored signal (nohup, background job) stays ignored
+                std::signal(signal, removePendingAndDie);
+            }
+        }
     });
     if (path.size() >= kPathBytes) {
         return -1;
