@@ -49,6 +49,10 @@ scene at 1920×1080 and on spheres-and-lights at 960×540, writes
 Device: ${device}. Generated $(date -u +%Y-%m-%d). The machine is shared and noisy: compare
 figures from the same run only.
 
+The GPU rows time the pipeline \`compare\` uses (linear output plus the per-pixel
+classification, so that the error columns can be computed); \`render\` specializes a
+pipeline that writes only the 8-bit image, which is slightly faster.
+
 Columns: **Mpix/s** = pixels / render time (GPU: dispatch time from timestamps, after a
 warm-up dispatch; CPU reference: wall time, all cores), median and best of the rounds;
 **frame ms** = median wall time of the whole frame in-process (upload, render, read back);

@@ -204,10 +204,4 @@ std::vector<DeviceInfo> VulkanContext::devices() const {
     return describeAll(vk::raii::PhysicalDevices(instance_));
 }
 
-std::vector<DeviceInfo> listVulkanDevices() {
-    const vk::raii::Context context;
-    const vk::raii::Instance instance = createInstance(context, nullptr);
-    return describeAll(vk::raii::PhysicalDevices(instance));
-}
-
 }  // namespace hexray

@@ -68,7 +68,4 @@ private:
 // "discrete GPU", "integrated GPU", "virtual GPU", "CPU" or "other".
 std::string deviceTypeName(vk::PhysicalDeviceType type);
 
-// The devices present, without creating a logical device (for `hexray devices`).
-std::vector<DeviceInfo> listVulkanDevices();
-
 }  // namespace hexray
