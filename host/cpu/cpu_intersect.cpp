@@ -1,8 +1,11 @@
 #include "cpu/cpu_intersect.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -94,16 +97,160 @@ std::optional<Hit> intersectGeometry(const Ray& ray, const Geometry& geometry) {
     return intersectSphere(ray, std::get<Sphere>(geometry));
 }
 
-std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene) {
-    std::optional<SceneHit> nearest;
-    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
-        const std::optional<Hit> hit = intersectGeometry(ray, scene.nodes[index].geometry);
-        // Strictly smaller replaces, so on an exact tie the earlier node keeps the pixel.
-        if (hit && (!nearest || hit->t < nearest->hit.t)) {
-            nearest = SceneHit{*hit, index};
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double largestAbsComponent(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// The nearest-hit order: smaller t first, and on an exact tie the earlier node.
+bool isBefore(const Hit& hit, std::size_t index, const std::optional<SceneHit>& nearest) {
+    return !nearest || hit.t < nearest->hit.t || (hit.t == nearest->hit.t && index < nearest->nodeIndex);
+}
+
+// Calls visit(sceneNodeIndex) for each sphere in every leaf whose box the ray may reach no
+// farther than the limit visit last returned (infinity to begin with; a negative limit stops
+// the walk). Nearer children are visited first.
+template <class Visit>
+void forEachSphereAlongRay(const Ray& ray, const Bvh& bvh, Visit&& visit) {
+    if (bvh.nodes.empty()) {
+        return;
+    }
+    const BvhTolerance tolerance = bvhTolerance(ray, bvh);
+    double limit = kInfinity;
+    struct Pending {
+        std::uint32_t node;
+        double entry;
+    };
+    std::vector<Pending> stack;
+    if (const std::optional<double> entry = bvhBoxEntry(ray, bvh.nodes[0], tolerance.pad)) {
+        stack.push_back({0, *entry});
+    }
+    while (!stack.empty()) {
+        const Pending pending = stack.back();
+        stack.pop_back();
+        if (pending.entry > limit + tolerance.tSlack) {
+            continue;  // every sphere in it is hit beyond the limit, if at all
+        }
+        const BvhNode& node = bvh.nodes[pending.node];
+        if (node.isLeaf()) {
+            for (std::uint32_t i = 0; i < node.count; ++i) {
+                limit = visit(bvh.sphereNodes[node.firstOrSecondChild + i]);
+                if (limit < 0.0) {
+                    return;
+                }
+            }
+            continue;
+        }
+        const std::uint32_t first = pending.node + 1;
+        const std::uint32_t second = node.firstOrSecondChild;
+        const std::optional<double> firstEntry = bvhBoxEntry(ray, bvh.nodes[first], tolerance.pad);
+        const std::optional<double> secondEntry = bvhBoxEntry(ray, bvh.nodes[second], tolerance.pad);
+        const bool secondIsNearer = secondEntry && (!firstEntry || *secondEntry < *firstEntry);
+        // Pushed far child first, so that the near one is popped first.
+        if (secondIsNearer) {
+            if (firstEntry) stack.push_back({first, *firstEntry});
+            stack.push_back({second, *secondEntry});
+        } else {
+            if (secondEntry) stack.push_back({second, *secondEntry});
+            if (firstEntry) stack.push_back({first, *firstEntry});
         }
     }
+}
+
+}  // namespace
+
+BvhTolerance bvhTolerance(const Ray& ray, const Bvh& bvh) {
+    // intersectSphere's rounding is relative to |origin - centre|, which this bounds.
+    const BvhNode& root = bvh.nodes.at(0);
+    const double magnitude = largestAbsComponent(ray.origin) +
+                             std::max(largestAbsComponent(root.boundsMin), largestAbsComponent(root.boundsMax));
+    // pad: a ray that intersectSphere says hits misses the exact sphere by a few units of roundoff
+    // of that magnitude at most. tSlack: near a tangent, its t can be off by ~sqrt(roundoff).
+    return {1e-9 * magnitude, 1e-6 * magnitude};
+}
+
+std::optional<double> bvhBoxEntry(const Ray& ray, const BvhNode& node, double pad) {
+    double entry = -kInfinity;
+    double exit = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double low = node.boundsMin[axis] - pad;
+        const double high = node.boundsMax[axis] + pad;
+        const double origin = ray.origin[axis];
+        const double direction = ray.direction[axis];
+        if (direction == 0.0) {
+            if (origin < low || origin > high) {
+                return std::nullopt;  // parallel to this slab and outside it
+            }
+            continue;
+        }
+        double tLow = (low - origin) / direction;
+        double tHigh = (high - origin) / direction;
+        if (tLow > tHigh) {
+            std::swap(tLow, tHigh);
+        }
+        entry = std::max(entry, tLow);
+        exit = std::min(exit, tHigh);
+    }
+    if (entry > exit || exit <= 0.0) {
+        return std::nullopt;
+    }
+    return entry;
+}
+
+std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene, const Bvh* bvh) {
+    std::optional<SceneHit> nearest;
+    if (!bvh) {
+        for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+            const std::optional<Hit> hit = intersectGeometry(ray, scene.nodes[index].geometry);
+            // Strictly smaller replaces, so on an exact tie the earlier node keeps the pixel.
+            if (hit && (!nearest || hit->t < nearest->hit.t)) {
+                nearest = SceneHit{*hit, index};
+            }
+        }
+        return nearest;
+    }
+
+    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
+            const std::optional<Hit> hit = intersectPlane(ray, *plane);
+            if (hit && isBefore(*hit, index, nearest)) {
+                nearest = SceneHit{*hit, index};
+            }
+        }
+    }
+    forEachSphereAlongRay(ray, *bvh, [&](std::uint32_t index) {
+        const std::optional<Hit> hit = intersectSphere(ray, std::get<Sphere>(scene.nodes[index].geometry));
+        if (hit && isBefore(*hit, index, nearest)) {
+            nearest = SceneHit{*hit, index};
+        }
+        return nearest ? nearest->hit.t : kInfinity;
+    });
     return nearest;
+}
+
+bool hasHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh) {
+    if (!bvh) {
+        const std::optional<SceneHit> nearest = findNearestHit(ray, scene);
+        return nearest && nearest->hit.t < maxT;
+    }
+    for (const Node& node : scene.nodes) {
+        if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
+            const std::optional<Hit> hit = intersectPlane(ray, *plane);
+            if (hit && hit->t < maxT) {
+                return true;
+            }
+        }
+    }
+    bool found = false;
+    forEachSphereAlongRay(ray, *bvh, [&](std::uint32_t index) {
+        const std::optional<Hit> hit = intersectSphere(ray, std::get<Sphere>(scene.nodes[index].geometry));
+        found = hit && hit->t < maxT;
+        return found ? -1.0 : maxT;  // -1 stops the walk
+    });
+    return found;
 }
 
 }  // namespace hexray

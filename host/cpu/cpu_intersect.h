@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "accel/bvh.h"
 #include "scene/scene.h"
 
 namespace hexray {
@@ -40,7 +41,28 @@ struct SceneHit {
     std::size_t nodeIndex = 0;  // into Scene::nodes
 };
 
-// The nearest hit over all nodes; on an exact distance tie the earlier node wins.
-std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene);
+// The nearest hit over all nodes; on an exact distance tie the earlier node wins. With a BVH
+// (built from this scene by buildBvh) the spheres are found through it, with the same answer
+// bit for bit: its box tests are widened so that they never skip a sphere intersectSphere would
+// report, and the tie rule is applied explicitly instead of by loop order.
+std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene, const Bvh* bvh = nullptr);
+
+// Whether any node has a hit with t < maxT: exactly whether findNearestHit's t is below maxT,
+// but with a BVH it stops at the first such hit.
+bool hasHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh = nullptr);
+
+// The BVH's boxes as the traversal tests them, widened against the rounding of intersectSphere:
+// by `pad` in space, and by `tSlack` in the distance at which a box is entered. Both are a
+// large multiple of the rounding error (relative 1e-9 and 1e-6 of the coordinates' magnitude).
+struct BvhTolerance {
+    double pad = 0.0;
+    double tSlack = 0.0;
+};
+BvhTolerance bvhTolerance(const Ray& ray, const Bvh& bvh);
+
+// Where the ray enters the node's box widened by `pad`; nothing when it misses it or leaves it
+// at t <= 0. Conservative: a sphere inside the box that intersectSphere reports at t is not
+// missed, and is entered at or before t + tSlack.
+std::optional<double> bvhBoxEntry(const Ray& ray, const BvhNode& node, double pad);
 
 }  // namespace hexray

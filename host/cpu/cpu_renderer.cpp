@@ -10,8 +10,10 @@
 #include <variant>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "accel/bvh.h"
 #include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
 #include "cpu/cpu_margins.h"
@@ -41,16 +43,16 @@ struct TracedPixel {
     float margin = 0.0f;
 };
 
-Color shadeNearest(const Scene& scene, const std::optional<SceneHit>& nearest) {
+Color shadeNearest(const Scene& scene, const Bvh* bvh, const std::optional<SceneHit>& nearest) {
     if (!nearest) {
         return scene.background;
     }
-    return shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit);
+    return shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, bvh);
 }
 
 // The node, and for lit shaders the checker cell and the lights that reach the hit, decided by
 // the same functions that chose the colour.
-PixelClass classify(const Scene& scene, const std::optional<SceneHit>& nearest) {
+PixelClass classify(const Scene& scene, const Bvh* bvh, const std::optional<SceneHit>& nearest) {
     PixelClass pixelClass;
     if (!nearest) {
         return pixelClass;  // background
@@ -68,16 +70,118 @@ PixelClass classify(const Scene& scene, const std::optional<SceneHit>& nearest) 
         }
     }
     for (std::size_t index = 0; index < scene.lights.size(); ++index) {
-        if (reachingLight(scene, node.geometry, nearest->hit, scene.lights[index])) {
+        if (reachingLight(scene, node.geometry, nearest->hit, scene.lights[index], bvh)) {
             pixelClass.flags |= PixelClass::litBit(static_cast<std::uint32_t>(index));
         }
     }
     return pixelClass;
 }
 
+// ---------------------------------------------------------------- margins through the BVH
+//
+// The margin pass must give exactly the margins of the loop over every node. They are combined
+// by a minimum, so a sphere may be left out when its margins provably cannot be below the
+// smallest one already found. A BVH node is skipped when
+// - the ray's line (both directions) passes clear of the ball around the node's box, widened
+//   against rounding, so no sphere inside can be hit (no nearest-node margin to measure, and
+//   every crossing margin takes the line-misses branch of sphereCrossingMargin), and
+// - a lower bound on those crossing margins is at least the smallest margin so far.
+// For a sphere (c, r) inside the ball (B, R): the line's clearance |l_c| - r >= |l_B| - R, and
+// the scale base + |c - eye| + r <= base + |B - eye| + R, so every such margin is at least
+// (|l_B| - R) / (base + |B - eye| + R). The computed margins and bound are both within a few
+// units of double roundoff of their exact values (every distance in them is divided by a scale
+// at least as large), so the bound is lowered by 1e-9 before the comparison. Margins are never
+// negative or -0, so the order in which they are met cannot change the minimum.
+
+// Calls visit(sceneNodeIndex) for every sphere that may have a margin below margins.smallest
+// for the line through `ray`, and for every sphere the ray may hit; `scaleBase` is what
+// sphereCrossingMargin's scale adds to sphereScale(sphere, eye) (0 for a camera ray).
+template <class Visit>
+void forEachSphereThatMayMatter(const Bvh& bvh, const Ray& ray, const glm::dvec3& eye, double scaleBase,
+                                const MarginAccumulator& margins, Visit&& visit) {
+    if (bvh.nodes.empty()) {
+        return;
+    }
+    // The lower bound on the margins of the spheres in a node; 0 when the line may meet one.
+    const auto marginBound = [&](const BvhNode& node) {
+        const glm::dvec3 centre = 0.5 * (node.boundsMin + node.boundsMax);
+        // The ball's radius from the rounded centre, so that it contains the box regardless.
+        const double radius =
+            glm::length(glm::max(node.boundsMax - centre, centre - node.boundsMin)) * (1.0 + 1e-12);
+        const glm::dvec3 f = ray.origin - centre;
+        const double lengthL = glm::length(f - glm::dot(f, ray.direction) * ray.direction);
+        // intersectSphere reports hits up to a few units of roundoff of |o - c| outside a sphere.
+        const double hitPad = 1e-9 * (glm::length(f) + radius);
+        if (!(lengthL > radius + hitPad)) {
+            return 0.0;
+        }
+        return (lengthL - radius) / (scaleBase + glm::length(centre - eye) + radius) - 1e-9;
+    };
+    const auto mayMatter = [&](double bound) { return !(bound >= margins.smallest); };
+
+    struct Pending {
+        std::uint32_t node;
+        double bound;
+    };
+    std::vector<Pending> stack{{0, marginBound(bvh.nodes[0])}};
+    while (!stack.empty()) {
+        const Pending pending = stack.back();
+        stack.pop_back();
+        if (!mayMatter(pending.bound)) {
+            continue;
+        }
+        const BvhNode& node = bvh.nodes[pending.node];
+        if (node.isLeaf()) {
+            for (std::uint32_t i = 0; i < node.count; ++i) {
+                visit(bvh.sphereNodes[node.firstOrSecondChild + i]);
+            }
+            continue;
+        }
+        // The child with the smaller bound first: its spheres are likelier to lower the minimum.
+        Pending first{pending.node + 1, marginBound(bvh.nodes[pending.node + 1])};
+        Pending second{node.firstOrSecondChild, marginBound(bvh.nodes[node.firstOrSecondChild])};
+        if (second.bound < first.bound) {
+            std::swap(first, second);
+        }
+        stack.push_back(second);
+        stack.push_back(first);
+    }
+}
+
+// addIntersectionMargins with a BVH: planes in a loop, spheres through forEachSphereThatMayMatter.
+void addIntersectionMarginsBvh(const Scene& scene, const Bvh& bvh, const Ray& ray,
+                               const std::optional<SceneHit>& nearest, MarginAccumulator& margins) {
+    const glm::dvec3& eye = ray.origin;
+    const double nearestScale =
+        nearest ? hitPointScale(scene.nodes[nearest->nodeIndex].geometry, nearest->hit, ray) : 0.0;
+    const auto addNearestNodeMargin = [&](std::size_t index, const std::optional<Hit>& other) {
+        if (nearest && other && index != nearest->nodeIndex) {
+            const double scale = nearestScale + hitPointScale(scene.nodes[index].geometry, *other, ray);
+            margins.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
+        }
+    };
+    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
+            margins.add(cameraRayPlaneMargin(ray.direction.y, plane->height - eye.y));
+            addNearestNodeMargin(index, intersectPlane(ray, *plane));
+        }
+    }
+    forEachSphereThatMayMatter(bvh, ray, eye, 0.0, margins, [&](std::uint32_t index) {
+        const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
+        margins.add(sphereCrossingMargin(ray, sphere, kNoEnd, sphereScale(sphere, eye)));
+        addNearestNodeMargin(index, intersectSphere(ray, sphere));
+    });
+}
+
+// ---------------------------------------------------------------- margins, every node
+
 // The camera ray against every node: hit or miss for each, then which hit is nearest.
-void addIntersectionMargins(const Scene& scene, const Ray& ray, const std::optional<SceneHit>& nearest,
-                            MarginAccumulator& margins) {
+void addIntersectionMargins(const Scene& scene, const Bvh* bvh, const Ray& ray,
+                            const std::optional<SceneHit>& nearest, MarginAccumulator& margins) {
+    if (bvh) {
+        addIntersectionMarginsBvh(scene, *bvh, ray, nearest, margins);
+        return;
+    }
     const glm::dvec3& eye = ray.origin;
     for (const Node& node : scene.nodes) {
         if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
@@ -106,12 +210,17 @@ void addIntersectionMargins(const Scene& scene, const Ray& ray, const std::optio
 // The shadow ray from the hit toward a light that it faces, against every node that could
 // block it. The shaded node itself cannot: a sphere's lit side sees nothing of its own sphere
 // (convexity), and a shadow ray leaves its plane.
-void addShadowMargins(const Scene& scene, std::size_t shadedNode, const Hit& hit, double hitScale,
-                      const glm::dvec3& eye, const PointLight& light, MarginAccumulator& margins) {
+// With a BVH, the spheres that may matter (see forEachSphereThatMayMatter) stand for all of them.
+void addShadowMargins(const Scene& scene, const Bvh* bvh, std::size_t shadedNode, const Hit& hit,
+                      double hitScale, const glm::dvec3& eye, const PointLight& light, MarginAccumulator& margins) {
     const glm::dvec3 toLight = light.position - hit.point;
     const double distance = glm::length(toLight);
     const Ray shadowRay{hit.point, toLight / distance};
     const double segmentScale = hitScale + glm::length(light.position - eye);
+    const auto addSphereMargin = [&](std::size_t index) {
+        const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
+        margins.add(sphereCrossingMargin(shadowRay, sphere, distance, segmentScale + sphereScale(sphere, eye)));
+    };
     for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
         if (index == shadedNode) {
             continue;
@@ -119,16 +228,23 @@ void addShadowMargins(const Scene& scene, std::size_t shadedNode, const Hit& hit
         if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
             margins.add(planeSegmentMargin(hit.point.y - plane->height, light.position.y - plane->height,
                                            segmentScale + std::abs(plane->height - eye.y)));
-        } else {
-            const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
-            margins.add(sphereCrossingMargin(shadowRay, sphere, distance, segmentScale + sphereScale(sphere, eye)));
+        } else if (!bvh) {
+            addSphereMargin(index);
         }
+    }
+    if (bvh) {
+        forEachSphereThatMayMatter(*bvh, shadowRay, eye, segmentScale, margins, [&](std::uint32_t index) {
+            if (index != shadedNode) {
+                addSphereMargin(index);
+            }
+        });
     }
 }
 
 // The decisions of a lit shader: the checker cell, and for each light whether the surface faces
 // it and, if so, whether anything blocks it. A constant shader makes none.
-void addShadingMargins(const Scene& scene, const Ray& ray, const SceneHit& nearest, MarginAccumulator& margins) {
+void addShadingMargins(const Scene& scene, const Bvh* bvh, const Ray& ray, const SceneHit& nearest,
+                       MarginAccumulator& margins) {
     const Node& node = scene.nodes[nearest.nodeIndex];
     const Shader& shader = scene.shaders[node.shaderIndex];
     if (std::holds_alternative<ConstantShader>(shader)) {
@@ -158,32 +274,32 @@ void addShadingMargins(const Scene& scene, const Ray& ray, const SceneHit& neare
         const double directionRoundoff = (hitScale + glm::length(light.position - eye)) / distance;
         margins.add(facingMargin(cosTheta, normalRoundoff, directionRoundoff));
         if (cosTheta > 0.0) {
-            addShadowMargins(scene, nearest.nodeIndex, hit, hitScale, eye, light, margins);
+            addShadowMargins(scene, bvh, nearest.nodeIndex, hit, hitScale, eye, light, margins);
         }
     }
 }
 
-TracedPixel tracePixel(const Scene& scene, const Ray& ray) {
-    const std::optional<SceneHit> nearest = findNearestHit(ray, scene);
+TracedPixel tracePixel(const Scene& scene, const Bvh* bvh, const Ray& ray) {
+    const std::optional<SceneHit> nearest = findNearestHit(ray, scene, bvh);
     MarginAccumulator margins;
-    addIntersectionMargins(scene, ray, nearest, margins);
+    addIntersectionMargins(scene, bvh, ray, nearest, margins);
     if (nearest) {
-        addShadingMargins(scene, ray, *nearest, margins);
+        addShadingMargins(scene, bvh, ray, *nearest, margins);
     }
-    return {shadeNearest(scene, nearest), classify(scene, nearest), margins.stored()};
+    return {shadeNearest(scene, bvh, nearest), classify(scene, bvh, nearest), margins.stored()};
 }
 
-void renderRow(const Scene& scene, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
+void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
     Image& image = render.image;
     const std::uint32_t samples = scene.image.samplesPerPixel;
     for (std::uint32_t x = 0; x < image.width; ++x) {
         // With several samples the pixel is classified by its first and is as ambiguous as its
         // closest call: only then do equal classes mean equal colours.
-        const TracedPixel first = tracePixel(scene, cameraRay(sheet, scene.image, x, y, 0));
+        const TracedPixel first = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, 0));
         Color sum = first.color;
         float margin = first.margin;
         for (std::uint32_t sample = 1; sample < samples; ++sample) {
-            const TracedPixel pixel = tracePixel(scene, cameraRay(sheet, scene.image, x, y, sample));
+            const TracedPixel pixel = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, sample));
             sum += pixel.color;
             margin = std::min(margin, pixel.margin);
         }
@@ -208,6 +324,10 @@ void checkShaderIndices(const Scene& scene) {
 }  // namespace
 
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
+    return renderOnCpu(scene, threadCount, CpuAcceleration::Auto);
+}
+
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, CpuAcceleration acceleration) {
     checkShaderIndices(scene);
 
     CpuRender render;
@@ -219,6 +339,11 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
         return render;
     }
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    // Built once per render and shared, read-only, by every worker.
+    const bool useBvh = acceleration == CpuAcceleration::Bvh ||
+                        (acceleration == CpuAcceleration::Auto && bvhPays(scene));
+    const std::optional<Bvh> bvh = useBvh ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
+    const Bvh* const bvhOrNull = bvh ? &*bvh : nullptr;
 
     if (threadCount == 0) {
         threadCount = std::max(1u, std::thread::hardware_concurrency());  // may report 0
@@ -229,7 +354,7 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
     // the image are shared out; each row is written by exactly one worker, so no locking.
     const auto renderRows = [&](unsigned worker) {
         for (std::uint32_t y = worker; y < image.height; y += threadCount) {
-            renderRow(scene, sheet, y, render);
+            renderRow(scene, bvhOrNull, sheet, y, render);
         }
     };
     {

@@ -28,6 +28,16 @@ struct CpuRender {
 
 // Renders image.samplesPerPixel rays per pixel, rows spread over `threadCount` threads
 // (0 = all cores).
+// Scenes with many spheres are traversed through a BVH (see accel/bvh.h, bvhPays).
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
+
+// How renderOnCpu finds what a ray meets. Every choice gives the same image, classes and
+// margins bit for bit; this exists for tests and benchmarks, not for users.
+enum class CpuAcceleration {
+    Auto,  // a BVH when bvhPays(scene)
+    None,  // every node for every ray
+    Bvh,   // always a BVH over the spheres
+};
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, CpuAcceleration acceleration);
 
 }  // namespace hexray

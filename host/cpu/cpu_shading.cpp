@@ -70,7 +70,8 @@ double shadowRayOffset(const Geometry& geometry) {
     return 8.0 * DBL_EPSILON * coordinateScale;
 }
 
-bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy) {
+bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy,
+                    const Bvh* bvh) {
     const glm::dvec3 toTarget = to - from;
     const double distance = glm::length(toTarget);
     const double maxDistance = distance - shortenBy;
@@ -78,20 +79,19 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
         return true;  // the target is within the offset: nothing can lie in between
     }
     const Ray shadowRay{from, toTarget / distance};
-    const std::optional<SceneHit> blocker = findNearestHit(shadowRay, scene);
     // The nearest t > 0 is below maxDistance exactly when any hit is.
-    return !blocker || blocker->hit.t >= maxDistance;
+    return !hasHitBefore(shadowRay, scene, maxDistance, bvh);
 }
 
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                    const glm::dvec3& lightPosition) {
+                    const glm::dvec3& lightPosition, const Bvh* bvh) {
     const double offset = shadowRayOffset(geometry);
     const glm::dvec3 origin = hit.point + offset * hit.facingNormal;
-    return isSegmentClear(scene, origin, lightPosition, offset);
+    return isSegmentClear(scene, origin, lightPosition, offset, bvh);
 }
 
 std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                                           const PointLight& light) {
+                                           const PointLight& light, const Bvh* bvh) {
     const glm::dvec3 toLight = light.position - hit.point;
     const double distanceSquared = glm::dot(toLight, toLight);
     if (distanceSquared == 0.0) {
@@ -102,37 +102,38 @@ std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& g
     if (cosTheta <= 0.0) {
         return std::nullopt;  // lit from behind: no light, and no shadow ray to go wrong at the terminator
     }
-    if (!isLightVisible(scene, geometry, hit, light.position)) {
+    if (!isLightVisible(scene, geometry, hit, light.position, bvh)) {
         return std::nullopt;
     }
     return ReachingLight{cosTheta, distanceSquared};
 }
 
-Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit) {
+Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh) {
     Color total = scene.ambient;
     for (const PointLight& light : scene.lights) {
-        if (const std::optional<ReachingLight> reaching = reachingLight(scene, geometry, hit, light)) {
+        if (const std::optional<ReachingLight> reaching = reachingLight(scene, geometry, hit, light, bvh)) {
             total += light.color * (light.intensity * reaching->cosTheta / reaching->distanceSquared);
         }
     }
     return total;
 }
 
-Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo) {
-    return albedo * incidentLight(scene, geometry, hit);
+Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo,
+                   const Bvh* bvh) {
+    return albedo * incidentLight(scene, geometry, hit, bvh);
 }
 
-Color shadeHit(const Scene& scene, const Node& node, const Hit& hit) {
+Color shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh) {
     const Shader& shader = scene.shaders.at(node.shaderIndex);
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         return constant->color;
     }
     if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
-        return shadeLambert(scene, node.geometry, hit, lambert->color);
+        return shadeLambert(scene, node.geometry, hit, lambert->color, bvh);
     }
     const CheckerShader& checker = std::get<CheckerShader>(shader);
     const Color albedo = checkerColor(checker, textureCoordinates(node.geometry, hit));
-    return shadeLambert(scene, node.geometry, hit, albedo);
+    return shadeLambert(scene, node.geometry, hit, albedo, bvh);
 }
 
 }  // namespace hexray

@@ -34,11 +34,13 @@ double shadowRayOffset(const Geometry& geometry);
 
 // True when no node has a hit with 0 < t < |to - from| - shortenBy on the ray from `from`
 // toward `to`. Shortening keeps a light lying exactly on a surface from being blocked by it.
-bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy);
+// Here and below, `bvh` (when given, built from `scene`) only speeds up the shadow rays.
+bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy,
+                    const Bvh* bvh = nullptr);
 
 // Whether the light at `lightPosition` can see the hit point (the shadow ray, offset as above).
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                    const glm::dvec3& lightPosition);
+                    const glm::dvec3& lightPosition, const Bvh* bvh = nullptr);
 
 // How a light reaches a hit point that it lights.
 struct ReachingLight {
@@ -49,16 +51,17 @@ struct ReachingLight {
 // The light's cos and squared distance when it contributes to the hit; nothing when it does not:
 // it lies on the point itself, the surface faces away from it (cos <= 0), or it is shadowed.
 std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                                           const PointLight& light);
+                                           const PointLight& light, const Bvh* bvh = nullptr);
 
 // ambient + sum over visible lights of lightColor * intensity * max(0, cos) / r^2.
 // No pi factor: intensity 10000 at distance 100 at normal incidence gives 1.
-Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit);
+Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh = nullptr);
 
 // albedo (component-wise) times the incident light.
-Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo);
+Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo,
+                   const Bvh* bvh = nullptr);
 
 // The colour the node's shader gives this hit.
-Color shadeHit(const Scene& scene, const Node& node, const Hit& hit);
+Color shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh = nullptr);
 
 }  // namespace hexray
