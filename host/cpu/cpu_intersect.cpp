@@ -244,6 +244,21 @@ bool hasHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bv
             }
         }
     }
+    return hasSphereHitBefore(ray, scene, maxT, bvh);
+}
+
+bool hasSphereHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh) {
+    if (!bvh) {
+        for (const Node& node : scene.nodes) {
+            if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+                const std::optional<Hit> hit = intersectSphere(ray, *sphere);
+                if (hit && hit->t < maxT) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
     bool found = false;
     forEachSphereAlongRay(ray, *bvh, [&](std::uint32_t index) {
         const std::optional<Hit> hit = intersectSphere(ray, std::get<Sphere>(scene.nodes[index].geometry));

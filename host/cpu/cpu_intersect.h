@@ -51,6 +51,9 @@ std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene, const
 // but with a BVH it stops at the first such hit.
 bool hasHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh = nullptr);
 
+// The same, for the scene's spheres only.
+bool hasSphereHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh = nullptr);
+
 // The BVH's boxes as the traversal tests them, widened against the rounding of intersectSphere:
 // by `pad` in space, and by `tSlack` in the distance at which a box is entered. Both are a
 // large multiple of the rounding error (relative 1e-9 and 1e-6 of the coordinates' magnitude).

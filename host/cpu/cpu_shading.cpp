@@ -78,9 +78,19 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
     if (!(maxDistance > 0.0)) {
         return true;  // the target is within the offset: nothing can lie in between
     }
+    // A plane blocks the segment exactly when its ends lie strictly on opposite sides: decided
+    // without a division, so a light lying in a plane is never blocked by that plane.
+    for (const Node& node : scene.nodes) {
+        if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
+            const double fromSide = from.y - plane->height;
+            const double toSide = to.y - plane->height;
+            if ((fromSide < 0.0 && toSide > 0.0) || (fromSide > 0.0 && toSide < 0.0)) {
+                return false;
+            }
+        }
+    }
     const Ray shadowRay{from, toTarget / distance};
-    // The nearest t > 0 is below maxDistance exactly when any hit is.
-    return !hasHitBefore(shadowRay, scene, maxDistance, bvh);
+    return !hasSphereHitBefore(shadowRay, scene, maxDistance, bvh);
 }
 
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,

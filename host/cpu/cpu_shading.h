@@ -32,8 +32,9 @@ glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit);
 // ulp of the coordinates' magnitude for spheres.
 double shadowRayOffset(const Geometry& geometry);
 
-// True when no node has a hit with 0 < t < |to - from| - shortenBy on the ray from `from`
-// toward `to`. Shortening keeps a light lying exactly on a surface from being blocked by it.
+// True when no plane has `from` and `to` strictly on opposite sides, and no sphere has a hit
+// with 0 < t < |to - from| - shortenBy on the ray from `from` toward `to`. Shortening keeps a
+// light lying exactly on a sphere from being blocked by it; the plane rule needs none.
 // Here and below, `bvh` (when given, built from `scene`) only speeds up the shadow rays.
 bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3& to, double shortenBy,
                     const Bvh* bvh = nullptr);
