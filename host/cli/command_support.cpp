@@ -1,11 +1,9 @@
 #include "cli/command_support.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <thread>
 
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
@@ -51,10 +49,6 @@ Scene loadScene(const std::string& path, const ImageOverride& image) {
         overrideSamplesPerPixel(scene, *image.samplesPerPixel, "--spp");
     }
     return scene;
-}
-
-unsigned threadCount(unsigned requested) {
-    return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
 int withValidationVerdict(int commandCode, const ValidationLog& log) {

@@ -19,8 +19,6 @@ int guarded(const std::function<int()>& command);
 
 Scene loadScene(const std::string& path, const ImageOverride& image);
 
-unsigned threadCount(unsigned requested);
-
 // Validation messages fail the command: a tester's run must be clean, not merely finish.
 // `commandCode` wins when it is already a failure.
 int withValidationVerdict(int commandCode, const ValidationLog& log);

@@ -135,7 +135,7 @@ int runCompare(const CompareOptions& options) {
         }
         for (const SceneFile& file : files) {
             const Scene scene = loadScene(file.path, options.image);
-            const unsigned threads = threadCount(options.threads);
+            const unsigned threads = cpuThreadCount(options.threads);
             const auto cpuStart = std::chrono::steady_clock::now();
             const CpuRender reference = renderOnCpu(scene, threads);
             const double cpuMilliseconds = millisecondsSince(cpuStart);

@@ -69,7 +69,7 @@ int runRender(const RenderOptions& options) {
                           result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
                           result.timing.firstDispatchMilliseconds);
         } else {
-            const unsigned threads = threadCount(options.threads);
+            const unsigned threads = cpuThreadCount(options.threads);
             const auto start = std::chrono::steady_clock::now();
             const Rgb8Image image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
             std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads,

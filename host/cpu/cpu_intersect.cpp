@@ -231,22 +231,6 @@ std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene, const
     return nearest;
 }
 
-bool hasHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh) {
-    if (!bvh) {
-        const std::optional<SceneHit> nearest = findNearestHit(ray, scene);
-        return nearest && nearest->hit.t < maxT;
-    }
-    for (const Node& node : scene.nodes) {
-        if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
-            const std::optional<Hit> hit = intersectPlane(ray, *plane);
-            if (hit && hit->t < maxT) {
-                return true;
-            }
-        }
-    }
-    return hasSphereHitBefore(ray, scene, maxT, bvh);
-}
-
 bool hasSphereHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh) {
     if (!bvh) {
         for (const Node& node : scene.nodes) {

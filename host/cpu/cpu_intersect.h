@@ -47,11 +47,8 @@ struct SceneHit {
 // report, and the tie rule is applied explicitly instead of by loop order.
 std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene, const Bvh* bvh = nullptr);
 
-// Whether any node has a hit with t < maxT: exactly whether findNearestHit's t is below maxT,
-// but with a BVH it stops at the first such hit.
-bool hasHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh = nullptr);
-
-// The same, for the scene's spheres only.
+// Whether any sphere has a hit with t < maxT (shadow rays; planes are decided by a sign test,
+// see isSegmentClear). With a BVH it stops at the first such hit.
 bool hasSphereHitBefore(const Ray& ray, const Scene& scene, double maxT, const Bvh* bvh = nullptr);
 
 // The BVH's boxes as the traversal tests them, widened against the rounding of intersectSphere:

@@ -323,6 +323,10 @@ void checkShaderIndices(const Scene& scene) {
 
 }  // namespace
 
+unsigned cpuThreadCount(unsigned requested) {
+    return requested ? requested : std::max(1u, std::thread::hardware_concurrency());  // which may report 0
+}
+
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
     return renderOnCpu(scene, threadCount, CpuAcceleration::Auto);
 }
@@ -345,10 +349,7 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, CpuAcceleration 
     const std::optional<Bvh> bvh = useBvh ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
     const Bvh* const bvhOrNull = bvh ? &*bvh : nullptr;
 
-    if (threadCount == 0) {
-        threadCount = std::max(1u, std::thread::hardware_concurrency());  // may report 0
-    }
-    threadCount = std::min(threadCount, image.height);
+    threadCount = std::min(cpuThreadCount(threadCount), image.height);
 
     // Rows are interleaved (worker w takes rows w, w + n, ...) so that expensive regions of
     // the image are shared out; each row is written by exactly one worker, so no locking.

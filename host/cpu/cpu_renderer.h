@@ -26,6 +26,9 @@ struct CpuRender {
     bool isAmbiguous(std::size_t pixel) const { return margins[pixel] < kAmbiguityMargin; }
 };
 
+// The worker threads renderOnCpu uses for `requested` (0 = all cores, at least 1).
+unsigned cpuThreadCount(unsigned requested);
+
 // Renders image.samplesPerPixel rays per pixel, rows spread over `threadCount` threads
 // (0 = all cores).
 // Scenes with many spheres are traversed through a BVH (see accel/bvh.h, bvhPays).

@@ -126,7 +126,7 @@ void expectBvhAgrees(const Scene& scene, std::uint32_t rayCount, std::uint64_t s
         // and to random points.
         for (const double maxT : {brute ? brute->hit.t : 1.0, brute ? std::nextafter(brute->hit.t, 0.0) : 5.0,
                                   brute ? std::nextafter(brute->hit.t, 1e300) : 50.0, uniform(engine, 0.0, 100.0)}) {
-            EXPECT_EQ(hasHitBefore(ray, scene, maxT), hasHitBefore(ray, scene, maxT, &bvh)) << maxT;
+            EXPECT_EQ(hasSphereHitBefore(ray, scene, maxT), hasSphereHitBefore(ray, scene, maxT, &bvh)) << maxT;
         }
         const glm::dvec3 to = origin + uniform(engine, 0.0, 2.0 * glm::length(high - low)) * direction;
         EXPECT_EQ(isSegmentClear(scene, origin, to, 1e-9), isSegmentClear(scene, origin, to, 1e-9, &bvh));
