@@ -62,45 +62,31 @@ real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     return far > 0.0 ? far : NO_HIT;
 }
 
-// Camera rays all start at the eye, whose power with respect to each sphere the host computed.
-Hit findNearestHit(Ray ray) {
-    Hit hit = Hit(NO_HIT, NO_NODE);
-    for (uint i = 0u; i < nodeCount(); ++i) {
-        vec4r geometry = nodes[i].geometry;
-        real t = isPlane(i)
-                     ? intersectPlane(ray, geometry.x)
-                     : intersectSphere(ray, geometry.xyz, geometry.w, nodes[i].surface.x);
-        // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
-        if (t < hit.t) {
-            hit = Hit(t, i);
-        }
-    }
-    return hit;
+// A plane blocks a segment exactly when its ends lie strictly on opposite sides: no division,
+// so a light lying in the plane is never blocked by it through rounding.
+bool planeSeparates(real height, vec3r origin, vec3r target) {
+    real originSide = origin.y - height;
+    real targetSide = target.y - height;
+    return (originSide < 0.0 && targetSide > 0.0) || (originSide > 0.0 && targetSide < 0.0);
 }
 
-// Whether anything lies strictly between the ray's origin and `target`, `distance` away.
-bool isOccluded(Ray ray, vec3r target, real distance) {
-    for (uint i = 0u; i < nodeCount(); ++i) {
-        vec4r geometry = nodes[i].geometry;
-        if (isPlane(i)) {
+// Distance along a camera ray to node i. Camera rays all start at the eye, whose power with
+// respect to each sphere the host computed.
+real cameraRayDistance(Ray ray, uint i) {
+    vec4r geometry = nodes[i].geometry;
+    return isPlane(i) ? intersectPlane(ray, geometry.x)
+                      : intersectSphere(ray, geometry.xyz, geometry.w, nodes[i].surface.x);
+}
+
+// Whether node i lies on the segment from the ray's origin to `target`, `distance` away.
+bool blocksSegment(Ray ray, uint i, vec3r target, real distance) {
+    vec4r geometry = nodes[i].geometry;
+    if (isPlane(i)) {
 #ifdef HEXRAY_NAIVE
-            bool blocks = intersectPlane(ray, geometry.x) < distance;
+        return intersectPlane(ray, geometry.x) < distance;
 #else
-            // A plane blocks a segment exactly when the ends lie strictly on opposite sides: no
-            // division, so a light lying in the plane is never blocked by it through rounding.
-            real originSide = ray.origin.y - geometry.x;
-            real targetSide = target.y - geometry.x;
-            bool blocks = (originSide < 0.0 && targetSide > 0.0) || (originSide > 0.0 && targetSide < 0.0);
+        return planeSeparates(geometry.x, ray.origin, target);
 #endif
-            if (blocks) {
-                return true;
-            }
-        } else {
-            vec3r f = ray.origin - geometry.xyz;
-            if (intersectSphere(ray, geometry.xyz, geometry.w, originPower(f, geometry.w)) < distance) {
-                return true;
-            }
-        }
     }
-    return false;
+    return intersectSphere(ray, geometry.xyz, geometry.w, originPower(ray.origin - geometry.xyz, geometry.w)) < distance;
 }

@@ -12,6 +12,8 @@ layout(local_size_x_id = 0, local_size_y_id = 1) in;
 #include "ray.glsl"
 #include "camera_ray.glsl"
 #include "intersect.glsl"
+#include "bvh.glsl"
+#include "trace.glsl"
 #include "surface.glsl"
 #include "shading.glsl"
 #include "encode.glsl"

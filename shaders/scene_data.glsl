@@ -30,6 +30,7 @@ SCENE_BLOCK(0) FrameBlock {
     float samplingOffset;
     uint nodeCount;
     uint lightCount;
+    uint planeCount;  // BVH scenes: the first planeCount entries of primitiveNodes (bvh.glsl)
 } frame;
 
 struct Node {

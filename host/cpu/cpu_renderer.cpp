@@ -328,10 +328,10 @@ unsigned cpuThreadCount(unsigned requested) {
 }
 
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
-    return renderOnCpu(scene, threadCount, CpuAcceleration::Auto);
+    return renderOnCpu(scene, threadCount, Acceleration::Auto);
 }
 
-CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, CpuAcceleration acceleration) {
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration) {
     checkShaderIndices(scene);
 
     CpuRender render;
@@ -344,8 +344,8 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, CpuAcceleration 
     }
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
     // Built once per render and shared, read-only, by every worker.
-    const bool useBvh = acceleration == CpuAcceleration::Bvh ||
-                        (acceleration == CpuAcceleration::Auto && bvhPays(scene));
+    const bool useBvh = acceleration == Acceleration::Bvh ||
+                        (acceleration == Acceleration::Auto && bvhPays(scene));
     const std::optional<Bvh> bvh = useBvh ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
     const Bvh* const bvhOrNull = bvh ? &*bvh : nullptr;
 

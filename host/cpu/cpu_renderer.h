@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "accel/bvh.h"
 #include "image/image.h"
 #include "image/pixel_class.h"
 #include "scene/scene.h"
@@ -34,13 +35,8 @@ unsigned cpuThreadCount(unsigned requested);
 // Scenes with many spheres are traversed through a BVH (see accel/bvh.h, bvhPays).
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
 
-// How renderOnCpu finds what a ray meets. Every choice gives the same image, classes and
-// margins bit for bit; this exists for tests and benchmarks, not for users.
-enum class CpuAcceleration {
-    Auto,  // a BVH when bvhPays(scene)
-    None,  // every node for every ray
-    Bvh,   // always a BVH over the spheres
-};
-CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, CpuAcceleration acceleration);
+// How renderOnCpu finds what a ray meets (Auto: a BVH when bvhPays(scene)). Every choice
+// gives the same image, classes and margins bit for bit.
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration);
 
 }  // namespace hexray

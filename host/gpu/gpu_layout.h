@@ -24,6 +24,10 @@ inline constexpr std::uint32_t kLightBinding = 2;
 inline constexpr std::uint32_t kPixelBinding = 3;
 inline constexpr std::uint32_t kClassBinding = 4;
 inline constexpr std::uint32_t kEncodedBinding = 5;
+// Scenes traced through a BVH (the storage-buffer layout): its nodes, and the scene nodes it
+// refers to.
+inline constexpr std::uint32_t kBvhBinding = 6;
+inline constexpr std::uint32_t kPrimitiveBinding = 7;
 
 enum GeometryKind : std::uint32_t { kGeometryPlane = 0, kGeometrySphere = 1 };
 enum ShaderKind : std::uint32_t { kShaderConstant = 0, kShaderLambert = 1, kShaderChecker = 2 };
@@ -47,6 +51,7 @@ struct GpuFrame {
     float samplingOffset;  // 0.5: pixel centres; 0: the course's pixel corners
     std::uint32_t nodeCount;
     std::uint32_t lightCount;
+    std::uint32_t planeCount;  // BVH scenes: the first planeCount entries of the primitive list
 };
 
 // A node carries its own copy of its shader's parameters: one fetch per candidate, no indirection.
@@ -69,6 +74,22 @@ struct GpuLight {
     RealVec4<Real> position;  // .xyz
     glm::vec4 power;          // .rgb = colour * intensity
 };
+
+// One node of the BVH over a scene's spheres (accel/bvh.h), in the shader's precision and
+// placement. Bounds are rounded outward and padded so that every sphere hit the shader can
+// compute lies inside its leaf's box. Depth-first order: an interior node's first child is the
+// next node.
+template <typename Real>
+struct alignas(4 * sizeof(Real)) GpuBvhNode {
+    glm::vec<3, Real> boundsMin;
+    std::uint32_t firstOrSecondChild;  // leaf: first primitive after the planes; interior: second child
+    glm::vec<3, Real> boundsMax;
+    std::uint32_t count;  // leaf: number of spheres (> 0); interior: 0
+};
+
+// The shader's traversal stack: a BVH deeper than this is not uploaded (the scene is then
+// traced without one).
+inline constexpr std::uint32_t kBvhStackSize = 64;
 
 // Which rows of the image one dispatch covers (large images render in bands): push constants.
 struct GpuBand {
@@ -122,6 +143,7 @@ static_assert(offsetof(GpuFrame<float>, imageSize) == 96);
 static_assert(offsetof(GpuFrame<float>, samplingOffset) == 104);
 static_assert(offsetof(GpuFrame<float>, nodeCount) == 108);
 static_assert(offsetof(GpuFrame<float>, lightCount) == 112);
+static_assert(offsetof(GpuFrame<float>, planeCount) == 116);
 static_assert(sizeof(GpuFrame<float>) == 128);
 static_assert(offsetof(GpuNode<float>, kinds) == 0);
 static_assert(offsetof(GpuNode<float>, geometry) == 16);
@@ -133,6 +155,10 @@ static_assert(sizeof(GpuNode<float>) == 96);
 static_assert(offsetof(GpuLight<float>, position) == 0);
 static_assert(offsetof(GpuLight<float>, power) == 16);
 static_assert(sizeof(GpuLight<float>) == 32);
+static_assert(offsetof(GpuBvhNode<float>, firstOrSecondChild) == 12);
+static_assert(offsetof(GpuBvhNode<float>, boundsMax) == 16);
+static_assert(offsetof(GpuBvhNode<float>, count) == 28);
+static_assert(sizeof(GpuBvhNode<float>) == 32);
 
 // --- std430 offsets, double variant (dvec4 aligned to 32)
 static_assert(offsetof(GpuFrame<double>, origin) == 0);
@@ -145,6 +171,7 @@ static_assert(offsetof(GpuFrame<double>, imageSize) == 160);
 static_assert(offsetof(GpuFrame<double>, samplingOffset) == 168);
 static_assert(offsetof(GpuFrame<double>, nodeCount) == 172);
 static_assert(offsetof(GpuFrame<double>, lightCount) == 176);
+static_assert(offsetof(GpuFrame<double>, planeCount) == 180);
 static_assert(sizeof(GpuFrame<double>) == 192);
 static_assert(offsetof(GpuNode<double>, kinds) == 0);
 static_assert(offsetof(GpuNode<double>, geometry) == 32);
@@ -156,6 +183,10 @@ static_assert(sizeof(GpuNode<double>) == 160);
 static_assert(offsetof(GpuLight<double>, position) == 0);
 static_assert(offsetof(GpuLight<double>, power) == 32);
 static_assert(sizeof(GpuLight<double>) == 64);
+static_assert(offsetof(GpuBvhNode<double>, firstOrSecondChild) == 24);
+static_assert(offsetof(GpuBvhNode<double>, boundsMax) == 32);
+static_assert(offsetof(GpuBvhNode<double>, count) == 56);
+static_assert(sizeof(GpuBvhNode<double>) == 64);
 
 static_assert(sizeof(GpuBand) == 8);
 static_assert(sizeof(GpuPixel) == 16);

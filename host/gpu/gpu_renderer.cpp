@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <span>
 
 #include "gpu/gpu_layout.h"
@@ -13,10 +14,13 @@
 namespace {
 // SPIR-V generated from shaders/render.comp at build time, one array per precision variant
 // and scene storage.
+#include "kRenderF32BvhSpv.h"
+#include "kRenderF32NaiveBvhSpv.h"
 #include "kRenderF32NaiveStorageSpv.h"
 #include "kRenderF32NaiveUniformSpv.h"
 #include "kRenderF32StorageSpv.h"
 #include "kRenderF32UniformSpv.h"
+#include "kRenderF64BvhSpv.h"
 #include "kRenderF64StorageSpv.h"
 #include "kRenderF64UniformSpv.h"
 }  // namespace
@@ -29,16 +33,28 @@ using gpu::GpuPixel;
 using gpu::GpuPixelClass;
 using gpu::kWorkgroupSize;
 
-constexpr std::array<std::uint32_t, 6> kBindings = {gpu::kFrameBinding, gpu::kNodeBinding, gpu::kLightBinding,
-                                                    gpu::kPixelBinding, gpu::kClassBinding, gpu::kEncodedBinding};
+// Set 0's bindings: the storage-buffer layout adds the BVH's two.
+constexpr std::array<std::uint32_t, 8> kAllBindings = {
+    gpu::kFrameBinding,   gpu::kNodeBinding,     gpu::kLightBinding, gpu::kPixelBinding,
+    gpu::kClassBinding,   gpu::kEncodedBinding,  gpu::kBvhBinding,   gpu::kPrimitiveBinding};
+
+std::span<const std::uint32_t> bindingsOf(bool smallScene) {
+    return std::span(kAllBindings).first(smallScene ? 6 : 8);
+}
 
 using Spirv = std::span<const std::uint32_t>;
 
-Spirv spirvFor(Precision precision, bool smallScene) {
+using gpu::SceneLayout;
+
+Spirv spirvFor(Precision precision, SceneLayout layout) {
+    const auto pick = [layout](Spirv uniform, Spirv storage, Spirv bvh) {
+        return layout == SceneLayout::Uniform ? uniform : layout == SceneLayout::Storage ? storage : bvh;
+    };
     switch (precision) {
-        case Precision::F32Naive: return smallScene ? Spirv(kRenderF32NaiveUniformSpv) : Spirv(kRenderF32NaiveStorageSpv);
-        case Precision::F64: return smallScene ? Spirv(kRenderF64UniformSpv) : Spirv(kRenderF64StorageSpv);
-        default: return smallScene ? Spirv(kRenderF32UniformSpv) : Spirv(kRenderF32StorageSpv);
+        case Precision::F32Naive:
+            return pick(kRenderF32NaiveUniformSpv, kRenderF32NaiveStorageSpv, kRenderF32NaiveBvhSpv);
+        case Precision::F64: return pick(kRenderF64UniformSpv, kRenderF64StorageSpv, kRenderF64BvhSpv);
+        default: return pick(kRenderF32UniformSpv, kRenderF32StorageSpv, kRenderF32BvhSpv);
     }
 }
 
@@ -51,7 +67,7 @@ vk::DescriptorType descriptorType(std::uint32_t binding, bool smallScene) {
 
 vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device, bool smallScene) {
     std::vector<vk::DescriptorSetLayoutBinding> bindings;
-    for (std::uint32_t binding : kBindings) {
+    for (std::uint32_t binding : bindingsOf(smallScene)) {
         bindings.emplace_back(binding, descriptorType(binding, smallScene), 1, vk::ShaderStageFlagBits::eCompute);
     }
     return vk::raii::DescriptorSetLayout(device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
@@ -91,6 +107,8 @@ struct PackedScene {
     std::vector<std::byte> frame;
     std::vector<std::byte> nodes;
     std::vector<std::byte> lights;
+    std::vector<std::byte> bvhNodes;    // empty: no BVH
+    std::vector<std::byte> primitives;
 };
 
 template <typename T>
@@ -99,22 +117,34 @@ std::vector<std::byte> bytesOf(std::span<T> values) {
     return {bytes.begin(), bytes.end()};
 }
 
+// `bvh` (when given) is uploaded only if the shader's stack can walk it.
 template <typename Real>
-PackedScene packBytes(const Scene& scene, gpu::Placement placement, bool smallScene) {
+PackedScene packBytes(const Scene& scene, gpu::Placement placement, SceneLayout layout, const Bvh* bvh) {
     gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, placement);
-    if (smallScene) {
+    PackedScene bytes;
+    if (bvh) {
+        const gpu::GpuBvh<Real> tree = gpu::packBvh<Real>(scene, *bvh, packed);
+        if (!tree.nodes.empty() && tree.depth <= gpu::kBvhStackSize) {
+            bytes.bvhNodes = bytesOf(std::span(tree.nodes));
+            bytes.primitives = bytesOf(std::span(tree.primitives));
+        }
+    }
+    if (layout == SceneLayout::Uniform) {
         // A uniform block declares all kSmallSceneCapacity entries: the buffers must hold them.
         packed.nodes.resize(gpu::kSmallSceneCapacity);
         packed.lights.resize(gpu::kSmallSceneCapacity);
     }
-    return {bytesOf(std::span(&packed.frame, 1)), bytesOf(std::span(packed.nodes)), bytesOf(std::span(packed.lights))};
+    bytes.frame = bytesOf(std::span(&packed.frame, 1));
+    bytes.nodes = bytesOf(std::span(packed.nodes));
+    bytes.lights = bytesOf(std::span(packed.lights));
+    return bytes;
 }
 
-PackedScene packFor(const Scene& scene, Precision precision, bool smallScene) {
+PackedScene packFor(const Scene& scene, Precision precision, SceneLayout layout, const Bvh* bvh) {
     switch (precision) {
-        case Precision::F64: return packBytes<double>(scene, gpu::Placement::CameraRelative, smallScene);
-        case Precision::F32Naive: return packBytes<float>(scene, gpu::Placement::World, smallScene);
-        default: return packBytes<float>(scene, gpu::Placement::CameraRelative, smallScene);
+        case Precision::F64: return packBytes<double>(scene, gpu::Placement::CameraRelative, layout, bvh);
+        case Precision::F32Naive: return packBytes<float>(scene, gpu::Placement::World, layout, bvh);
+        default: return packBytes<float>(scene, gpu::Placement::CameraRelative, layout, bvh);
     }
 }
 
@@ -162,23 +192,24 @@ Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
 const vk::raii::Pipeline& GpuRenderer::pipeline(const PipelineKey& key) {
     auto found = pipelines_.find(key);
     if (found == pipelines_.end()) {
-        const auto& [precision, smallScene, specialization] = key;
+        const auto& [precision, layout, specialization] = key;
         found = pipelines_
-                    .emplace(key, createPipeline(context_.device(), bindings(smallScene).pipelineLayout,
-                                                 spirvFor(precision, smallScene), specialization))
+                    .emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout,
+                                                 spirvFor(precision, layout), specialization))
                     .first;
     }
     return found->second;
 }
 
-GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, GpuOutput output) {
+GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, GpuOutput output,
+                                    Acceleration acceleration) {
     GpuRenderResult result;
     result.precision = resolve(scene, requested);
     const std::uint32_t width = scene.image.width;
     if (output == GpuOutput::LinearAndClasses) {
         result.image = Image(width, scene.image.height);
         result.classes.resize(result.image.pixels.size());
-        result.timing = renderBands(scene, result.precision, output, [&](const Band& band) {
+        renderBands(scene, result.precision, output, acceleration, result, [&](const Band& band) {
             const std::size_t count = std::size_t(band.rows) * width;
             const std::ptrdiff_t first = std::ptrdiff_t(band.firstRow) * width;
             std::transform(band.pixels, band.pixels + count, result.image.pixels.begin() + first,
@@ -194,6 +225,7 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
         result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
     });
     result.timing = streamed.timing;
+    result.usedBvh = streamed.usedBvh;
     return result;
 }
 
@@ -201,7 +233,7 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, Precision req
     GpuRenderResult result;
     result.precision = resolve(scene, requested);
     std::vector<std::uint8_t> rgb;
-    result.timing = renderBands(scene, result.precision, GpuOutput::Encoded8, [&](const Band& band) {
+    renderBands(scene, result.precision, GpuOutput::Encoded8, Acceleration::Auto, result, [&](const Band& band) {
         const std::size_t count = std::size_t(band.rows) * scene.image.width;
         rgb.resize(count * 3);
         for (std::size_t i = 0; i < count; ++i) {
@@ -212,18 +244,25 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, Precision req
     return result;
 }
 
-GpuTiming GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput output,
-                                   const std::function<void(const Band&)>& consume) {
+void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
+                              GpuRenderResult& result, const std::function<void(const Band&)>& consume) {
     const bool linear = output == GpuOutput::LinearAndClasses;
     const std::uint32_t outputMode = linear                                     ? gpu::kOutputLinearAndClasses
                                      : scene.image.encoding == Encoding::Srgb ? gpu::kOutput8BitSrgb
                                                                               : gpu::kOutput8BitLinear;
-    const bool smallScene = gpu::isSmallScene(scene);
+    SceneLayout layout = gpu::chooseSceneLayout(scene, acceleration, context_.selected().hasSubgroupVote);
+    const std::optional<Bvh> bvh = layout == SceneLayout::StorageBvh ? std::optional(buildBvh(scene)) : std::nullopt;
+    const PackedScene packed = packFor(scene, precision, layout, bvh ? &*bvh : nullptr);
+    if (layout == SceneLayout::StorageBvh && packed.bvhNodes.empty()) {
+        layout = SceneLayout::Storage;  // no spheres, or a tree deeper than the shader's stack
+    }
+    const bool smallScene = layout == SceneLayout::Uniform;
+    const gpu::ShaderSpecialization specialization = gpu::specializationFor(scene, outputMode);
+
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
-    const vk::raii::Pipeline& computePipeline =
-        pipeline({precision, smallScene, gpu::specializationFor(scene, outputMode)});
-    const SceneBindings& sceneBindings = bindings(smallScene);
+    const vk::raii::Pipeline& computePipeline = pipeline({precision, layout, specialization});
+    const SceneBindings& sceneBindings = bindings(layout);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
 
@@ -234,7 +273,6 @@ GpuTiming GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuO
     const std::uint32_t rowsPerBand = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
     const std::size_t bandPixels = std::size_t(rowsPerBand) * width;
 
-    const PackedScene packed = packFor(scene, precision, smallScene);
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
     const vk::BufferUsageFlags sceneUsage = smallScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
     HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), sceneUsage);
@@ -245,24 +283,29 @@ GpuTiming GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuO
     HostVisibleBuffer classBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
     HostVisibleBuffer encodedBuffer(device, physicalDevice, linear ? 0 : bandPixels * sizeof(gpu::GpuEncodedPixel),
                                     storage);
+    HostVisibleBuffer bvhBuffer(device, physicalDevice, packed.bvhNodes.size(), storage);
+    HostVisibleBuffer primitiveBuffer(device, physicalDevice, packed.primitives.size(), storage);
     frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
+    bvhBuffer.upload(std::span(packed.bvhNodes));
+    primitiveBuffer.upload(std::span(packed.primitives));
 
+    const std::span<const std::uint32_t> setBindings = bindingsOf(smallScene);
     const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, std::uint32_t(kBindings.size())),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, std::uint32_t(kBindings.size()))};
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, std::uint32_t(setBindings.size())),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, std::uint32_t(setBindings.size()))};
     const vk::raii::DescriptorPool pool(
         device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
     const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
-    const std::array<const HostVisibleBuffer*, 6> buffers = {&frameBuffer, &nodeBuffer,  &lightBuffer,
-                                                             &pixelBuffer, &classBuffer, &encodedBuffer};
-    for (std::size_t i = 0; i < kBindings.size(); ++i) {
+    const std::array<const HostVisibleBuffer*, kAllBindings.size()> buffers = {
+        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer, &encodedBuffer, &bvhBuffer, &primitiveBuffer};
+    for (std::size_t i = 0; i < setBindings.size(); ++i) {
         const vk::DescriptorBufferInfo info(*buffers[i]->buffer(), 0, buffers[i]->size());
         device.updateDescriptorSets(
-            vk::WriteDescriptorSet(*set, kBindings[i], 0, descriptorType(kBindings[i], smallScene), nullptr, info),
+            vk::WriteDescriptorSet(*set, setBindings[i], 0, descriptorType(setBindings[i], smallScene), nullptr, info),
             nullptr);
     }
 
@@ -309,7 +352,8 @@ GpuTiming GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuO
         return double((ticks[1] - ticks[0]) & timestampMask_) * nanosecondsPerTick_ * 1e-6;
     };
 
-    GpuTiming timing;
+    result.usedBvh = layout == SceneLayout::StorageBvh;
+    GpuTiming& timing = result.timing;
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
     // dispatch) is not counted as render time.
@@ -322,7 +366,6 @@ GpuTiming GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuO
                      reinterpret_cast<const GpuPixelClass*>(classBuffer.data()),
                      reinterpret_cast<const gpu::GpuEncodedPixel*>(encodedBuffer.data())});
     }
-    return timing;
 }
 
 }  // namespace hexray

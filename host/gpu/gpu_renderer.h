@@ -7,7 +7,9 @@
 #include <tuple>
 #include <vector>
 
+#include "accel/bvh.h"
 #include "gpu/gpu_layout.h"
+#include "gpu/gpu_scene.h"
 #include "gpu/precision.h"
 #include "image/image.h"
 #include "image/image_io.h"
@@ -33,6 +35,7 @@ struct GpuRenderResult {
     Rgb8Image encoded;                // Encoded8
     Precision precision = Precision::F32;  // the variant that rendered (never Auto)
     GpuTiming timing;
+    bool usedBvh = false;  // the spheres were traced through a BVH
 };
 
 // Owns the pipelines for one device: one per precision variant and scene specialization,
@@ -47,8 +50,11 @@ public:
 
     // Precision::Auto picks per scene (choosePrecision). Throws VulkanError for F64 on a
     // device without shaderFloat64.
+    // Acceleration::Auto traces scenes too large for the uniform-buffer layout through a BVH
+    // when bvhPays(scene); every choice gives the same image.
     GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto,
-                           GpuOutput output = GpuOutput::LinearAndClasses);
+                           GpuOutput output = GpuOutput::LinearAndClasses,
+                           Acceleration acceleration = Acceleration::Auto);
 
     // The 8-bit image a band of rows at a time, each handed to `consume` (first row, and the
     // rows' RGB bytes) as soon as it is read back: the whole image is never in memory.
@@ -67,23 +73,26 @@ private:
         const gpu::GpuPixelClass* classes;
         const gpu::GpuEncodedPixel* encoded;
     };
-    GpuTiming renderBands(const Scene& scene, Precision precision, GpuOutput output,
-                          const std::function<void(const Band&)>& consume);
+    // Sets `result`'s timing and usedBvh.
+    void renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
+                     GpuRenderResult& result, const std::function<void(const Band&)>& consume);
 
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
     struct SceneBindings {
         vk::raii::DescriptorSetLayout setLayout;
         vk::raii::PipelineLayout pipelineLayout;
     };
-    using PipelineKey = std::tuple<Precision, bool, gpu::ShaderSpecialization>;  // bool: small scene
+    using PipelineKey = std::tuple<Precision, gpu::SceneLayout, gpu::ShaderSpecialization>;
 
-    const SceneBindings& bindings(bool smallScene) const { return smallScene ? uniformScene_ : storageScene_; }
+    const SceneBindings& bindings(gpu::SceneLayout layout) const {
+        return layout == gpu::SceneLayout::Uniform ? uniformScene_ : storageScene_;
+    }
     const vk::raii::Pipeline& pipeline(const PipelineKey& key);
 
     const VulkanContext& context_;
     std::uint64_t maxBandBytes_;
     SceneBindings uniformScene_;  // small scenes: scene data in uniform buffers
-    SceneBindings storageScene_;  // larger ones: in storage buffers
+    SceneBindings storageScene_;  // larger ones: in storage buffers, with or without a BVH
     std::map<PipelineKey, vk::raii::Pipeline> pipelines_;
     vk::raii::CommandPool commandPool_;
     vk::raii::QueryPool timestamps_;  // null when the queue cannot write timestamps

@@ -1,6 +1,8 @@
 #include "gpu/gpu_scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -80,6 +82,15 @@ bool isSmallScene(const Scene& scene) {
     return scene.nodes.size() <= kSmallSceneCapacity && scene.lights.size() <= kSmallSceneCapacity;
 }
 
+SceneLayout chooseSceneLayout(const Scene& scene, Acceleration acceleration, bool canTraverseBvh) {
+    const bool bvh = acceleration == Acceleration::Bvh ||
+                     (acceleration == Acceleration::Auto && !isSmallScene(scene) && bvhPays(scene));
+    if (bvh && canTraverseBvh) {
+        return SceneLayout::StorageBvh;
+    }
+    return isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
+}
+
 ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputMode) {
     ShaderSpecialization specialization;
     specialization.outputMode = outputMode;
@@ -125,6 +136,7 @@ GpuScene<Real> packScene(const Scene& scene, Placement placement) {
     frame.samplingOffset = float(samplingOffset(scene.image.sampling));
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
+    frame.planeCount = std::uint32_t(scene.nodes.size() - countSpheres(scene));
 
     for (const Node& node : scene.nodes) {
         packed.nodes.push_back(packNode<Real>(node, scene.shaders[node.shaderIndex], placer));
@@ -140,5 +152,87 @@ GpuScene<Real> packScene(const Scene& scene, Placement placement) {
 
 template GpuScene<float> packScene<float>(const Scene&, Placement);
 template GpuScene<double> packScene<double>(const Scene&, Placement);
+
+namespace {
+
+// Bounds for the shader's BVH. Its slab test allows for its own rounding (shaders/bvh.glsl);
+// the pad covers the other side: a ray that rounding lets hit a sphere while it passes just
+// outside. That error is a few units of roundoff of the distances involved, all below the
+// scene's extent, so a pad of 64 units of roundoff of that extent is ample.
+template <typename Real>
+class BvhBounds {
+public:
+    BvhBounds(const Bvh& bvh, const GpuScene<Real>& packed) : bvh_(bvh), packed_(packed) {
+        double extent = std::max({std::abs(packed.frame.origin.x), std::abs(packed.frame.origin.y),
+                                  std::abs(packed.frame.origin.z)});
+        for (const auto& node : packed.nodes) {
+            if (node.kinds.x == kGeometrySphere) {
+                extent = std::max(extent, maxAbs(node.geometry) + double(node.geometry.w));
+            }
+        }
+        for (const auto& light : packed.lights) {
+            extent = std::max(extent, maxAbs(light.position));
+        }
+        pad_ = 64.0 * double(std::numeric_limits<Real>::epsilon()) * extent;
+    }
+
+    // Fills `nodes` (already sized) below `index`; returns the subtree's depth.
+    std::uint32_t fill(std::uint32_t index, std::vector<GpuBvhNode<Real>>& nodes) const {
+        const BvhNode& node = bvh_.nodes[index];
+        GpuBvhNode<Real>& out = nodes[index];
+        out.firstOrSecondChild = node.firstOrSecondChild;
+        out.count = node.count;
+        if (node.isLeaf()) {
+            glm::dvec3 low(std::numeric_limits<double>::infinity());
+            glm::dvec3 high(-std::numeric_limits<double>::infinity());
+            for (std::uint32_t i = 0; i < node.count; ++i) {
+                const RealVec4<Real>& sphere = packed_.nodes[bvh_.sphereNodes[node.firstOrSecondChild + i]].geometry;
+                const glm::dvec3 centre(sphere.x, sphere.y, sphere.z);
+                low = glm::min(low, centre - (double(sphere.w) + pad_));
+                high = glm::max(high, centre + (double(sphere.w) + pad_));
+            }
+            // The pad is far above Real's rounding of the bounds.
+            out.boundsMin = glm::vec<3, Real>(low);
+            out.boundsMax = glm::vec<3, Real>(high);
+            return 1;
+        }
+        const std::uint32_t first = index + 1;
+        const std::uint32_t second = node.firstOrSecondChild;
+        const std::uint32_t depth = std::max(fill(first, nodes), fill(second, nodes));
+        out.boundsMin = glm::min(nodes[first].boundsMin, nodes[second].boundsMin);
+        out.boundsMax = glm::max(nodes[first].boundsMax, nodes[second].boundsMax);
+        return depth + 1;
+    }
+
+private:
+    static double maxAbs(const RealVec4<Real>& v) {
+        return std::max({std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
+    }
+
+    const Bvh& bvh_;
+    const GpuScene<Real>& packed_;
+    double pad_ = 0.0;
+};
+
+}  // namespace
+
+template <typename Real>
+GpuBvh<Real> packBvh(const Scene& scene, const Bvh& bvh, const GpuScene<Real>& packed) {
+    GpuBvh<Real> result;
+    for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
+        if (std::holds_alternative<Plane>(scene.nodes[i].geometry)) {
+            result.primitives.push_back(i);
+        }
+    }
+    result.primitives.insert(result.primitives.end(), bvh.sphereNodes.begin(), bvh.sphereNodes.end());
+    if (!bvh.nodes.empty()) {
+        result.nodes.resize(bvh.nodes.size());
+        result.depth = BvhBounds<Real>(bvh, packed).fill(0, result.nodes);
+    }
+    return result;
+}
+
+template GpuBvh<float> packBvh<float>(const Scene&, const Bvh&, const GpuScene<float>&);
+template GpuBvh<double> packBvh<double>(const Scene&, const Bvh&, const GpuScene<double>&);
 
 }  // namespace hexray::gpu

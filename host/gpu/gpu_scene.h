@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "accel/bvh.h"
 #include "gpu/gpu_layout.h"
 #include "scene/scene.h"
 
@@ -27,8 +28,33 @@ enum class Placement {
 template <typename Real>
 GpuScene<Real> packScene(const Scene& scene, Placement placement);
 
+// A scene's BVH as the shader walks it (see GpuBvhNode).
+template <typename Real>
+struct GpuBvh {
+    std::vector<GpuBvhNode<Real>> nodes;
+    // Scene node indices: every plane (frame.planeCount of them, in scene order), then the
+    // spheres in leaf order.
+    std::vector<std::uint32_t> primitives;
+    std::uint32_t depth = 0;  // nodes on the longest root-to-leaf path
+};
+
+// `bvh`'s bounds recomputed from the packed spheres, in their placement and precision.
+template <typename Real>
+GpuBvh<Real> packBvh(const Scene& scene, const Bvh& bvh, const GpuScene<Real>& packed);
+
 // Whether the scene fits the uniform-buffer layout (see kSmallSceneCapacity).
 bool isSmallScene(const Scene& scene);
+
+// How the scene reaches the shader, each a variant of render.comp.
+enum class SceneLayout {
+    Uniform,     // small scenes: uniform buffers, loops the compiler unrolls
+    Storage,     // storage buffers, every node for every ray
+    StorageBvh,  // storage buffers and a BVH over the spheres (needs subgroup vote and ballot)
+};
+
+// Acceleration::Auto takes the BVH for scenes too large for the uniform layout when
+// bvhPays(scene).
+SceneLayout chooseSceneLayout(const Scene& scene, Acceleration acceleration, bool canTraverseBvh);
 
 // The pipeline's specialization for this scene (see gpu_layout.h).
 ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputMode);

@@ -248,8 +248,8 @@ TEST(Bvh, ExactTiesGoToTheEarlierNode) {
 
 TEST(Bvh, RenderIsBitIdenticalWithAndWithout) {
     const Scene scene = makeRandomSpheresScene(200, 42);
-    const CpuRender plain = renderOnCpu(scene, 0, CpuAcceleration::None);
-    const CpuRender accelerated = renderOnCpu(scene, 0, CpuAcceleration::Bvh);
+    const CpuRender plain = renderOnCpu(scene, 0, Acceleration::None);
+    const CpuRender accelerated = renderOnCpu(scene, 0, Acceleration::Bvh);
     ASSERT_EQ(plain.image.pixels.size(), accelerated.image.pixels.size());
     EXPECT_EQ(0, std::memcmp(plain.image.pixels.data(), accelerated.image.pixels.data(),
                              plain.image.pixels.size() * sizeof(glm::vec3)));
@@ -276,8 +276,8 @@ TEST(Bvh, MarginsAreBitIdenticalWhereNearMissesDecideThem) {
     }
     scene.image.width = 200;
     scene.image.height = 120;
-    const CpuRender plain = renderOnCpu(scene, 0, CpuAcceleration::None);
-    const CpuRender accelerated = renderOnCpu(scene, 0, CpuAcceleration::Bvh);
+    const CpuRender plain = renderOnCpu(scene, 0, Acceleration::None);
+    const CpuRender accelerated = renderOnCpu(scene, 0, Acceleration::Bvh);
     EXPECT_EQ(plain.classes, accelerated.classes);
     ASSERT_EQ(plain.margins.size(), accelerated.margins.size());
     std::size_t different = 0;

@@ -1,0 +1,31 @@
+// What a ray meets: every node in turn, or the spheres through the BVH in the HEXRAY_BVH variant.
+
+Hit findNearestHit(Ray ray) {
+#ifdef HEXRAY_BVH
+    return findNearestHitInBvh(ray);
+#else
+    Hit hit = Hit(NO_HIT, NO_NODE);
+    for (uint i = 0u; i < nodeCount(); ++i) {
+        real t = cameraRayDistance(ray, i);
+        // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
+        if (t < hit.t) {
+            hit = Hit(t, i);
+        }
+    }
+    return hit;
+#endif
+}
+
+// Whether anything lies strictly between the ray's origin and `target`, `distance` away.
+bool isOccluded(Ray ray, vec3r target, real distance) {
+#ifdef HEXRAY_BVH
+    return isOccludedInBvh(ray, target, distance);
+#else
+    for (uint i = 0u; i < nodeCount(); ++i) {
+        if (blocksSegment(ray, i, target, distance)) {
+            return true;
+        }
+    }
+    return false;
+#endif
+}
