@@ -20,8 +20,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFl
                                                    VkDebugUtilsMessageTypeFlagsEXT,
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                    void* userData) {
-    auto* log = static_cast<ValidationLog*>(userData);
-    ++log->messageCount;
+    static_cast<ValidationLog*>(userData)->record(data->pMessageIdName);
     const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
     std::fprintf(stderr, "hexray: Vulkan validation %s: %s\n", level, data->pMessage);
     return VK_FALSE;
@@ -46,8 +45,13 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, ValidationLo
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
     vk::InstanceCreateInfo info({}, &application);
-    const vk::DebugUtilsMessengerCreateInfoEXT creationMessenger =
+    // Also report problems during instance creation.
+    vk::DebugUtilsMessengerCreateInfoEXT creationMessenger =
         validation ? messengerInfo(validation) : vk::DebugUtilsMessengerCreateInfoEXT();
+    // Synchronization validation is off by default in the layer: missing barriers between the
+    // dispatch and the host's reads would otherwise pass unnoticed.
+    const vk::ValidationFeatureEnableEXT enables[] = {vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
+    const vk::ValidationFeaturesEXT synchronization(enables, {}, &creationMessenger);
     if (validation) {
         if (!hasLayer(context, kValidationLayer)) {
             throw VulkanError(std::string("validation was requested but ") + kValidationLayer +
@@ -55,7 +59,8 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, ValidationLo
         }
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        info.pNext = &creationMessenger;  // also report problems during instance creation
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);  // provided by the layer
+        info.pNext = &synchronization;
     }
     info.setPEnabledLayerNames(layers);
     info.setPEnabledExtensionNames(extensions);

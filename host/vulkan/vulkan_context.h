@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,12 +33,30 @@ struct DeviceInfo {
 // the caller and outliving the context, so messages from the context's own teardown count too.
 struct ValidationLog {
     std::atomic<std::uint32_t> messageCount{0};
+
+    // The message ids seen ("SYNC-HAZARD-WRITE-AFTER-WRITE", "VUID-..."), so a test can tell
+    // which check spoke.
+    std::vector<std::string> messageIds() const {
+        const std::lock_guard lock(mutex);
+        return ids;
+    }
+    void record(const char* id) {
+        const std::lock_guard lock(mutex);
+        ids.emplace_back(id ? id : "");
+        ++messageCount;
+    }
+
+private:
+    mutable std::mutex mutex;
+    std::vector<std::string> ids;
 };
 
 class VulkanContext {
 public:
     struct Options {
-        ValidationLog* validation = nullptr;  // non-null: enable VK_LAYER_KHRONOS_validation, count into it
+        // Non-null: enable VK_LAYER_KHRONOS_validation, with synchronization validation, and
+        // count its messages into this log.
+        ValidationLog* validation = nullptr;
         std::string deviceSelector;  // index or part of a name; empty = best available
     };
 
