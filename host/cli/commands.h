@@ -15,10 +15,12 @@ enum ExitCode : int {
     kSuccess = 0,
     kToleranceExceeded = 1,  // compare: the renders disagree by more than allowed
     kBadInput = 2,           // scene file or command line
-    kVulkanUnavailable = 3,  // no driver or device, or a Vulkan call failed
+    kVulkanUnavailable = 3,  // no driver or device, no compute queue, no float64 for f64, a failed call
     kValidationFailed = 4,   // --validate and the validation layer reported something
     kOutputFailed = 5,       // the image (or CSV) could not be written
     kInternalError = 6,      // anything else: out of memory, a thread that could not start
+    kDeviceLost = 7,         // the Vulkan device was lost, or hung, during the render
+    kOutOfDeviceMemory = 8,  // the Vulkan driver ran out of device (or host) memory
 };
 
 enum class Backend { Gpu, Cpu };

@@ -12,8 +12,10 @@ using namespace hexray::cli;
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line);\n"
-    "3 Vulkan unavailable or failed; 4 --validate and the validation layer reported messages;\n"
-    "5 the output image could not be written; 6 any other failure (e.g. out of memory).";
+    "3 Vulkan unavailable or failed (no driver or device, no compute queue, no float64 for --precision f64);\n"
+    "4 --validate and the validation layer reported messages; 5 the output image could not be written;\n"
+    "6 any other failure (e.g. out of memory); 7 the Vulkan device was lost or hung during the render;\n"
+    "8 the Vulkan driver ran out of device (or host) memory.";
 
 void addImageOptions(CLI::App& command, ImageOverride& image) {
     command.add_option("--width", image.width, "Override the scene's image width (pixels)");
