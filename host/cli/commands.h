@@ -23,7 +23,8 @@ enum ExitCode : int {
     kOutOfDeviceMemory = 8,  // the Vulkan driver ran out of device (or host) memory
 };
 
-enum class Backend { Gpu, Cpu };
+// Auto: the GPU, or the CPU reference (with a note) when the GPU path cannot render.
+enum class Backend { Auto, Gpu, Cpu };
 
 // Command-line replacements for the scene file's image settings.
 struct ImageOverride {
@@ -41,7 +42,7 @@ struct RenderOptions {
     std::string scenePath;
     ImageOverride image;
     VulkanOptions vulkan;
-    Backend backend = Backend::Gpu;
+    Backend backend = Backend::Auto;
     Precision precision = Precision::Auto;
     std::string outputPath;  // empty: <scene name>.png in the current directory
     unsigned threads = 0;    // CPU backend; 0 = all cores
