@@ -19,11 +19,17 @@ constexpr const char* kNoDeviceAdvice =
     "lavapipe, a CPU implementation) or render with --backend cpu";
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   VkDebugUtilsMessageTypeFlagsEXT types,
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                    void* userData) {
-    static_cast<ValidationLog*>(userData)->record(data->pMessageIdName);
     const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+    // General messages come from the loader ("Found no drivers!" when there is none): that
+    // fault has its own message and exit code, so they are shown but do not fail validation.
+    if (types == VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT) {
+        std::fprintf(stderr, "hexray: Vulkan loader %s: %s\n", level, data->pMessage);
+        return VK_FALSE;
+    }
+    static_cast<ValidationLog*>(userData)->record(data->pMessageIdName);
     std::fprintf(stderr, "hexray: Vulkan validation %s: %s\n", level, data->pMessage);
     return VK_FALSE;
 }
