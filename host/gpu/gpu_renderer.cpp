@@ -125,9 +125,9 @@ std::uint32_t groupsFor(std::uint32_t count) {
 // How long one dispatch of `samples` rays may take before the device counts as hung. A real
 // GPU's driver has its own watchdog (a hung GPU is reset and reported as device lost); this is
 // the backstop for a driver that never signals, so it must exceed any honest dispatch on the
-// slowest device, lavapipe on one busy core: 60 s plus 1 µs per sample per (nodes + 1) x
-// (lights + 1), some 100 times what lavapipe takes, and proportional so huge or heavily
-// sampled images are not cut off.
+// slowest device, lavapipe on a busy machine: 60 s plus 1 µs per sample per (nodes + 1) x
+// (lights + 1), some 80 times what lavapipe took on 2 loaded cores (about 12 ns), and
+// proportional so huge or heavily sampled images are not cut off.
 std::chrono::nanoseconds dispatchTimeout(const Scene& scene, std::uint64_t samples) {
     const double seconds =
         60.0 + 1e-6 * double(samples) * double(scene.nodes.size() + 1) * double(scene.lights.size() + 1);
