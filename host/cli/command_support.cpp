@@ -14,6 +14,14 @@ void printError(const std::string& message) {
     std::fprintf(stderr, "hexray: error: %s\n", message.c_str());
 }
 
+int exitCodeFor(VulkanFailure failure) {
+    switch (failure) {
+        case VulkanFailure::DeviceLost: return kDeviceLost;
+        case VulkanFailure::OutOfMemory: return kOutOfDeviceMemory;
+        default: return kVulkanUnavailable;
+    }
+}
+
 int guarded(const std::function<int()>& command) {
     try {
         return command();
@@ -22,10 +30,11 @@ int guarded(const std::function<int()>& command) {
         return kBadInput;
     } catch (const VulkanError& error) {
         printError(error.what());
-        return kVulkanUnavailable;
+        return exitCodeFor(error.failure());
     } catch (const vk::SystemError& error) {
-        printError(std::string("Vulkan call failed: ") + error.what());
-        return kVulkanUnavailable;
+        const VulkanError classified = classify(error, "rendering");
+        printError(classified.what());
+        return exitCodeFor(classified.failure());
     } catch (const ImageIoError& error) {
         printError(error.what());
         return kOutputFailed;

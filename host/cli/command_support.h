@@ -14,6 +14,9 @@ namespace hexray::cli {
 
 void printError(const std::string& message);
 
+// The exit code for a Vulkan failure of this kind.
+int exitCodeFor(VulkanFailure failure);
+
 // Runs a command, turning each kind of failure into its message and exit code.
 int guarded(const std::function<int()>& command);
 

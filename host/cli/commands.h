@@ -15,13 +15,16 @@ enum ExitCode : int {
     kSuccess = 0,
     kToleranceExceeded = 1,  // compare: the renders disagree by more than allowed
     kBadInput = 2,           // scene file or command line
-    kVulkanUnavailable = 3,  // no driver or device, or a Vulkan call failed
+    kVulkanUnavailable = 3,  // no driver or device, no compute queue, no float64 for f64, a failed call
     kValidationFailed = 4,   // --validate and the validation layer reported something
     kOutputFailed = 5,       // the image (or CSV) could not be written
     kInternalError = 6,      // anything else: out of memory, a thread that could not start
+    kDeviceLost = 7,         // the Vulkan device was lost, or hung, during the render
+    kOutOfDeviceMemory = 8,  // the Vulkan driver ran out of device (or host) memory
 };
 
-enum class Backend { Gpu, Cpu };
+// Auto: the GPU, or the CPU reference (with a note) when the GPU path cannot render.
+enum class Backend { Auto, Gpu, Cpu };
 
 // Command-line replacements for the scene file's image settings.
 struct ImageOverride {
@@ -39,7 +42,7 @@ struct RenderOptions {
     std::string scenePath;
     ImageOverride image;
     VulkanOptions vulkan;
-    Backend backend = Backend::Gpu;
+    Backend backend = Backend::Auto;
     Precision precision = Precision::Auto;
     std::string outputPath;  // empty: <scene name>.png in the current directory
     unsigned threads = 0;    // CPU backend; 0 = all cores

@@ -12,8 +12,12 @@ using namespace hexray::cli;
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line);\n"
-    "3 Vulkan unavailable or failed; 4 --validate and the validation layer reported messages;\n"
-    "5 the output image could not be written; 6 any other failure (e.g. out of memory).";
+    "3 Vulkan unavailable or failed (no driver or device, no compute queue, no float64 for --precision f64);\n"
+    "4 --validate and the validation layer reported messages; 5 the output image could not be written;\n"
+    "6 any other failure (e.g. out of memory); 7 the Vulkan device was lost or hung during the render;\n"
+    "8 the Vulkan driver ran out of device (or host) memory.\n"
+    "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except an\n"
+    "unknown --device or a missing validation layer), 7 or 8.";
 
 void addImageOptions(CLI::App& command, ImageOverride& image) {
     command.add_option("--width", image.width, "Override the scene's image width (pixels)");
@@ -51,14 +55,16 @@ int main(int argc, char** argv) {
                  "(exit code 4)");
 
     RenderOptions render;
-    std::string renderBackend = "gpu";
+    std::string renderBackend = "auto";
     std::string renderPrecision = "auto";
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON), see README.md")->required();
     renderCommand->add_option("-o,--output", render.outputPath, "Output PNG (default: <scene name>.png here)");
     renderCommand
-        ->add_option("--backend", renderBackend, "gpu: the Vulkan compute shader; cpu: the double-precision reference")
-        ->check(CLI::IsMember({"gpu", "cpu"}))
+        ->add_option("--backend", renderBackend,
+                     "gpu: the Vulkan compute shader; cpu: the double-precision reference; auto: the GPU, or the "
+                     "CPU reference (with a note on stderr) when the GPU path cannot render")
+        ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
         ->capture_default_str();
     addPrecisionOption(*renderCommand, renderPrecision);
     addImageOptions(*renderCommand, render.image);
@@ -135,7 +141,7 @@ int main(int argc, char** argv) {
 
     if (renderCommand->parsed()) {
         render.vulkan.validate = validate;
-        render.backend = renderBackend == "cpu" ? Backend::Cpu : Backend::Gpu;
+        render.backend = renderBackend == "cpu" ? Backend::Cpu : renderBackend == "gpu" ? Backend::Gpu : Backend::Auto;
         render.precision = *parsePrecision(renderPrecision);
         return runRender(render);
     }

@@ -1,7 +1,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <span>
+#include <string>
 
 #include <unistd.h>
 
@@ -42,6 +44,46 @@ private:
     bool started_ = false;
 };
 
+// Renders on the GPU, band by band into `writer`; returns how, for the summary line.
+std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer) {
+    const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
+    GpuRenderer renderer(context);
+    Progress progress(scene.image.height);
+    // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
+    // sits whole in memory.
+    const GpuRenderResult result = renderer.renderEncodedRows(
+        scene, options.precision, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
+            writer.writeRows(rgbRows);
+            progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
+        });
+    char how[512];
+    std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s, first dispatch %.1f ms incl. shader compile",
+                  std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
+                  result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
+                  result.timing.firstDispatchMilliseconds);
+    return how;
+}
+
+std::string renderWithCpuReference(const RenderOptions& options, const Scene& scene, PngRowWriter& writer) {
+    const unsigned threads = cpuThreadCount(options.threads);
+    const auto start = std::chrono::steady_clock::now();
+    const Rgb8Image image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
+    char how[128];
+    std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads, millisecondsSince(start));
+    writer.writeRows(image.bytes);
+    return how;
+}
+
+// With --backend auto, a GPU path that cannot render (anything but a wrong request, such as an
+// unknown --device) hands over to the CPU reference; with --backend gpu the failure stands.
+bool fallsBack(const RenderOptions& options, const VulkanError& error) {
+    if (options.backend != Backend::Auto || error.failure() == VulkanFailure::Request) {
+        return false;
+    }
+    std::fprintf(stderr, "hexray: note: %s; rendering on the CPU reference instead\n", error.reason().c_str());
+    return true;
+}
+
 }  // namespace
 
 int runRender(const RenderOptions& options) {
@@ -51,33 +93,29 @@ int runRender(const RenderOptions& options) {
         const std::string output = options.outputPath.empty() ? defaultOutputPath(options.scenePath) : options.outputPath;
         // Opened first, so a bad output path fails before any rendering; renamed into place
         // only once every row is in.
-        PngRowWriter writer(output, scene.image.width, scene.image.height);
-        char how[512];
-        if (options.backend == Backend::Gpu) {
-            const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
-            GpuRenderer renderer(context);
-            Progress progress(scene.image.height);
-            // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image
-            // never sits whole in memory.
-            const GpuRenderResult result = renderer.renderEncodedRows(
-                scene, options.precision, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
-                    writer.writeRows(rgbRows);
-                    progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
-                });
-            std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s, first dispatch %.1f ms incl. shader compile",
-                          std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
-                          result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
-                          result.timing.firstDispatchMilliseconds);
-        } else {
-            const unsigned threads = cpuThreadCount(options.threads);
-            const auto start = std::chrono::steady_clock::now();
-            const Rgb8Image image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
-            std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads,
-                          millisecondsSince(start));
-            writer.writeRows(image.bytes);
+        std::optional<PngRowWriter> writer(std::in_place, output, scene.image.width, scene.image.height);
+        std::string how;
+        if (options.backend != Backend::Cpu) {
+            bool fallBack = false;
+            try {
+                how = renderOnGpu(options, scene, log, *writer);
+            } catch (const VulkanError& error) {
+                if (!fallsBack(options, error)) throw;
+                fallBack = true;
+            } catch (const vk::SystemError& error) {
+                if (!fallsBack(options, classify(error, "rendering"))) throw;
+                fallBack = true;
+            }
+            if (fallBack) {
+                writer.reset();  // drops the GPU's partial rows with their temporary file
+                writer.emplace(output, scene.image.width, scene.image.height);
+            }
         }
-        writer.finish();
-        std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how);
+        if (how.empty()) {
+            how = renderWithCpuReference(options, scene, *writer);
+        }
+        writer->finish();
+        std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how.c_str());
         return int(kSuccess);
     });
     return withValidationVerdict(code, log);

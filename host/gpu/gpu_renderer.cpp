@@ -152,6 +152,18 @@ std::uint32_t groupsFor(std::uint32_t count) {
     return (count + kWorkgroupSize - 1) / kWorkgroupSize;
 }
 
+// How long one dispatch of `samples` rays may take before the device counts as hung. A real
+// GPU's driver has its own watchdog (a hung GPU is reset and reported as device lost); this is
+// the backstop for a driver that never signals, so it must exceed any honest dispatch on the
+// slowest device, lavapipe on a busy machine: 60 s plus 1 µs per sample per (nodes + 1) x
+// (lights + 1), some 80 times what lavapipe took on 2 loaded cores (about 12 ns), and
+// proportional so huge or heavily sampled images are not cut off.
+std::chrono::nanoseconds dispatchTimeout(const Scene& scene, std::uint64_t samples) {
+    const double seconds =
+        60.0 + 1e-6 * double(samples) * double(scene.nodes.size() + 1) * double(scene.lights.size() + 1);
+    return std::chrono::nanoseconds(std::int64_t(std::min(seconds, 30.0 * 86400.0) * 1e9));
+}
+
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -183,8 +195,9 @@ Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
         return choosePrecision(scene, hasFloat64);
     }
     if (requested == Precision::F64 && !hasFloat64) {
-        throw VulkanError("--precision f64 needs shaderFloat64, which " + context_.selected().name +
-                          " does not have; use --precision f32");
+        throw VulkanError(VulkanFailure::NoFloat64,
+                          "--precision f64 needs shaderFloat64, which " + context_.selected().name + " does not have",
+                          "use --precision f32");
     }
     return requested;
 }
@@ -337,10 +350,9 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
         commands.end();
 
         const auto start = std::chrono::steady_clock::now();
-        context_.queue().submit(vk::SubmitInfo({}, {}, *commands), *done);
-        if (device.waitForFences(*done, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess) {
-            throw VulkanError("waiting for the render to finish failed");
-        }
+        const std::uint64_t samples = std::uint64_t(groupsX) * groupsY * kWorkgroupSize * kWorkgroupSize *
+                                      scene.image.samplesPerPixel;
+        context_.submitAndWait(commands, done, dispatchTimeout(scene, samples));  // throws VulkanError
         device.resetFences(*done);
         const double wallMilliseconds = millisecondsSince(start);
         if (!useTimestamps) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "vulkan/fault_injection.h"
 #include "vulkan/vulkan_context.h"
 
 namespace hexray {
@@ -25,7 +26,8 @@ std::uint32_t hostMemoryType(const vk::raii::PhysicalDevice& physicalDevice, std
         }
     }
     if (!found) {
-        throw VulkanError("the Vulkan device has no host-visible, coherent memory for hexray's buffers");
+        throw VulkanError(VulkanFailure::Unavailable,
+                          "the Vulkan device has no host-visible, coherent memory for hexray's buffers");
     }
     return *found;
 }
@@ -36,12 +38,24 @@ HostVisibleBuffer::HostVisibleBuffer(const vk::raii::Device& device, const vk::r
                                      vk::DeviceSize size, vk::BufferUsageFlags usage)
     : size_(std::max<vk::DeviceSize>(size, 16)),
       memory_(nullptr),
-      buffer_(device, vk::BufferCreateInfo({}, size_, usage, vk::SharingMode::eExclusive)) {
-    const vk::MemoryRequirements requirements = buffer_.getMemoryRequirements();
-    memory_ = vk::raii::DeviceMemory(
-        device, vk::MemoryAllocateInfo(requirements.size, hostMemoryType(physicalDevice, requirements.memoryTypeBits)));
-    buffer_.bindMemory(*memory_, 0);
-    mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, size_));
+      buffer_(nullptr) {
+    try {
+        buffer_ = vk::raii::Buffer(device, vk::BufferCreateInfo({}, size_, usage, vk::SharingMode::eExclusive));
+        const vk::MemoryRequirements requirements = buffer_.getMemoryRequirements();
+        const vk::MemoryAllocateInfo allocation(requirements.size,
+                                                hostMemoryType(physicalDevice, requirements.memoryTypeBits));
+        if (injected(InjectedFault::OutOfDeviceMemory)) {
+            throw vk::OutOfDeviceMemoryError("vkAllocateMemory");
+        }
+        memory_ = vk::raii::DeviceMemory(device, allocation);
+        buffer_.bindMemory(*memory_, 0);
+        mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, size_));
+    } catch (const vk::SystemError& error) {
+        const bool large = size_ >= (1u << 20);
+        const std::string amount = large ? std::to_string((size_ + (1u << 20) - 1) >> 20) + " MiB"
+                                         : std::to_string((size_ + 1023) >> 10) + " KiB";
+        throw classify(error, "allocating a " + amount + " buffer");
+    }
 }
 
 }  // namespace hexray

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string_view>
 
+#include "vulkan/fault_injection.h"
+
 namespace hexray {
 namespace {
 
@@ -17,12 +19,17 @@ constexpr const char* kNoDeviceAdvice =
     "lavapipe, a CPU implementation) or render with --backend cpu";
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   VkDebugUtilsMessageTypeFlagsEXT types,
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                    void* userData) {
-    auto* log = static_cast<ValidationLog*>(userData);
-    ++log->messageCount;
     const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+    // General messages come from the loader ("Found no drivers!" when there is none): that
+    // fault has its own message and exit code, so they are shown but do not fail validation.
+    if (types == VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT) {
+        std::fprintf(stderr, "hexray: Vulkan loader %s: %s\n", level, data->pMessage);
+        return VK_FALSE;
+    }
+    static_cast<ValidationLog*>(userData)->record(data->pMessageIdName);
     std::fprintf(stderr, "hexray: Vulkan validation %s: %s\n", level, data->pMessage);
     return VK_FALSE;
 }
@@ -46,25 +53,32 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, ValidationLo
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
     vk::InstanceCreateInfo info({}, &application);
-    const vk::DebugUtilsMessengerCreateInfoEXT creationMessenger =
+    // Also report problems during instance creation.
+    vk::DebugUtilsMessengerCreateInfoEXT creationMessenger =
         validation ? messengerInfo(validation) : vk::DebugUtilsMessengerCreateInfoEXT();
+    // Synchronization validation is off by default in the layer: missing barriers between the
+    // dispatch and the host's reads would otherwise pass unnoticed.
+    const vk::ValidationFeatureEnableEXT enables[] = {vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
+    const vk::ValidationFeaturesEXT synchronization(enables, {}, &creationMessenger);
     if (validation) {
         if (!hasLayer(context, kValidationLayer)) {
-            throw VulkanError(std::string("validation was requested but ") + kValidationLayer +
-                              " is not installed (on Debian: apt-get install vulkan-validationlayers)");
+            throw VulkanError(VulkanFailure::Request,
+                              std::string("validation was requested but ") + kValidationLayer + " is not installed",
+                              "on Debian: apt-get install vulkan-validationlayers");
         }
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        info.pNext = &creationMessenger;  // also report problems during instance creation
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);  // provided by the layer
+        info.pNext = &synchronization;
     }
     info.setPEnabledLayerNames(layers);
     info.setPEnabledExtensionNames(extensions);
     try {
         return vk::raii::Instance(context, info);
     } catch (const vk::IncompatibleDriverError&) {
-        throw VulkanError(std::string("no Vulkan driver found: ") + kNoDeviceAdvice);
+        throw VulkanError(VulkanFailure::Unavailable, "no Vulkan driver found", kNoDeviceAdvice);
     } catch (const vk::SystemError& error) {
-        throw VulkanError(std::string("cannot create a Vulkan instance: ") + error.what());
+        throw classify(error, "creating a Vulkan instance");
     }
 }
 
@@ -82,7 +96,7 @@ int preference(vk::PhysicalDeviceType type) {
 std::optional<std::uint32_t> computeQueueFamily(const vk::raii::PhysicalDevice& device) {
     const auto families = device.getQueueFamilyProperties();
     for (std::uint32_t i = 0; i < families.size(); ++i) {
-        if (families[i].queueFlags & vk::QueueFlagBits::eCompute) {
+        if (families[i].queueFlags & vk::QueueFlagBits::eCompute && !injected(InjectedFault::NoComputeQueue)) {
             return i;
         }
     }
@@ -104,7 +118,7 @@ DeviceInfo describe(const vk::raii::PhysicalDevice& device, std::uint32_t index)
         info.driver = std::string(driver.driverName.data()) + " " + driver.driverInfo.data();
     }
     info.hasComputeQueue = computeQueueFamily(device).has_value();
-    info.hasFloat64 = device.getFeatures().shaderFloat64 == VK_TRUE;
+    info.hasFloat64 = device.getFeatures().shaderFloat64 == VK_TRUE && !injected(InjectedFault::NoFloat64);
     const auto subgroupChain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>();
     const auto& subgroup = subgroupChain.get<vk::PhysicalDeviceSubgroupProperties>();
     const vk::SubgroupFeatureFlags needed = vk::SubgroupFeatureFlagBits::eBasic | vk::SubgroupFeatureFlagBits::eVote |
@@ -138,7 +152,7 @@ std::vector<DeviceInfo> describeAll(const vk::raii::PhysicalDevices& physicalDev
 // Picks by index or by case-insensitive part of the name; with no selector, the most capable.
 std::uint32_t selectDevice(const std::vector<DeviceInfo>& devices, const std::string& selector) {
     if (devices.empty()) {
-        throw VulkanError(std::string("no Vulkan device found: ") + kNoDeviceAdvice);
+        throw VulkanError(VulkanFailure::Unavailable, "no Vulkan device found", kNoDeviceAdvice);
     }
     if (selector.empty()) {
         std::optional<std::uint32_t> best;
@@ -148,7 +162,9 @@ std::uint32_t selectDevice(const std::vector<DeviceInfo>& devices, const std::st
             }
         }
         if (!best) {
-            throw VulkanError("no Vulkan device has a compute queue (devices: " + listForMessage(devices) + ")");
+            throw VulkanError(VulkanFailure::NoComputeQueue,
+                              "no Vulkan device has a compute queue (devices: " + listForMessage(devices) + ")",
+                              "render with --backend cpu");
         }
         return *best;
     }
@@ -158,15 +174,34 @@ std::uint32_t selectDevice(const std::vector<DeviceInfo>& devices, const std::st
                                      : lowercase(device.name).find(lowercase(selector)) != std::string::npos;
         if (matches) {
             if (!device.hasComputeQueue) {
-                throw VulkanError("device " + std::to_string(device.index) + " (" + device.name + ") has no compute queue");
+                throw VulkanError(VulkanFailure::NoComputeQueue, "device " + std::to_string(device.index) + " (" +
+                                                                     device.name + ") has no compute queue");
             }
             return device.index;
         }
     }
-    throw VulkanError("no Vulkan device matches --device " + selector + " (devices: " + listForMessage(devices) + ")");
+    throw VulkanError(VulkanFailure::Request,
+                      "no Vulkan device matches --device " + selector + " (devices: " + listForMessage(devices) + ")");
 }
 
 }  // namespace
+
+VulkanError classify(const vk::SystemError& error, const std::string& during) {
+    const std::string what = error.code().message();  // e.g. "ErrorDeviceLost"
+    switch (vk::Result(error.code().value())) {
+        case vk::Result::eErrorDeviceLost:
+            return VulkanError(VulkanFailure::DeviceLost, "the Vulkan device was lost while " + during +
+                                                              " (" + what + ": a driver crash or a GPU reset)");
+        case vk::Result::eErrorOutOfDeviceMemory:
+        case vk::Result::eErrorOutOfHostMemory:
+            return VulkanError(VulkanFailure::OutOfMemory, "out of memory while " + during + " (" + what + ")",
+                               "try a smaller image (--width/--height) or --backend cpu");
+        case vk::Result::eErrorIncompatibleDriver:
+            return VulkanError(VulkanFailure::Unavailable, "no Vulkan driver found", kNoDeviceAdvice);
+        default:
+            return VulkanError(VulkanFailure::Unavailable, "Vulkan failed while " + during + ": " + error.what());
+    }
+}
 
 std::string deviceTypeName(vk::PhysicalDeviceType type) {
     switch (type) {
@@ -201,9 +236,43 @@ VulkanContext::VulkanContext(const Options& options)
     try {
         device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo, {}, {}, &features));
     } catch (const vk::SystemError& error) {
-        throw VulkanError("cannot create a Vulkan device on " + selected_.name + ": " + error.what());
+        throw classify(error, "creating a Vulkan device on " + selected_.name);
     }
     queue_ = vk::raii::Queue(device_, queueFamily_, 0);
+}
+
+VulkanContext::~VulkanContext() {
+    if (abandoned_) {
+        // Destroying a device with work still pending would block on it, or worse.
+        queue_.release();
+        device_.release();
+        messenger_.release();
+        instance_.release();
+    }
+}
+
+void VulkanContext::submitAndWait(const vk::raii::CommandBuffer& commands, const vk::raii::Fence& fence,
+                                  std::chrono::nanoseconds timeout) const {
+    vk::Result result;
+    try {
+        queue_.submit(vk::SubmitInfo({}, {}, *commands), *fence);
+        result = device_.waitForFences(*fence, VK_TRUE, std::uint64_t(timeout.count()));
+        if (injected(InjectedFault::DeviceLost)) {
+            throw vk::DeviceLostError("vkWaitForFences");
+        }
+        if (injected(InjectedFault::DeviceHang)) {
+            result = vk::Result::eTimeout;
+        }
+    } catch (const vk::SystemError& error) {
+        throw classify(error, "rendering on " + selected_.name);
+    }
+    if (result == vk::Result::eTimeout) {
+        abandoned_ = true;
+        const auto seconds = std::chrono::duration_cast<std::chrono::seconds>(timeout).count();
+        throw VulkanError(VulkanFailure::DeviceLost,
+                          "the Vulkan device timed out: a render did not finish within " + std::to_string(seconds) +
+                              " s on " + selected_.name + ", which is treated as hung");
+    }
 }
 
 std::vector<DeviceInfo> VulkanContext::devices() const {

@@ -3,7 +3,9 @@
 // Headless and compute-only: no surface, no window-system extension.
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,11 +14,34 @@
 
 namespace hexray {
 
+// Why the GPU path cannot render. Decides the exit code and whether `render --backend auto`
+// may fall back to the CPU reference (every kind but Request).
+enum class VulkanFailure {
+    Unavailable,     // no driver or no device, or the instance or device could not be created
+    NoComputeQueue,  // no device (or not the one named) has a compute queue
+    NoFloat64,       // float64 was asked for and the device lacks shaderFloat64
+    DeviceLost,      // lost during the render, or did not finish in time (hung)
+    OutOfMemory,     // the driver reported out of device or host memory
+    Request,         // what was asked is wrong: an unknown --device, a missing validation layer
+};
+
 // Vulkan cannot be used: no driver, no suitable device, or a call failed.
 class VulkanError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    // `advice` (what the user can do) is appended to what(), but not to reason().
+    VulkanError(VulkanFailure failure, const std::string& reason, const std::string& advice = "")
+        : std::runtime_error(advice.empty() ? reason : reason + ": " + advice), failure_(failure), reason_(reason) {}
+
+    VulkanFailure failure() const { return failure_; }
+    const std::string& reason() const { return reason_; }
+
+private:
+    VulkanFailure failure_;
+    std::string reason_;
 };
+
+// A raw vulkan.hpp exception as a VulkanError of the right kind; `during` names the operation.
+VulkanError classify(const vk::SystemError& error, const std::string& during);
 
 struct DeviceInfo {
     std::uint32_t index = 0;  // as enumerated by the loader
@@ -34,16 +59,43 @@ struct DeviceInfo {
 // the caller and outliving the context, so messages from the context's own teardown count too.
 struct ValidationLog {
     std::atomic<std::uint32_t> messageCount{0};
+
+    // The message ids seen ("SYNC-HAZARD-WRITE-AFTER-WRITE", "VUID-..."), so a test can tell
+    // which check spoke.
+    std::vector<std::string> messageIds() const {
+        const std::lock_guard lock(mutex);
+        return ids;
+    }
+    void record(const char* id) {
+        const std::lock_guard lock(mutex);
+        ids.emplace_back(id ? id : "");
+        ++messageCount;
+    }
+
+private:
+    mutable std::mutex mutex;
+    std::vector<std::string> ids;
 };
 
 class VulkanContext {
 public:
     struct Options {
-        ValidationLog* validation = nullptr;  // non-null: enable VK_LAYER_KHRONOS_validation, count into it
+        // Non-null: enable VK_LAYER_KHRONOS_validation, with synchronization validation, and
+        // count its messages into this log.
+        ValidationLog* validation = nullptr;
         std::string deviceSelector;  // index or part of a name; empty = best available
     };
 
     explicit VulkanContext(const Options& options);
+    ~VulkanContext();
+    VulkanContext(const VulkanContext&) = delete;
+    VulkanContext& operator=(const VulkanContext&) = delete;
+
+    // Submits `commands` and waits for `fence` at most `timeout`. Throws VulkanError:
+    // DeviceLost when the device is lost, or when it does not finish in time, in which case
+    // the device is abandoned (never destroyed: vkDestroyDevice would wait for the hung work).
+    void submitAndWait(const vk::raii::CommandBuffer& commands, const vk::raii::Fence& fence,
+                       std::chrono::nanoseconds timeout) const;
 
     // All devices the loader reports, in its order.
     std::vector<DeviceInfo> devices() const;
@@ -65,6 +117,7 @@ private:
     std::uint32_t queueFamily_ = 0;
     vk::raii::Device device_;
     vk::raii::Queue queue_;
+    mutable bool abandoned_ = false;  // the device hung: leak it and the instance at teardown
 };
 
 // "discrete GPU", "integrated GPU", "virtual GPU", "CPU" or "other".

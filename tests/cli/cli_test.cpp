@@ -6,80 +6,22 @@
 #include <csignal>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "cli/cli_fixture.h"
 #include "image/image_io.h"
-#include "support/test_paths.h"
 
 namespace hexray {
 namespace {
 
+using test::CliTest;
+using test::readFile;
+using test::RunResult;
 namespace fs = std::filesystem;
-
-struct RunResult {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-class CliTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "hexray-cli-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    // Runs `hexray ARGS` in the test's directory; `environment` is prefixed to the command.
-    RunResult hexray(const std::string& arguments, const std::string& environment = "") const {
-        const fs::path out = dir_ / "stdout.txt";
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" HEXRAY_EXECUTABLE "' " +
-                                    arguments + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-        const int status = std::system(command.c_str());
-        RunResult result;
-        result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        result.out = readFile(out);
-        result.err = readFile(err);
-        return result;
-    }
-
-    fs::path writeScene(const std::string& name, const std::string& text) const {
-        const fs::path path = dir_ / name;
-        std::ofstream(path) << text;
-        return path;
-    }
-
-    // Files the command created besides its captured output.
-    std::vector<std::string> createdFiles() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) {
-            const std::string name = entry.path().filename().string();
-            if (name != "stdout.txt" && name != "stderr.txt" && entry.path().extension() != ".json") {
-                names.push_back(name);
-            }
-        }
-        return names;
-    }
-
-    static std::string scene(const std::string& name) { return "'" + test::sourcePath("scenes/" + name).string() + "'"; }
-
-    fs::path dir_;
-};
 
 constexpr const char* kGoodScene = R"({
   "image": {"width": 32, "height": 24},
@@ -226,7 +168,7 @@ TEST_F(CliTest, UnknownDeviceIsAVulkanErrorThatListsTheDevices) {
 }
 
 TEST_F(CliTest, NoVulkanDriverNamesThePackageAndTheCpuBackend) {
-    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o x.png",
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o x.png --backend gpu",
                                  "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
     EXPECT_EQ(run.exitCode, 3);
     EXPECT_NE(run.err.find("mesa-vulkan-drivers"), std::string::npos) << run.err;

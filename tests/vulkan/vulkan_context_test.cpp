@@ -1,7 +1,11 @@
 // Device selection and the validation hook the GPU tests rely on.
 
+#include <algorithm>
+#include <string>
+
 #include <gtest/gtest.h>
 
+#include "vulkan/host_visible_buffer.h"
 #include "vulkan/vulkan_context.h"
 
 namespace hexray {
@@ -17,6 +21,28 @@ TEST(VulkanContext, ValidationLayerReportsMisuse) {
         const vk::raii::Buffer buffer(context.device(), invalid);
     }
     EXPECT_GT(log.messageCount.load(), 0u);
+}
+
+TEST(VulkanContext, SynchronizationValidationReportsAHazard) {
+    // The GPU tests' silence proves the renderer's barriers only if synchronization validation
+    // is on: two transfer writes to one buffer with no barrier between them must be reported.
+    ValidationLog log;
+    {
+        const VulkanContext context({&log, ""});
+        const HostVisibleBuffer buffer(context.device(), context.physicalDevice(), 256,
+                                       vk::BufferUsageFlagBits::eTransferDst);
+        const vk::raii::CommandPool pool(context.device(), vk::CommandPoolCreateInfo({}, context.queueFamily()));
+        vk::raii::CommandBuffers commands(
+            context.device(), vk::CommandBufferAllocateInfo(*pool, vk::CommandBufferLevel::ePrimary, 1));
+        commands[0].begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
+        commands[0].fillBuffer(*buffer.buffer(), 0, VK_WHOLE_SIZE, 1);
+        commands[0].fillBuffer(*buffer.buffer(), 0, VK_WHOLE_SIZE, 2);  // write after write, unsynchronized
+        commands[0].end();
+    }
+    const std::vector<std::string> ids = log.messageIds();
+    EXPECT_TRUE(std::any_of(ids.begin(), ids.end(),
+                            [](const std::string& id) { return id.starts_with("SYNC-HAZARD-WRITE-AFTER-WRITE"); }))
+        << ids.size() << " message(s), none a SYNC-HAZARD-WRITE-AFTER-WRITE";
 }
 
 TEST(VulkanContext, CleanUseIsSilent) {
