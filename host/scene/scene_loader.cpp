@@ -43,9 +43,11 @@ std::string formatNumber(double value) {
     return std::string(buffer, result.ptr);
 }
 
+// Longer user strings are cut in messages, so a huge key or name cannot flood the terminal.
+constexpr std::size_t kMaxShown = 40;
+
 // JSON-quoted, so control characters and quotes in user strings stay readable.
 std::string quoted(const std::string& text) {
-    constexpr std::size_t kMaxShown = 40;
     std::string shown = text.size() > kMaxShown ? text.substr(0, kMaxShown) : text;
     std::string result = Json(shown).dump(-1, ' ', false, Json::error_handler_t::replace);
     if (shown.size() < text.size()) result += "...";
@@ -101,7 +103,7 @@ bool isIdentifier(std::string_view key) {
 
 // "camera" + "fov" -> camera.fov; a key like "my ball" becomes shaders["my ball"].
 std::string childPath(const std::string& parent, const std::string& key) {
-    if (!isIdentifier(key)) return parent + "[" + quoted(key) + "]";
+    if (!isIdentifier(key) || key.size() > kMaxShown) return parent + "[" + quoted(key) + "]";
     return parent.empty() ? key : parent + "." + key;
 }
 
@@ -425,7 +427,9 @@ Scene readScene(const JsonReader& root) {
 // ---------------------------------------------------------------- parsing the text
 
 // Follows the parser through the document, so that problems the parser itself meets
-// (a duplicate key, a number too large for a double) can be reported at their JSON path.
+// (a duplicate key, a number too large for a double, absurd nesting) can be reported at
+// their JSON path. Paths are built only for a message: storing one per level would make
+// deep nesting cost quadratic time and memory (20 KB of '[' took a minute and 1.4 GB).
 class ParsePathTracker {
 public:
     explicit ParsePathTracker(const std::string& source) : source_(source) {}
@@ -435,7 +439,13 @@ public:
         switch (event) {
             case Json::parse_event_t::object_start:
             case Json::parse_event_t::array_start:
-                frames_.push_back(Frame{pathOfNextValue(), event == Json::parse_event_t::array_start, 0, {}, {}});
+                // Scene files nest 5 levels deep; anything far deeper is not a scene.
+                if (frames_.size() >= kMaxNesting) {
+                    throw SceneError(source_ + ": " + displayPath(pendingPath()) + ": nested deeper than " +
+                                     std::to_string(kMaxNesting) + " levels");
+                }
+                startValue();
+                frames_.push_back(Frame{event == Json::parse_event_t::array_start, 0, {}, {}});
                 break;
             case Json::parse_event_t::object_end:
             case Json::parse_event_t::array_end:
@@ -446,12 +456,12 @@ public:
                 object.currentKey = parsed.get<std::string>();
                 // nlohmann keeps the last of duplicate keys; the earlier one would silently vanish.
                 if (!object.keys.insert(object.currentKey).second) {
-                    throw SceneError(source_ + ": " + childPath(object.path, object.currentKey) + ": duplicate key");
+                    throw SceneError(source_ + ": " + pendingPath() + ": duplicate key");
                 }
                 break;
             }
             case Json::parse_event_t::value:
-                pathOfNextValue();
+                startValue();
                 break;
         }
         return true;
@@ -459,24 +469,30 @@ public:
 
     // Where the value the parser is reading now (and has not yet reported) belongs.
     std::string pendingPath() const {
-        if (frames_.empty()) return "";
-        const Frame& parent = frames_.back();
-        return parent.isArray ? elementPath(parent.path, parent.nextIndex) : childPath(parent.path, parent.currentKey);
+        std::string path;
+        for (std::size_t i = 0; i < frames_.size(); ++i) {
+            const Frame& frame = frames_[i];
+            // An array's index has already moved past the elements its open children are in.
+            const bool pending = i + 1 == frames_.size();
+            path = frame.isArray ? elementPath(path, frame.nextIndex - (pending ? 0 : 1))
+                                 : childPath(path, frame.currentKey);
+        }
+        return path;
     }
 
 private:
+    static constexpr std::size_t kMaxNesting = 64;
+
     struct Frame {
-        std::string path;
         bool isArray = false;
         std::size_t nextIndex = 0;  // arrays: index of the next element
         std::string currentKey;     // objects: key of the value being read
         std::set<std::string> keys;
     };
 
-    std::string pathOfNextValue() {
-        std::string path = pendingPath();
+    // The pending value has begun: an array's next one gets the next index.
+    void startValue() {
         if (!frames_.empty() && frames_.back().isArray) ++frames_.back().nextIndex;
-        return path;
     }
 
     const std::string& source_;
@@ -507,7 +523,18 @@ std::string parseErrorDetail(const std::string& what) {
     const std::size_t errorAt = what.find("parse error");
     if (errorAt == std::string::npos) return what;
     const std::size_t colon = what.find(": ", errorAt);
-    return colon == std::string::npos ? what : what.substr(colon + 2);
+    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+    // nlohmann quotes the whole token it stopped in ("last read: '...'"), which may be a huge string.
+    const std::string kLastRead = "last read: '";
+    const std::size_t tokenStart = detail.find(kLastRead);
+    if (tokenStart == std::string::npos) return detail;
+    const std::size_t first = tokenStart + kLastRead.size();
+    const std::size_t expected = detail.rfind("'; expected");
+    const std::size_t last = expected != std::string::npos && expected >= first ? expected : detail.rfind('\'');
+    if (last == std::string::npos || last < first || last - first <= kMaxShown) return detail;
+    std::size_t cut = first + kMaxShown;
+    while (cut > first && (static_cast<unsigned char>(detail[cut]) & 0xC0) == 0x80) --cut;  // whole UTF-8 characters
+    return detail.substr(0, cut) + "..." + detail.substr(last);
 }
 
 // "[json.exception.out_of_range.406] number overflow parsing '1e999'" -> "1e999".

@@ -285,6 +285,43 @@ TEST(SceneLoaderRejects, DuplicateKey) {
     EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, "width": 9,)"), "test.json: image.width: duplicate key");
 }
 
+// Found by the fuzzer's reasoning about input size: one stored path per nesting level made
+// 20 KB of '[' take a minute and 1.4 GB; 200 KB would have exhausted memory.
+TEST(SceneLoaderRejects, DeepNestingQuicklyAndAtItsPlace) {
+    std::string path = "nodes";
+    for (int level = 2; level <= 64; ++level) path += "[0]";  // root, nodes, 62 arrays; the 65th is refused
+    EXPECT_EQ(errorFor(R"({"nodes": )" + std::string(200000, '[')), "test.json: " + path + ": nested deeper than 64 levels");
+    // 64 levels are still read (and then rejected for what they are).
+    EXPECT_EQ(errorFor(std::string(64, '[') + std::string(64, ']')),
+              "test.json: (root): expected an object (got an array of 1 element)");
+}
+
+// Paths the parser reports (not the scene reader) inside nested arrays and objects.
+TEST(SceneLoaderRejects, ParserProblemsNamedAtNestedPaths) {
+    EXPECT_EQ(errorFor(R"({"lights": [1, {"a": [2, 3, 1e999]}]})"), "test.json: lights[1].a[2]: must be a finite number (got 1e999)");
+    EXPECT_EQ(errorFor(R"({"lights": [1, {"a": [[2], 3, {"b": 1, "b": 2}]}]})"), "test.json: lights[1].a[2].b: duplicate key");
+}
+
+TEST(SceneLoaderRejects, LongTokensAreCutInSyntaxErrors) {
+    EXPECT_EQ(errorFor(R"({"image": ")" + std::string(100000, 'x')),
+              "test.json:1:100012: JSON syntax error: syntax error while parsing value - invalid string: missing closing "
+              "quote; last read: '\"" + std::string(39, 'x') + "...'");
+    // Cut between characters, not inside one: the 20th two-byte character would straddle the cut.
+    std::string accents;
+    for (int i = 0; i < 100; ++i) accents += "\u00e9";
+    std::string shown = "\"";
+    for (int i = 0; i < 19; ++i) shown += "\u00e9";
+    EXPECT_EQ(errorFor(R"({"image": ")" + accents),
+              "test.json:1:112: JSON syntax error: syntax error while parsing value - invalid string: missing closing "
+              "quote; last read: '" + shown + "...'");
+}
+
+TEST(SceneLoaderRejects, LongKeysAreCutInMessages) {
+    const std::string key(100000, 'k');
+    EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, ")" + key + R"(": 1,)"),
+              "test.json: image[\"" + std::string(40, 'k') + "\"...]: unknown key (allowed: encoding, height, sampling, spp, width)");
+}
+
 // ---------------------------------------------------------------- structure and types
 
 TEST(SceneLoaderRejects, RootThatIsNotAnObject) {
