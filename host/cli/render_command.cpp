@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include "cli/command_support.h"
+#include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "image/aov.h"
 #include "image/image_io.h"
 
 namespace hexray::cli {
@@ -53,7 +55,21 @@ int runRender(const RenderOptions& options) {
         // only once every row is in.
         PngRowWriter writer(output, scene.image.width, scene.image.height);
         char how[512];
-        if (options.backend == Backend::Gpu) {
+        const bool aov = !options.aovDirectory.empty();
+        std::vector<std::filesystem::path> aovFiles;
+        if (options.backend == Backend::Gpu && aov) {
+            // The AOVs come from the shader's AOV mode, with the linear image and classes.
+            const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
+            GpuRenderer renderer(context);
+            GpuRenderResult result = renderer.render(scene, options.precision, GpuOutput::LinearClassesAndAov);
+            writer.writeRows(encodeImage(result.image, scene.image.encoding).bytes);
+            aovFiles = writeAovs(options.aovDirectory, AovSet{scene.image.width, scene.image.height,
+                                                              std::move(result.depth), std::move(result.normals),
+                                                              std::move(result.classes), scene.lights.size()});
+            std::snprintf(how, sizeof how, "gpu %s (%s) with AOVs: render %.2f ms",
+                          std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
+                          result.timing.renderMilliseconds);
+        } else if (options.backend == Backend::Gpu) {
             const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
             GpuRenderer renderer(context);
             Progress progress(scene.image.height);
@@ -71,13 +87,24 @@ int runRender(const RenderOptions& options) {
         } else {
             const unsigned threads = cpuThreadCount(options.threads);
             const auto start = std::chrono::steady_clock::now();
-            const Rgb8Image image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
+            CpuRender render = renderOnCpu(scene, threads);
+            const Rgb8Image image = encodeImage(render.image, scene.image.encoding);
             std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads,
                           millisecondsSince(start));
             writer.writeRows(image.bytes);
+            if (aov) {
+                CpuAovs aovs = renderCpuAovs(scene);
+                aovFiles = writeAovs(options.aovDirectory,
+                                     AovSet{scene.image.width, scene.image.height, std::move(aovs.depth),
+                                            std::move(aovs.normals), std::move(render.classes), scene.lights.size()});
+            }
         }
         writer.finish();
         std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how);
+        if (aov) {
+            std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", aovFiles.size(),
+                        options.aovDirectory.c_str());
+        }
         return int(kSuccess);
     });
     return withValidationVerdict(code, log);
