@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #include "camera/camera.h"
 
@@ -242,7 +243,8 @@ GpuPixelTrace unpackTrace(const Scene& scene, const std::byte* bytes, bool camer
     }
     const glm::dvec3 eye = cameraRelative ? makePixelSheet(scene.camera, sheetAspect(scene)).origin : glm::dvec3(0);
     const auto world = [&](const gpu::RealVec4<Real>& p) { return eye + scale * glm::dvec3(p); };
-    const double miss = double(std::numeric_limits<Real>::max()) * 0.5;  // REAL_MAX in the shader
+    // The shader's NO_HIT is REAL_MAX: 1e300 in f64, FLT_MAX in f32.
+    const double miss = std::is_same_v<Real, double> ? 1e299 : 1e38;
     const auto distance = [&](Real t) {
         return double(t) >= miss ? std::numeric_limits<double>::infinity() : double(t) * scale;
     };
