@@ -86,8 +86,9 @@ std::vector<std::filesystem::path> writeAovs(const std::filesystem::path& direct
               if (!std::isfinite(aovs.depth[i])) {
                   return Rgb{0, 0, 0};
               }
-              const double range = farthest > nearest ? double(farthest) - nearest : 1.0;
-              return ramp(1.0 - (double(aovs.depth[i]) - nearest) / range);
+              // Log scale: a floor reaches to the horizon, which would flatten a linear ramp.
+              const double range = farthest > nearest ? std::log(double(farthest) / nearest) : 1.0;
+              return ramp(1.0 - std::log(double(aovs.depth[i]) / nearest) / range);
           }));
 
     std::array<std::vector<float>, 3> normal;

@@ -11,7 +11,7 @@
 //   margin.exr      Y (compare only): the CPU reference's smallest decision margin; +inf where
 //                   no decision was made; below 2^-17 the pixel is ambiguous
 //
-// Previews: depth near = bright yellow to far = dark blue, background black; normal as
+// Previews: depth on a log scale from near = bright yellow to far = dark blue, background black; normal as
 // (n + 1) / 2 in RGB; object id a colour per node, background black; lights white where lit;
 // margin log10 from 1e-12 (dark) to 1 (bright), ambiguous pixels red, no decision black.
 
