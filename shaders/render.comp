@@ -15,10 +15,16 @@ layout(local_size_x_id = 0, local_size_y_id = 1) in;
 #include "bvh.glsl"
 #include "trace.glsl"
 #include "surface.glsl"
+#include "inspect_hooks.glsl"
 #include "shading.glsl"
 #include "encode.glsl"
+#include "inspect.glsl"
 
 void main() {
+    if (OUTPUT_MODE == OUTPUT_TRACE) {
+        traceMain();
+        return;
+    }
     uvec2 bandPixel = gl_GlobalInvocationID.xy;
     if (bandPixel.x >= frame.imageSize.x || bandPixel.y >= band.rowCount) {
         return;
@@ -26,6 +32,8 @@ void main() {
     // The pixel is classified by its first sample (as the CPU reference does).
     uint node = NO_NODE;
     uint flags = 0u;
+    Ray firstRay;
+    Hit firstHit;
     vec3 sum = vec3(0.0);
     for (uint sampleIndex = 0u; sampleIndex < SAMPLES_PER_PIXEL; ++sampleIndex) {
         Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y), sampleIndex);
@@ -35,13 +43,18 @@ void main() {
         if (sampleIndex == 0u) {
             node = hit.node;
             flags = sampleFlags;
+            firstRay = ray;
+            firstHit = hit;
         }
     }
     vec3 color = sum / float(SAMPLES_PER_PIXEL);
     uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
-    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES) {
+    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
         pixels[index] = vec4(color, 1.0);
         classes[index] = uvec2(node, flags);
+        if (OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
+            writeAov(index, firstRay, firstHit);
+        }
     } else {
         encodedPixels[index] = encode8(color);
     }

@@ -8,18 +8,22 @@ vec3 incidentLight(Surface s, inout uint flags) {
         vec3r toLight = lights[i].position.xyz - s.position;
         real r2 = dot(toLight, toLight);
         if (r2 == 0.0) {
+            traceLight(i, TRACE_LIGHT_AT_POINT, 0.0, r2, 0.0, vec3(0.0));
             continue;  // a light exactly at the point: no direction, no contribution
         }
         real cosTheta = dot(s.normal, toLight) * inversesqrt(r2);
         if (cosTheta <= 0.0) {
+            traceLight(i, TRACE_LIGHT_FACING_AWAY, cosTheta, r2, 0.0, vec3(0.0));
             continue;  // facing away: dark whether or not anything is in between
         }
         vec3r shadowPath = lights[i].position.xyz - s.shadowOrigin;
         real shadowLength = length(shadowPath);
         if (isOccluded(Ray(s.shadowOrigin, shadowPath / shadowLength), lights[i].position.xyz, shadowLength)) {
+            traceLight(i, TRACE_LIGHT_SHADOWED, cosTheta, r2, shadowLength, vec3(0.0));
             continue;
         }
         sum += lights[i].power.rgb * float(cosTheta / r2);
+        traceLight(i, TRACE_LIGHT_LIT, cosTheta, r2, shadowLength, lights[i].power.rgb * float(cosTheta / r2));
         if (i < CLASSIFIED_LIGHTS) {
             flags |= 2u << i;
         }
@@ -61,5 +65,6 @@ vec3 shade(Ray ray, Hit hit, out uint flags) {
         albedo = node.color2.rgb;
         flags |= ODD_CHECKER_BIT;
     }
+    traceSurface(s, albedo);
     return albedo * incidentLight(s, flags);
 }

@@ -46,6 +46,7 @@ struct RenderOptions {
     Precision precision = Precision::Auto;
     std::string outputPath;  // empty: <scene name>.png in the current directory
     unsigned threads = 0;    // CPU backend; 0 = all cores
+    std::string aovDirectory;  // empty: no AOVs (see image/aov.h)
 };
 
 struct CompareOptions {
@@ -57,6 +58,21 @@ struct CompareOptions {
     Tolerance tolerance;
     std::string diffPath;  // empty: no heat map (single scene only)
     unsigned threads = 0;
+    std::string maskPath;      // empty: no mismatch mask (single scene only)
+    std::string aovDirectory;  // empty: no AOVs; else <dir>/gpu, <dir>/cpu (with the margin)
+};
+
+enum class PixelBackend { Both, Gpu, Cpu };
+
+struct PixelOptions {
+    std::string scenePath;
+    std::int64_t x = 0;
+    std::int64_t y = 0;
+    std::int64_t sample = 0;
+    ImageOverride image;
+    VulkanOptions vulkan;
+    PixelBackend backend = PixelBackend::Both;
+    Precision precision = Precision::Auto;
 };
 
 struct BenchOptions {
@@ -73,5 +89,6 @@ int runRender(const RenderOptions& options);
 int runCompare(const CompareOptions& options);
 int runDevices(const VulkanOptions& options);
 int runBench(const BenchOptions& options);
+int runPixel(const PixelOptions& options);
 
 }  // namespace hexray::cli

@@ -5,8 +5,10 @@
 #include <filesystem>
 
 #include "cli/command_support.h"
+#include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "image/aov.h"
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
 
@@ -127,6 +129,13 @@ int runCompare(const CompareOptions& options) {
         if (!options.diffPath.empty() && table) {
             throw SceneError("--diff: a heat map needs a single scene and a single precision");
         }
+        if (!options.maskPath.empty() && table) {
+            throw SceneError("--mask: a mismatch mask needs a single scene and a single precision");
+        }
+        if (!options.aovDirectory.empty() && table) {
+            throw SceneError("--aov: AOVs need a single scene and a single precision");
+        }
+        const bool aov = !options.aovDirectory.empty();
         const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
         GpuRenderer renderer(context);
         bool allPassed = true;
@@ -150,7 +159,8 @@ int runCompare(const CompareOptions& options) {
                 }
             }
             for (const Precision requested : precisions) {
-                const GpuRenderResult gpu = renderer.render(scene, requested);
+                GpuRenderResult gpu =
+                    renderer.render(scene, requested, aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses);
                 Row row{gpu.precision,
                         gpu.precision == automatic,
                         !(options.allPrecisions && gpu.precision == Precision::F32Naive),
@@ -177,6 +187,25 @@ int runCompare(const CompareOptions& options) {
                     writePng(options.diffPath, diffHeatMap(encodeImage(reference.image, scene.image.encoding),
                                                            encodeImage(gpu.image, scene.image.encoding)));
                     std::printf("wrote diff heat map %s\n", options.diffPath.c_str());
+                }
+                if (!options.maskPath.empty()) {
+                    writePng(options.maskPath,
+                             mismatchMask(reference.classes, gpu.classes, ambiguous,
+                                          encodeImage(reference.image, scene.image.encoding),
+                                          encodeImage(gpu.image, scene.image.encoding)));
+                    std::printf("wrote mismatch mask %s (red topology, yellow colour > 1 level, blue ambiguous)\n",
+                                options.maskPath.c_str());
+                }
+                if (aov) {
+                    const fs::path directory(options.aovDirectory);
+                    writeAovs(directory / "gpu", AovSet{scene.image.width, scene.image.height, std::move(gpu.depth),
+                                                        std::move(gpu.normals), gpu.classes, scene.lights.size()});
+                    CpuAovs cpuAovs = renderCpuAovs(scene);
+                    writeAovs(directory / "cpu",
+                              AovSet{scene.image.width, scene.image.height, std::move(cpuAovs.depth),
+                                     std::move(cpuAovs.normals), reference.classes, scene.lights.size(),
+                                     &reference.margins, kAmbiguityMargin});
+                    std::printf("wrote AOVs in %s and %s\n", (directory / "gpu").c_str(), (directory / "cpu").c_str());
                 }
             }
         }

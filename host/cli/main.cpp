@@ -71,6 +71,9 @@ int main(int argc, char** argv) {
     addDeviceOption(*renderCommand, render.vulkan);
     renderCommand->add_option("--threads", render.threads, "CPU backend threads (default: all cores)")
         ->check(CLI::PositiveNumber);
+    renderCommand->add_option("--aov", render.aovDirectory,
+                              "Also write depth, normal, object id and per-light shadow masks as OpenEXR files with "
+                              "PNG previews into this directory (see README)");
 
     CompareOptions compare;
     std::string comparePrecision = "auto";
@@ -105,6 +108,12 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     compareCommand->add_option("--threads", compare.threads, "CPU reference threads (default: all cores)")
         ->check(CLI::PositiveNumber);
+    compareCommand->add_option("--mask", compare.maskPath,
+                               "Write a PNG of where the renders disagree: red topology mismatch, yellow colour more "
+                               "than one level off, blue ambiguous, black agreement");
+    compareCommand->add_option("--aov", compare.aovDirectory,
+                               "Write both backends' AOVs into DIR/gpu and DIR/cpu, and the CPU reference's decision "
+                               "margin as DIR/cpu/margin.exr (see README)");
 
     BenchOptions bench;
     CLI::App* benchCommand = app.add_subcommand(
@@ -124,6 +133,24 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1u, kMaxSamplesPerPixel))
         ->capture_default_str();
     benchCommand->add_option("--csv", bench.csvPath, "Also write the table as CSV");
+
+    PixelOptions pixel;
+    std::string pixelBackend = "both";
+    std::string pixelPrecision = "auto";
+    CLI::App* pixelCommand = app.add_subcommand(
+        "pixel", "Explain one pixel: its ray, every node's intersection, the hit, the shading terms and the colour, "
+                 "from the shader and from the CPU reference side by side");
+    pixelCommand->add_option("scene", pixel.scenePath, "Scene file (JSON)")->required();
+    pixelCommand->add_option("x", pixel.x, "Column, 0 at the left")->required();
+    pixelCommand->add_option("y", pixel.y, "Row, 0 at the top")->required();
+    pixelCommand->add_option("--backend", pixelBackend, "both (side by side), gpu or cpu")
+        ->check(CLI::IsMember({"both", "gpu", "cpu"}))
+        ->capture_default_str();
+    addPrecisionOption(*pixelCommand, pixelPrecision);
+    pixelCommand->add_option("--sample", pixel.sample, "Which of the pixel's samples to explain (with --spp > 1)")
+        ->capture_default_str();
+    addImageOptions(*pixelCommand, pixel.image);
+    addDeviceOption(*pixelCommand, pixel.vulkan);
 
     VulkanOptions devices;
     CLI::App* devicesCommand = app.add_subcommand("devices", "List the Vulkan devices and the one hexray would use");
@@ -153,6 +180,13 @@ int main(int argc, char** argv) {
     if (benchCommand->parsed()) {
         bench.vulkan.validate = validate;
         return runBench(bench);
+    }
+    if (pixelCommand->parsed()) {
+        pixel.vulkan.validate = validate;
+        pixel.backend = pixelBackend == "gpu" ? PixelBackend::Gpu : pixelBackend == "cpu" ? PixelBackend::Cpu
+                                                                                        : PixelBackend::Both;
+        pixel.precision = *parsePrecision(pixelPrecision);
+        return runPixel(pixel);
     }
     devices.validate = validate;
     return runDevices(devices);

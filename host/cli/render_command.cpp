@@ -4,12 +4,15 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
 #include "cli/command_support.h"
+#include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "image/aov.h"
 #include "image/image_io.h"
 
 namespace hexray::cli {
@@ -44,10 +47,25 @@ private:
     bool started_ = false;
 };
 
-// Renders on the GPU, band by band into `writer`; returns how, for the summary line.
-std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer) {
+// Renders on the GPU into `writer`, band by band, or whole with the AOVs (written to
+// options.aovDirectory, their paths to `aovFiles`); returns how, for the summary line.
+std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
+                        std::vector<std::filesystem::path>& aovFiles) {
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
+    char how[512];
+    if (!options.aovDirectory.empty()) {
+        // The AOVs come from the shader's AOV mode, with the linear image and classes.
+        GpuRenderResult result = renderer.render(scene, options.precision, GpuOutput::LinearClassesAndAov);
+        writer.writeRows(encodeImage(result.image, scene.image.encoding).bytes);
+        aovFiles = writeAovs(options.aovDirectory,
+                             AovSet{scene.image.width, scene.image.height, std::move(result.depth),
+                                    std::move(result.normals), std::move(result.classes), scene.lights.size()});
+        std::snprintf(how, sizeof how, "gpu %s (%s) with AOVs: render %.2f ms",
+                      std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
+                      result.timing.renderMilliseconds);
+        return how;
+    }
     Progress progress(scene.image.height);
     // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
     // sits whole in memory.
@@ -56,7 +74,6 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
             writer.writeRows(rgbRows);
             progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
         });
-    char how[512];
     std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s, first dispatch %.1f ms incl. shader compile",
                   std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
                   result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
@@ -64,13 +81,21 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
     return how;
 }
 
-std::string renderWithCpuReference(const RenderOptions& options, const Scene& scene, PngRowWriter& writer) {
+std::string renderWithCpuReference(const RenderOptions& options, const Scene& scene, PngRowWriter& writer,
+                                   std::vector<std::filesystem::path>& aovFiles) {
     const unsigned threads = cpuThreadCount(options.threads);
     const auto start = std::chrono::steady_clock::now();
-    const Rgb8Image image = encodeImage(renderOnCpu(scene, threads).image, scene.image.encoding);
+    CpuRender render = renderOnCpu(scene, threads);
+    const Rgb8Image image = encodeImage(render.image, scene.image.encoding);
     char how[128];
     std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads, millisecondsSince(start));
     writer.writeRows(image.bytes);
+    if (!options.aovDirectory.empty()) {
+        CpuAovs aovs = renderCpuAovs(scene);
+        aovFiles = writeAovs(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(aovs.depth),
+                                                          std::move(aovs.normals), std::move(render.classes),
+                                                          scene.lights.size()});
+    }
     return how;
 }
 
@@ -95,10 +120,11 @@ int runRender(const RenderOptions& options) {
         // only once every row is in.
         std::optional<PngRowWriter> writer(std::in_place, output, scene.image.width, scene.image.height);
         std::string how;
+        std::vector<std::filesystem::path> aovFiles;
         if (options.backend != Backend::Cpu) {
             bool fallBack = false;
             try {
-                how = renderOnGpu(options, scene, log, *writer);
+                how = renderOnGpu(options, scene, log, *writer, aovFiles);
             } catch (const VulkanError& error) {
                 if (!fallsBack(options, error)) throw;
                 fallBack = true;
@@ -112,10 +138,14 @@ int runRender(const RenderOptions& options) {
             }
         }
         if (how.empty()) {
-            how = renderWithCpuReference(options, scene, *writer);
+            how = renderWithCpuReference(options, scene, *writer, aovFiles);
         }
         writer->finish();
         std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how.c_str());
+        if (!aovFiles.empty()) {
+            std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", aovFiles.size(),
+                        options.aovDirectory.c_str());
+        }
         return int(kSuccess);
     });
     return withValidationVerdict(code, log);

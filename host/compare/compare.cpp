@@ -174,4 +174,32 @@ Rgb8Image diffHeatMap(const Rgb8Image& reference, const Rgb8Image& test) {
     return map;
 }
 
+Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const std::vector<PixelClass>& testClasses,
+                       const PixelMask& ambiguous, const Rgb8Image& reference, const Rgb8Image& test) {
+    requireSameSize(reference.width, reference.height, test.width, test.height);
+    const std::size_t pixels = std::size_t(reference.width) * reference.height;
+    if (referenceClasses.size() != pixels || testClasses.size() != pixels ||
+        (!ambiguous.empty() && ambiguous.size() != pixels)) {
+        throw std::invalid_argument("mismatchMask: classes or mask do not match the image size");
+    }
+    Rgb8Image mask{reference.width, reference.height, std::vector<std::uint8_t>(pixels * 3, 0)};
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const std::uint8_t* colour = nullptr;
+        if (!ambiguous.empty() && ambiguous[i]) {
+            colour = mask_colour::kAmbiguous;
+        } else if (referenceClasses[i] != testClasses[i]) {
+            colour = mask_colour::kTopology;
+        } else {
+            const glm::dvec3 difference = glm::abs(levelsAt(test, i) - levelsAt(reference, i));
+            if (std::max({difference.x, difference.y, difference.z}) > 1.0) {
+                colour = mask_colour::kColour;
+            }
+        }
+        if (colour) {
+            std::copy(colour, colour + 3, mask.bytes.begin() + std::ptrdiff_t(3 * i));
+        }
+    }
+    return mask;
+}
+
 }  // namespace hexray

@@ -80,4 +80,16 @@ Verdict judge(const RenderComparison& comparison, const Tolerance& tolerance);
 // from dark blue (1 level) through red and yellow to white (255 levels).
 Rgb8Image diffHeatMap(const Rgb8Image& reference, const Rgb8Image& test);
 
+// Where a render disagrees with the reference, one colour per pixel (the legend, in order of
+// precedence): blue = ambiguous (left out of the comparison); red = topology mismatch (another
+// node, checker cell or set of lit lights); yellow = same class but the 8-bit colour more than
+// one level off; black = agreement.
+namespace mask_colour {
+inline constexpr std::uint8_t kAmbiguous[3] = {0, 64, 255};
+inline constexpr std::uint8_t kTopology[3] = {255, 0, 0};
+inline constexpr std::uint8_t kColour[3] = {255, 255, 0};
+}  // namespace mask_colour
+Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const std::vector<PixelClass>& testClasses,
+                       const PixelMask& ambiguous, const Rgb8Image& reference, const Rgb8Image& test);
+
 }  // namespace hexray

@@ -21,10 +21,6 @@
 
 namespace hexray {
 
-namespace {
-
-constexpr double kNoEnd = std::numeric_limits<double>::infinity();  // a camera ray's range
-
 Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
               std::uint32_t sample) {
     const glm::dvec2 offset = sampleOffset(sample, image.samplesPerPixel, image.sampling);
@@ -35,6 +31,10 @@ Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t
     // Camera rays start at t = 0 exactly: no offset, so nothing right in front of the eye is lost.
     return Ray{sheet.origin, glm::normalize(aim)};
 }
+
+namespace {
+
+constexpr double kNoEnd = std::numeric_limits<double>::infinity();  // a camera ray's range
 
 // What the renderer reports for one pixel.
 struct TracedPixel {

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "camera/camera.h"
+#include "cpu/cpu_intersect.h"
 #include "image/image.h"
 #include "image/pixel_class.h"
 #include "scene/scene.h"
@@ -26,6 +28,10 @@ struct CpuRender {
 
     bool isAmbiguous(std::size_t pixel) const { return margins[pixel] < kAmbiguityMargin; }
 };
+
+// The camera ray of sample `sample` of pixel (x, y).
+Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
+              std::uint32_t sample);
 
 // The worker threads renderOnCpu uses for `requested` (0 = all cores, at least 1).
 unsigned cpuThreadCount(unsigned requested);

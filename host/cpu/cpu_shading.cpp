@@ -100,22 +100,32 @@ bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit
     return isSegmentClear(scene, origin, lightPosition, offset, bvh);
 }
 
-std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                                           const PointLight& light, const Bvh* bvh) {
+LightDecision decideLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const PointLight& light,
+                          const Bvh* bvh) {
     const glm::dvec3 toLight = light.position - hit.point;
     const double distanceSquared = glm::dot(toLight, toLight);
     if (distanceSquared == 0.0) {
-        return std::nullopt;  // a light on the point itself has no direction; 0 rather than 0/0
+        return {LightReach::AtPoint, 0.0, 0.0};  // a light on the point itself has no direction; 0 rather than 0/0
     }
     const glm::dvec3 directionToLight = toLight / std::sqrt(distanceSquared);
     const double cosTheta = glm::dot(hit.facingNormal, directionToLight);
     if (cosTheta <= 0.0) {
-        return std::nullopt;  // lit from behind: no light, and no shadow ray to go wrong at the terminator
+        // Lit from behind: no light, and no shadow ray to go wrong at the terminator.
+        return {LightReach::FacingAway, cosTheta, distanceSquared};
     }
     if (!isLightVisible(scene, geometry, hit, light.position, bvh)) {
+        return {LightReach::Shadowed, cosTheta, distanceSquared};
+    }
+    return {LightReach::Lit, cosTheta, distanceSquared};
+}
+
+std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
+                                           const PointLight& light, const Bvh* bvh) {
+    const LightDecision decision = decideLight(scene, geometry, hit, light, bvh);
+    if (decision.reach != LightReach::Lit) {
         return std::nullopt;
     }
-    return ReachingLight{cosTheta, distanceSquared};
+    return ReachingLight{decision.cosTheta, decision.distanceSquared};
 }
 
 Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh) {

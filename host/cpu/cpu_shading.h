@@ -49,6 +49,17 @@ struct ReachingLight {
     double distanceSquared = 0.0;  // from the hit point to the light, > 0
 };
 
+// Why a light does or does not reach a hit point, with the terms that decided it (the
+// instrumented form of reachingLight, for `hexray pixel`).
+enum class LightReach { Lit, AtPoint, FacingAway, Shadowed };
+struct LightDecision {
+    LightReach reach = LightReach::AtPoint;
+    double cosTheta = 0.0;         // 0 when AtPoint
+    double distanceSquared = 0.0;
+};
+LightDecision decideLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const PointLight& light,
+                          const Bvh* bvh = nullptr);
+
 // The light's cos and squared distance when it contributes to the hit; nothing when it does not:
 // it lies on the point itself, the surface faces away from it (cos <= 0), or it is shadowed.
 std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,

@@ -28,6 +28,9 @@ inline constexpr std::uint32_t kEncodedBinding = 5;
 // refers to.
 inline constexpr std::uint32_t kBvhBinding = 6;
 inline constexpr std::uint32_t kPrimitiveBinding = 7;
+// The inspection outputs (shaders/inspect*.glsl); 6 and 7 are left to the scene's BVH.
+inline constexpr std::uint32_t kAovBinding = 8;
+inline constexpr std::uint32_t kTraceBinding = 9;
 
 enum GeometryKind : std::uint32_t { kGeometryPlane = 0, kGeometrySphere = 1 };
 enum ShaderKind : std::uint32_t { kShaderConstant = 0, kShaderLambert = 1, kShaderChecker = 2 };
@@ -118,6 +121,8 @@ inline constexpr std::uint32_t kDynamic = 0xffffffffu;
 inline constexpr std::uint32_t kOutputLinearAndClasses = 0;  // pixels and classes buffers
 inline constexpr std::uint32_t kOutput8BitLinear = 1;        // the encoded buffer
 inline constexpr std::uint32_t kOutput8BitSrgb = 2;
+inline constexpr std::uint32_t kOutputLinearClassesAndAov = 3;  // pixels, classes and the AOV buffer
+inline constexpr std::uint32_t kOutputTrace = 4;  // one pixel explained into the trace buffer
 
 struct ShaderSpecialization {
     std::uint32_t nodeCount = kDynamic;  // kDynamic: read from the frame, kinds from the nodes
@@ -187,6 +192,80 @@ static_assert(offsetof(GpuBvhNode<double>, firstOrSecondChild) == 24);
 static_assert(offsetof(GpuBvhNode<double>, boundsMax) == 32);
 static_assert(offsetof(GpuBvhNode<double>, count) == 56);
 static_assert(sizeof(GpuBvhNode<double>) == 64);
+
+// --- Inspection (shaders/inspect_hooks.glsl): `hexray render --aov` and `hexray pixel`.
+
+// One AOV pixel, from the pixel's first sample: .xyz the shading normal (facing the ray), .w the
+// hit's t in the shader's units (camera-relative placement: world distance / placementScale).
+// Both 0 for the background; the node and lit lights are in the classes buffer.
+using GpuAovPixel = glm::vec4;
+
+// How the shader treated one light at the traced sample (GpuTraceEntry::status.x).
+enum TraceLightStatus : std::uint32_t {
+    kTraceLightNotEvaluated = 0,  // background or a constant shader: lights do not apply
+    kTraceLightLit = 1,
+    kTraceLightFacingAway = 2,    // cos theta <= 0
+    kTraceLightShadowed = 3,
+    kTraceLightAtPoint = 4,       // r^2 = 0
+};
+
+// The trace buffer's fixed part. The host writes `request`; the shader fills the rest for that
+// pixel and sample, in its own units (see GpuAovPixel).
+template <typename Real>
+struct GpuTraceHeader {
+    glm::uvec4 request;             // .x, .y pixel; .z the sample to trace
+    glm::uvec4 result;              // .x 1 once written, .y hit node (0xffffffff: none), .z class flags
+    RealVec4<Real> rayOrigin;       // .xyz
+    RealVec4<Real> rayDirection;    // .xyz, unit length
+    RealVec4<Real> hitPosition;     // .xyz, .w = t
+    RealVec4<Real> hitNormal;       // .xyz shading normal (lit shaders only)
+    RealVec4<Real> shadowOrigin;    // .xyz where shadow rays start (lit shaders only)
+    glm::vec4 albedo;               // .rgb (lit shaders only)
+    glm::vec4 sampleColor;          // .rgb the traced sample's linear colour
+    glm::vec4 pixelColor;           // .rgb the pixel's linear colour (average of its samples)
+};
+
+// Then one entry per node (the candidates: values.x = t, or REAL_MAX for a miss) and one per
+// light (values = cos theta, r^2, shadow ray length; color.rgb = contribution; status.x a
+// TraceLightStatus).
+template <typename Real>
+struct GpuTraceEntry {
+    RealVec4<Real> values;
+    glm::vec4 color;
+    glm::uvec4 status;
+};
+
+static_assert(sizeof(GpuAovPixel) == 16);
+static_assert(offsetof(GpuTraceHeader<float>, request) == 0);
+static_assert(offsetof(GpuTraceHeader<float>, result) == 16);
+static_assert(offsetof(GpuTraceHeader<float>, rayOrigin) == 32);
+static_assert(offsetof(GpuTraceHeader<float>, rayDirection) == 48);
+static_assert(offsetof(GpuTraceHeader<float>, hitPosition) == 64);
+static_assert(offsetof(GpuTraceHeader<float>, hitNormal) == 80);
+static_assert(offsetof(GpuTraceHeader<float>, shadowOrigin) == 96);
+static_assert(offsetof(GpuTraceHeader<float>, albedo) == 112);
+static_assert(offsetof(GpuTraceHeader<float>, sampleColor) == 128);
+static_assert(offsetof(GpuTraceHeader<float>, pixelColor) == 144);
+static_assert(sizeof(GpuTraceHeader<float>) == 160);
+static_assert(offsetof(GpuTraceEntry<float>, values) == 0);
+static_assert(offsetof(GpuTraceEntry<float>, color) == 16);
+static_assert(offsetof(GpuTraceEntry<float>, status) == 32);
+static_assert(sizeof(GpuTraceEntry<float>) == 48);
+static_assert(offsetof(GpuTraceHeader<double>, request) == 0);
+static_assert(offsetof(GpuTraceHeader<double>, result) == 16);
+static_assert(offsetof(GpuTraceHeader<double>, rayOrigin) == 32);
+static_assert(offsetof(GpuTraceHeader<double>, rayDirection) == 64);
+static_assert(offsetof(GpuTraceHeader<double>, hitPosition) == 96);
+static_assert(offsetof(GpuTraceHeader<double>, hitNormal) == 128);
+static_assert(offsetof(GpuTraceHeader<double>, shadowOrigin) == 160);
+static_assert(offsetof(GpuTraceHeader<double>, albedo) == 192);
+static_assert(offsetof(GpuTraceHeader<double>, sampleColor) == 208);
+static_assert(offsetof(GpuTraceHeader<double>, pixelColor) == 224);
+static_assert(sizeof(GpuTraceHeader<double>) == 256);  // std430: the struct rounds up to its 32-byte alignment
+static_assert(offsetof(GpuTraceEntry<double>, values) == 0);
+static_assert(offsetof(GpuTraceEntry<double>, color) == 32);
+static_assert(offsetof(GpuTraceEntry<double>, status) == 48);
+static_assert(sizeof(GpuTraceEntry<double>) == 64);
 
 static_assert(sizeof(GpuBand) == 8);
 static_assert(sizeof(GpuPixel) == 16);

@@ -4,8 +4,12 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <span>
+#include <type_traits>
+
+#include "camera/camera.h"
 
 #include "gpu/gpu_layout.h"
 #include "gpu/gpu_scene.h"
@@ -34,12 +38,12 @@ using gpu::GpuPixelClass;
 using gpu::kWorkgroupSize;
 
 // Set 0's bindings: the storage-buffer layout adds the BVH's two.
-constexpr std::array<std::uint32_t, 8> kAllBindings = {
-    gpu::kFrameBinding,   gpu::kNodeBinding,     gpu::kLightBinding, gpu::kPixelBinding,
-    gpu::kClassBinding,   gpu::kEncodedBinding,  gpu::kBvhBinding,   gpu::kPrimitiveBinding};
+constexpr std::array<std::uint32_t, 10> kAllBindings = {
+    gpu::kFrameBinding,   gpu::kNodeBinding,    gpu::kLightBinding, gpu::kPixelBinding, gpu::kClassBinding,
+    gpu::kEncodedBinding, gpu::kAovBinding,     gpu::kTraceBinding, gpu::kBvhBinding,   gpu::kPrimitiveBinding};
 
 std::span<const std::uint32_t> bindingsOf(bool smallScene) {
-    return std::span(kAllBindings).first(smallScene ? 6 : 8);
+    return std::span(kAllBindings).first(smallScene ? 8 : 10);
 }
 
 using Spirv = std::span<const std::uint32_t>;
@@ -219,9 +223,16 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
     GpuRenderResult result;
     result.precision = resolve(scene, requested);
     const std::uint32_t width = scene.image.width;
-    if (output == GpuOutput::LinearAndClasses) {
+    if (output != GpuOutput::Encoded8) {
+        const bool aov = output == GpuOutput::LinearClassesAndAov;
         result.image = Image(width, scene.image.height);
         result.classes.resize(result.image.pixels.size());
+        if (aov) {
+            result.depth.resize(result.image.pixels.size());
+            result.normals.resize(result.image.pixels.size());
+        }
+        // The shader's t is in the placement's units.
+        const double scale = result.precision == Precision::F32Naive ? 1.0 : gpu::placementScale(scene);
         renderBands(scene, result.precision, output, acceleration, result, [&](const Band& band) {
             const std::size_t count = std::size_t(band.rows) * width;
             const std::ptrdiff_t first = std::ptrdiff_t(band.firstRow) * width;
@@ -229,6 +240,14 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
                            [](const GpuPixel& p) { return glm::vec3(p); });
             std::transform(band.classes, band.classes + count, result.classes.begin() + first,
                            [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
+            if (aov) {
+                for (std::size_t i = 0; i < count; ++i) {
+                    const bool background = band.classes[i].x == PixelClass::kBackground;
+                    result.depth[first + i] = background ? std::numeric_limits<float>::infinity()
+                                                         : float(double(band.aovs[i].w) * scale);
+                    result.normals[first + i] = glm::vec3(band.aovs[i]);
+                }
+            }
         });
         return result;
     }
@@ -257,10 +276,91 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, Precision req
     return result;
 }
 
+namespace {
+
+template <typename Real>
+GpuPixelTrace unpackTrace(const Scene& scene, const std::byte* bytes, bool cameraRelative, double scale) {
+    gpu::GpuTraceHeader<Real> header;
+    std::memcpy(&header, bytes, sizeof header);
+    if (header.result.x != 1) {
+        throw VulkanError("the trace dispatch wrote nothing");
+    }
+    const glm::dvec3 eye = cameraRelative ? makePixelSheet(scene.camera, sheetAspect(scene)).origin : glm::dvec3(0);
+    const auto world = [&](const gpu::RealVec4<Real>& p) { return eye + scale * glm::dvec3(p); };
+    // The shader's NO_HIT is REAL_MAX: 1e300 in f64, FLT_MAX in f32.
+    const double miss = std::is_same_v<Real, double> ? 1e299 : 1e38;
+    const auto distance = [&](Real t) {
+        return double(t) >= miss ? std::numeric_limits<double>::infinity() : double(t) * scale;
+    };
+    GpuPixelTrace trace;
+    trace.cameraRelative = cameraRelative;
+    trace.scale = scale;
+    trace.rayOrigin = world(header.rayOrigin);
+    trace.rayDirection = glm::dvec3(header.rayDirection);
+    trace.node = header.result.y;
+    trace.flags = header.result.z;
+    trace.t = distance(header.hitPosition.w);
+    trace.position = world(header.hitPosition);
+    trace.normal = glm::dvec3(header.hitNormal);
+    trace.shadowOrigin = world(header.shadowOrigin);
+    trace.albedo = glm::vec3(header.albedo);
+    trace.sampleColor = glm::vec3(header.sampleColor);
+    trace.pixelColor = glm::vec3(header.pixelColor);
+    const std::byte* entries = bytes + sizeof header;
+    const auto entry = [&](std::size_t i) {
+        gpu::GpuTraceEntry<Real> e;
+        std::memcpy(&e, entries + i * sizeof e, sizeof e);
+        return e;
+    };
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+        trace.candidates.push_back(distance(entry(i).values.x));
+    }
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const gpu::GpuTraceEntry<Real> e = entry(scene.nodes.size() + i);
+        trace.lights.push_back(GpuTraceLight{e.status.x, double(e.values.x), double(e.values.y) * scale * scale,
+                                             double(e.values.z) * scale, glm::vec3(e.color)});
+    }
+    return trace;
+}
+
+template <typename Real>
+std::vector<std::byte> traceRequest(const Scene& scene, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
+    std::vector<std::byte> bytes(sizeof(gpu::GpuTraceHeader<Real>) +
+                                 (scene.nodes.size() + scene.lights.size()) * sizeof(gpu::GpuTraceEntry<Real>));
+    const glm::uvec4 request(x, y, sample, 0);
+    std::memcpy(bytes.data(), &request, sizeof request);
+    return bytes;
+}
+
+}  // namespace
+
+GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, Precision requested, std::uint32_t x, std::uint32_t y,
+                                      std::uint32_t sample) {
+    const Precision precision = resolve(scene, requested);
+    const bool f64 = precision == Precision::F64;
+    const bool cameraRelative = precision != Precision::F32Naive;
+    const double scale = cameraRelative ? gpu::placementScale(scene) : 1.0;
+    const std::vector<std::byte> request =
+        f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
+    GpuPixelTrace trace;
+    GpuRenderResult unused;
+    renderBands(scene, precision, GpuOutput::LinearAndClasses, Acceleration::Auto, unused, [&](const Band& band) {
+        trace = f64 ? unpackTrace<double>(scene, band.trace, cameraRelative, scale)
+                    : unpackTrace<float>(scene, band.trace, cameraRelative, scale);
+    }, request);
+    trace.precision = precision;
+    return trace;
+}
+
 void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
-                              GpuRenderResult& result, const std::function<void(const Band&)>& consume) {
-    const bool linear = output == GpuOutput::LinearAndClasses;
-    const std::uint32_t outputMode = linear                                     ? gpu::kOutputLinearAndClasses
+                              GpuRenderResult& result, const std::function<void(const Band&)>& consume,
+                              std::span<const std::byte> traceRequest) {
+    const bool tracing = !traceRequest.empty();
+    const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
+    const bool linear = output != GpuOutput::Encoded8 && !tracing;
+    const std::uint32_t outputMode = tracing                                    ? gpu::kOutputTrace
+                                     : aov                                      ? gpu::kOutputLinearClassesAndAov
+                                     : linear                                   ? gpu::kOutputLinearAndClasses
                                      : scene.image.encoding == Encoding::Srgb ? gpu::kOutput8BitSrgb
                                                                               : gpu::kOutput8BitLinear;
     SceneLayout layout = gpu::chooseSceneLayout(scene, acceleration, context_.selected().hasSubgroupVote);
@@ -294,8 +394,13 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     // Only the output mode's buffers get their full size; the others are bound but never written.
     HostVisibleBuffer pixelBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixel) : 0, storage);
     HostVisibleBuffer classBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
-    HostVisibleBuffer encodedBuffer(device, physicalDevice, linear ? 0 : bandPixels * sizeof(gpu::GpuEncodedPixel),
-                                    storage);
+    HostVisibleBuffer encodedBuffer(device, physicalDevice,
+                                    linear || tracing ? 0 : bandPixels * sizeof(gpu::GpuEncodedPixel), storage);
+    HostVisibleBuffer aovBuffer(device, physicalDevice, aov ? bandPixels * sizeof(gpu::GpuAovPixel) : 0, storage);
+    HostVisibleBuffer traceBuffer(device, physicalDevice, traceRequest.size(), storage);
+    if (tracing) {
+        traceBuffer.upload(traceRequest);
+    }
     HostVisibleBuffer bvhBuffer(device, physicalDevice, packed.bvhNodes.size(), storage);
     HostVisibleBuffer primitiveBuffer(device, physicalDevice, packed.primitives.size(), storage);
     frameBuffer.upload(std::span(packed.frame));
@@ -314,7 +419,8 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
     const std::array<const HostVisibleBuffer*, kAllBindings.size()> buffers = {
-        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer, &encodedBuffer, &bvhBuffer, &primitiveBuffer};
+        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
+        &encodedBuffer, &aovBuffer, &traceBuffer, &bvhBuffer, &primitiveBuffer};
     for (std::size_t i = 0; i < setBindings.size(); ++i) {
         const vk::DescriptorBufferInfo info(*buffers[i]->buffer(), 0, buffers[i]->size());
         device.updateDescriptorSets(
@@ -367,6 +473,12 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     result.usedBvh = layout == SceneLayout::StorageBvh;
     GpuTiming& timing = result.timing;
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
+    if (tracing) {
+        // One invocation does the work; the pixel is in the request, not in the dispatch.
+        timing.renderMilliseconds = runDispatch(GpuBand{0, 1}, 1, 1, false);
+        consume(Band{0, 0, nullptr, nullptr, nullptr, nullptr, traceBuffer.data()});
+        return;
+    }
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
     // dispatch) is not counted as render time.
     timing.firstDispatchMilliseconds = runDispatch(GpuBand{0, std::min(rowsPerBand, kWorkgroupSize)}, 1, 1, false);
@@ -376,7 +488,8 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
         timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
         consume(Band{firstRow, rows, reinterpret_cast<const GpuPixel*>(pixelBuffer.data()),
                      reinterpret_cast<const GpuPixelClass*>(classBuffer.data()),
-                     reinterpret_cast<const gpu::GpuEncodedPixel*>(encodedBuffer.data())});
+                     reinterpret_cast<const gpu::GpuEncodedPixel*>(encodedBuffer.data()),
+                     reinterpret_cast<const gpu::GpuAovPixel*>(aovBuffer.data()), traceBuffer.data()});
     }
 }
 

@@ -27,12 +27,49 @@ struct GpuTiming {
 
 // What render() produces: linear RGB and what each pixel shows, for comparisons; or only the
 // finished 8-bit image, encoded on the device as the scene asks (sRGB or linear).
-enum class GpuOutput { LinearAndClasses, Encoded8 };
+// LinearClassesAndAov adds, from each pixel's first sample, the hit distance and the shading
+// normal (for `render --aov`).
+enum class GpuOutput { LinearAndClasses, Encoded8, LinearClassesAndAov };
+
+// One light at a traced sample, as the shader saw it.
+struct GpuTraceLight {
+    std::uint32_t status = gpu::kTraceLightNotEvaluated;  // gpu::TraceLightStatus
+    double cosTheta = 0;
+    double distanceSquared = 0;  // world units²
+    double shadowLength = 0;     // world units
+    glm::vec3 contribution{0};   // colour × intensity × cos θ / r²
+};
+
+// One pixel explained by the shader itself (OUTPUT_TRACE). Everything is converted back to
+// world units: the camera-relative placement's eye is added back and lengths multiplied by its
+// scale (see gpu_scene.h), in double, from the shader's f32 or f64 values.
+struct GpuPixelTrace {
+    Precision precision = Precision::F32;
+    bool cameraRelative = true;
+    double scale = 1.0;              // the placement's power of two (1 for f32-naive)
+    glm::dvec3 rayOrigin{0};
+    glm::dvec3 rayDirection{0};
+    std::vector<double> candidates;  // per node: t in world units, +inf for a miss
+    std::uint32_t node = PixelClass::kBackground;
+    std::uint32_t flags = 0;         // as PixelClass::flags
+    double t = 0;
+    glm::dvec3 position{0};
+    glm::dvec3 normal{0};            // shading normal
+    glm::dvec3 shadowOrigin{0};
+    glm::vec3 albedo{0};
+    glm::vec3 sampleColor{0};        // the traced sample's linear colour
+    glm::vec3 pixelColor{0};         // the pixel's (average of its samples)
+    std::vector<GpuTraceLight> lights;
+};
 
 struct GpuRenderResult {
     Image image;                      // LinearAndClasses
     std::vector<PixelClass> classes;  // LinearAndClasses: per pixel, row-major like the image
     Rgb8Image encoded;                // Encoded8
+    // LinearClassesAndAov, per pixel from its first sample: the hit distance in world units
+    // (+inf for the background) and the shading normal (0 for the background).
+    std::vector<float> depth;
+    std::vector<glm::vec3> normals;
     Precision precision = Precision::F32;  // the variant that rendered (never Auto)
     GpuTiming timing;
     bool usedBvh = false;  // the spheres were traced through a BVH
@@ -61,6 +98,11 @@ public:
     using RowConsumer = std::function<void(std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows)>;
     GpuRenderResult renderEncodedRows(const Scene& scene, Precision precision, const RowConsumer& consume);
 
+    // Replays pixel (x, y) in the shader's trace mode and returns what it computed for sample
+    // `sample` (and the pixel's colour). The caller checks the ranges.
+    GpuPixelTrace tracePixel(const Scene& scene, Precision precision, std::uint32_t x, std::uint32_t y,
+                             std::uint32_t sample);
+
     // The precision render() would use for `scene`.
     Precision resolve(const Scene& scene, Precision requested) const;
 
@@ -72,10 +114,14 @@ private:
         const gpu::GpuPixel* pixels;
         const gpu::GpuPixelClass* classes;
         const gpu::GpuEncodedPixel* encoded;
+        const gpu::GpuAovPixel* aovs;
+        const std::byte* trace;
     };
-    // Sets `result`'s timing and usedBvh.
+    // Sets `result`'s timing and usedBvh. With `traceRequest` non-empty, one trace dispatch
+    // instead (see tracePixel): the trace buffer starts as those bytes.
     void renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
-                     GpuRenderResult& result, const std::function<void(const Band&)>& consume);
+                     GpuRenderResult& result, const std::function<void(const Band&)>& consume,
+                     std::span<const std::byte> traceRequest = {});
 
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
     struct SceneBindings {

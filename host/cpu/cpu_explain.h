@@ -1,0 +1,49 @@
+#pragma once
+// The CPU reference's decisions for one pixel, and its per-pixel AOVs, from the reference's own
+// functions (cpu_intersect, cpu_shading): what `hexray pixel` and `render --aov` print and write.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "cpu/cpu_intersect.h"
+#include "cpu/cpu_shading.h"
+#include "image/pixel_class.h"
+#include "scene/scene.h"
+
+namespace hexray {
+
+struct CpuLightExplanation {
+    LightDecision decision;
+    Color contribution{0.0};  // colour × intensity × cos θ / r² when lit, else 0
+};
+
+struct CpuPixelExplanation {
+    Ray ray;                                    // of the explained sample
+    std::vector<std::optional<Hit>> candidates;  // per node
+    std::optional<SceneHit> nearest;
+    bool constantShaded = false;
+    Color albedo{0.0};                   // the shader's colour at the hit
+    glm::dvec2 uv{0.0};                  // texture coordinates (checker only)
+    std::optional<glm::dvec2> checkerCell;  // floor(u/size), floor(v/size) (checker only)
+    std::vector<CpuLightExplanation> lights;  // empty for constant shaders and the background
+    Color sampleColor{0.0};
+    Color pixelColor{0.0};               // average over the pixel's samples, as renderOnCpu
+    PixelClass pixelClass;               // of the explained sample (renderOnCpu uses sample 0)
+};
+
+// Sample `sample` of pixel (x, y); the caller checks the ranges.
+CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint32_t y, std::uint32_t sample);
+
+// Per pixel, from its first sample (as the classes): the hit distance (+inf for the
+// background) and the shading normal (facing the ray; 0 for the background).
+struct CpuAovs {
+    std::vector<float> depth;
+    std::vector<glm::vec3> normals;
+};
+CpuAovs renderCpuAovs(const Scene& scene);
+
+}  // namespace hexray
