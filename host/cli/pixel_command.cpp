@@ -182,11 +182,21 @@ int runPixel(const PixelOptions& options) {
         table.row("ray direction", vec(g.rayDirection), vec(c.ray.direction),
                   differs(g.rayDirection, c.ray.direction, 1.0));
         std::printf("candidates\n");
+        // Nodes that every backend shown misses are only counted: a scene may have thousands.
+        std::size_t missedByAll = 0;
         for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
-            const double gt = useGpu ? g.candidates[i] : 0.0;
-            const double ct = useCpu && c.candidates[i] ? c.candidates[i]->t : std::numeric_limits<double>::infinity();
+            const double miss = std::numeric_limits<double>::infinity();
+            const double gt = useGpu ? g.candidates[i] : miss;
+            const double ct = useCpu && c.candidates[i] ? c.candidates[i]->t : miss;
+            if (std::isinf(gt) && std::isinf(ct)) {
+                ++missedByAll;
+                continue;
+            }
             table.row(format("  node %zu %s", i, kindName(scene.nodes[i].geometry)), distance(gt), distance(ct),
                       differs(gt, ct, 0.0));
+        }
+        if (missedByAll > 0) {
+            std::printf("  %zu other node%s: miss\n", missedByAll, missedByAll == 1 ? "" : "s");
         }
         const bool gpuHit = g.node != PixelClass::kBackground;
         const bool cpuHit = c.nearest.has_value();

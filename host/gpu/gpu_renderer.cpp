@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <type_traits>
 
 #include "camera/camera.h"
@@ -283,7 +284,7 @@ GpuPixelTrace unpackTrace(const Scene& scene, const std::byte* bytes, bool camer
     gpu::GpuTraceHeader<Real> header;
     std::memcpy(&header, bytes, sizeof header);
     if (header.result.x != 1) {
-        throw VulkanError("the trace dispatch wrote nothing");
+        throw std::runtime_error("internal error: the trace dispatch wrote nothing");
     }
     const glm::dvec3 eye = cameraRelative ? makePixelSheet(scene.camera, sheetAspect(scene)).origin : glm::dvec3(0);
     const auto world = [&](const gpu::RealVec4<Real>& p) { return eye + scale * glm::dvec3(p); };

@@ -1,8 +1,6 @@
 // The inspection features through the real executable: `hexray pixel`, `render --aov`,
 // `compare --mask` and `compare --aov`.
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -14,10 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/cli_fixture.h"
 #include "image/exr_io.h"
 #include "image/image_io.h"
 #include "support/lecture_demo.h"
-#include "support/test_paths.h"
 
 namespace hexray {
 namespace {
@@ -25,36 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 namespace demo = test::lecture_demo;
 
-struct CommandResult {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
-
-class InspectCliTest : public ::testing::Test {
+class InspectCliTest : public test::CliTest {
 protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "hexray-inspect-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    CommandResult hexray(const std::string& arguments) const {
-        const std::string command = "cd '" + dir_.string() + "' && '" HEXRAY_EXECUTABLE "' " + arguments +
-                                    " >stdout.txt 2>stderr.txt </dev/null";
-        const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(dir_ / "stdout.txt"), read(dir_ / "stderr.txt")};
-    }
-    static std::string read(const fs::path& path) {
-        std::ifstream in(path);
-        std::stringstream text;
-        text << in.rdbuf();
-        return text.str();
-    }
-    static std::string demoScene() { return "'" + test::sourcePath("scenes/lecture-demo.json").string() + "'"; }
-
-    fs::path dir_;
+    static std::string demoScene() { return scene("lecture-demo.json"); }
 };
 
 // The line of the table that starts with `label`.
@@ -69,7 +40,7 @@ std::string line(const std::string& text, const std::string& label) {
 }
 
 TEST_F(InspectCliTest, PixelExplainsALitFloorPixelIdenticallyOnBothBackends) {
-    const CommandResult run = hexray("pixel " + demoScene() + " " + std::to_string(demo::kFloorX) + " " +
+    const test::RunResult run = hexray("pixel " + demoScene() + " " + std::to_string(demo::kFloorX) + " " +
                            std::to_string(demo::kFloorY) + " --precision f32");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // The hit row shows node 0 at the analytic distance in both columns.
@@ -90,7 +61,7 @@ TEST_F(InspectCliTest, PixelExplainsALitFloorPixelIdenticallyOnBothBackends) {
 }
 
 TEST_F(InspectCliTest, PixelInTheSphereShadowSaysShadowedOnBothBackends) {
-    const CommandResult run = hexray("pixel " + demoScene() + " " + std::to_string(demo::kShadowX) + " " +
+    const test::RunResult run = hexray("pixel " + demoScene() + " " + std::to_string(demo::kShadowX) + " " +
                            std::to_string(demo::kShadowY));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string light = line(run.out, "light 0");
@@ -101,14 +72,14 @@ TEST_F(InspectCliTest, PixelInTheSphereShadowSaysShadowedOnBothBackends) {
 }
 
 TEST_F(InspectCliTest, PixelWithOneBackendPrintsOneColumn) {
-    const CommandResult run = hexray("pixel " + demoScene() + " 0 0 --backend cpu");
+    const test::RunResult run = hexray("pixel " + demoScene() + " 0 0 --backend cpu");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(line(run.out, "hit").find("background"), std::string::npos);
     EXPECT_EQ(run.out.find("gpu (shader trace)"), std::string::npos);
 }
 
 TEST_F(InspectCliTest, PixelOutsideTheImageIsBadInput) {
-    CommandResult run = hexray("pixel " + demoScene() + " 800 10");
+    test::RunResult run = hexray("pixel " + demoScene() + " 800 10");
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("X = 800 is outside the image: the width is 800, so X must be in 0..799"),
               std::string::npos)
@@ -127,7 +98,7 @@ TEST_F(InspectCliTest, RenderAovFilesHoldTheAnalyticValuesOnBothBackends) {
     // f64 so that the backends' depths agree to float rounding even near the horizon, where
     // f32's direction rounding is amplified (pixel_trace_test checks the f32 AOVs).
     ASSERT_EQ(hexray("render " + demoScene() + " -o gpu.png --precision f64 --aov gpu-aov").exitCode, 0);
-    const CommandResult cpuRun = hexray("render " + demoScene() + " -o cpu.png --backend cpu --aov cpu-aov");
+    const test::RunResult cpuRun = hexray("render " + demoScene() + " -o cpu.png --backend cpu --aov cpu-aov");
     ASSERT_EQ(cpuRun.exitCode, 0) << cpuRun.err;
     EXPECT_NE(cpuRun.out.find("wrote 8 AOV files"), std::string::npos) << cpuRun.out;
     const auto at = [](std::uint32_t x, std::uint32_t y) { return std::size_t(y) * 800 + x; };
@@ -177,7 +148,7 @@ TEST_F(InspectCliTest, RenderAovFilesHoldTheAnalyticValuesOnBothBackends) {
 
 TEST_F(InspectCliTest, CompareMaskMarksTheReportedMismatchesAndAmbiguousPixels) {
     // f32-naive disagrees with the reference on a few dozen unambiguous pixels of this scene.
-    const CommandResult run = hexray("compare " + demoScene() + " --precision f32-naive --mask mask.png --aov aov");
+    const test::RunResult run = hexray("compare " + demoScene() + " --precision f32-naive --mask mask.png --aov aov");
     ASSERT_EQ(run.exitCode, 1) << run.out << run.err;
     std::smatch match;
     ASSERT_TRUE(std::regex_search(run.out, match, std::regex(R"(ambiguous pixels[^:]*: (\d+))")));
@@ -209,7 +180,7 @@ TEST_F(InspectCliTest, CompareMaskMarksTheReportedMismatchesAndAmbiguousPixels) 
 }
 
 TEST_F(InspectCliTest, CompareMaskHasNoRedWhenTheRendersAgree) {
-    const CommandResult run = hexray("compare " + demoScene() + " --precision f32 --mask mask.png");
+    const test::RunResult run = hexray("compare " + demoScene() + " --precision f32 --mask mask.png");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
     const Rgb8Image mask = readPng(dir_ / "mask.png");
     std::size_t blue = 0;
@@ -218,6 +189,30 @@ TEST_F(InspectCliTest, CompareMaskHasNoRedWhenTheRendersAgree) {
         blue += mask.bytes[i + 2] == 255;
     }
     EXPECT_GT(blue, 0u);  // the shadow's edge and the silhouettes have ambiguous pixels
+}
+
+// A scene large enough for the BVH: the GPU trace follows the tree, the table lists only the
+// nodes some backend hits and counts the rest.
+TEST_F(InspectCliTest, PixelListsOnlyTheNodesHitInAManySphereScene) {
+    // A 21 x 15 wall of spheres (radius 0.9, 2 apart) at z = 50 behind a floor at y = -5; the
+    // centre pixel's ray passes within 0.5 of the sphere at (0, 14, 50): node 1 + 10 * 15 + 7.
+    std::string nodes = R"({"geometry": {"type": "plane", "y": -5}, "shader": "s"})";
+    for (int i = 0; i <= 20; ++i) {
+        for (int j = 0; j < 15; ++j) {
+            nodes += R"(, {"geometry": {"type": "sphere", "center": [)" + std::to_string(2 * i - 20) + ", " +
+                     std::to_string(2 * j) + R"(, 50], "radius": 0.9}, "shader": "s"})";
+        }
+    }
+    writeScene("wall.json", R"({"image": {"width": 128, "height": 96},
+        "camera": {"position": [0, 14, -50], "yaw": 0, "pitch": 0, "roll": 0, "fov": 60},
+        "lights": [{"position": [0, 40, -40], "color": [1, 1, 1], "intensity": 5000}],
+        "shaders": {"s": {"type": "lambert", "color": [0.5, 0.5, 0.5]}},
+        "nodes": [)" + nodes + "]}");
+    const test::RunResult run = hexray("pixel wall.json 64 48");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(line(run.out, "hit").find("node 158, t = "), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("  314 other nodes: miss"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("gpu and cpu agree"), std::string::npos) << run.out;
 }
 
 }  // namespace
