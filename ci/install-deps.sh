@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package hexray needs to build, render and test.
-# Idempotent: safe to run again; apt skips what is already installed.
+# `--bench` adds what only ci/bench-report.sh uses: Embree 3 (the bench's optional yardstick)
+# and matplotlib (the plot). Idempotent: safe to run again; apt skips what is already installed.
 set -euo pipefail
 
 packages=(
@@ -8,6 +9,11 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   libglm-dev libstb-dev libspng-dev nlohmann-json3-dev libcli11-dev libgtest-dev
 )
+case "${1:-}" in
+  --bench) packages+=(libembree-dev python3-matplotlib) ;;
+  "") ;;
+  *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
