@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package hexray needs to build, render and test.
-# Idempotent: safe to run again; apt skips what is already installed.
+# `--bench` adds what only ci/bench-report.sh uses: Embree 3 (the bench's optional yardstick)
+# and matplotlib (the plot). Idempotent: safe to run again; apt skips what is already installed.
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,11 @@ packages=(
   libglm-dev libstb-dev libspng-dev libtinyexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
   clang-14 libclang-rt-14-dev  # the scene-loader fuzzer: clang with libFuzzer and its sanitizers
 )
+case "${1:-}" in
+  --bench) packages+=(libembree-dev python3-matplotlib) ;;
+  "") ;;
+  *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

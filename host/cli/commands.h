@@ -77,6 +77,10 @@ struct PixelOptions {
 
 struct BenchOptions {
     std::vector<std::string> scenePaths;
+    // The scaling curve: a random-sphere scene (scene/random_spheres.h) for each count.
+    std::vector<std::uint32_t> sphereCounts;
+    // Curve configurations predicted to take longer per frame are not measured (nor larger N).
+    double maxFrameSeconds = 5.0;
     ImageOverride image;
     VulkanOptions vulkan;
     unsigned rounds = 5;

@@ -119,8 +119,20 @@ int main(int argc, char** argv) {
     CLI::App* benchCommand = app.add_subcommand(
         "bench",
         "Measure speed against error: interleaved rounds of every backend, precision and sample count on each "
-        "scene, against a converged CPU reference; prints a table and optionally writes CSV");
-    benchCommand->add_option("scenes", bench.scenePaths, "Scene files")->required();
+        "scene, against a converged CPU reference, and the scaling curve over random-sphere scenes; prints "
+        "tables and optionally writes CSV");
+    benchCommand->add_option("scenes", bench.scenePaths, "Scene files");
+    benchCommand->add_option("--spheres", bench.sphereCounts,
+                             "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
+                             "scene each, measured on every backend")
+        ->check(CLI::Range(1u, 1000000u))
+        ->allow_extra_args(false)  // one comma-separated list, so scene files may follow it
+        ->delimiter(',');
+    benchCommand->add_option("--max-frame-seconds", bench.maxFrameSeconds,
+                             "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
+                             "not measured at that sphere count or above")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     addImageOptions(*benchCommand, bench.image);
     addDeviceOption(*benchCommand, bench.vulkan);
     benchCommand->add_option("--rounds", bench.rounds, "Interleaved rounds")->check(CLI::Range(1u, 1000u))
@@ -160,6 +172,9 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
         if (renderCommand->parsed() && renderBackend == "cpu" && renderCommand->count("--precision") > 0) {
             throw CLI::ValidationError("--precision", "applies to the GPU backend only");
+        }
+        if (benchCommand->parsed() && bench.scenePaths.empty() && bench.sphereCounts.empty()) {
+            throw CLI::ValidationError("bench", "needs scene files, --spheres, or both");
         }
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);

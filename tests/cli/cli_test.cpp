@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -107,22 +110,104 @@ TEST_F(CliTest, PrecisionWithTheCpuBackendIsRejected) {
     EXPECT_TRUE(createdFiles().empty());
 }
 
+#ifdef HEXRAY_WITH_EMBREE
+constexpr bool kWithEmbree = true;
+#else
+constexpr bool kWithEmbree = false;
+#endif
+
+// The CSV's rows as field lists, keyed by nothing: the header is row 0.
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        std::vector<std::string> fields;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) {
+            fields.push_back(cell);
+        }
+        if (!line.empty() && line.back() == ',') {
+            fields.emplace_back();
+        }
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
+// The named column of a CSV row, found through the header.
+std::string field(const std::vector<std::vector<std::string>>& rows, std::size_t row, const std::string& column) {
+    const auto& header = rows.at(0);
+    const auto at = std::find(header.begin(), header.end(), column);
+    EXPECT_NE(at, header.end()) << column;
+    return rows.at(row).at(std::size_t(at - header.begin()));
+}
+
 TEST_F(CliTest, BenchPrintsSpeedAgainstErrorAndWritesCsv) {
     const RunResult run = hexray("bench " + scene("lecture-demo.json") +
                                  " --width 48 --height 36 --rounds 2 --samples 1 --reference-samples 4 --csv b.csv");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.out.find("| scene | resolution | backend | precision | spp | Mpix/s median |"), std::string::npos)
         << run.out;
-    const std::string csv = readFile(dir_ / "b.csv");
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5) << csv;  // header + f32-naive, f32, f64, cpu-reference
-    // The robust shader agrees with the reference on every unambiguous pixel: topology 0.
-    EXPECT_NE(csv.find("lecture-demo,48,36,lavapipe,f32,1,"), std::string::npos) << csv;
-    for (const std::string& line : {std::string("lavapipe,f32,1,"), std::string("lavapipe,f64,1,")}) {
-        const auto at = csv.find(line);
-        ASSERT_NE(at, std::string::npos) << csv;
-        const std::string row = csv.substr(at, csv.find('\n', at) - at);
-        EXPECT_EQ(row.substr(row.rfind(',') + 1), "0") << row;
+    const auto rows = csvRows(readFile(dir_ / "b.csv"));
+    // header + f32-naive, f32, f64, cpu-reference (+ embree)
+    ASSERT_EQ(rows.size(), kWithEmbree ? 6u : 5u) << readFile(dir_ / "b.csv");
+    for (std::size_t row = 1; row < rows.size(); ++row) {
+        EXPECT_EQ(field(rows, row, "scene"), "lecture-demo");
+        EXPECT_EQ(field(rows, row, "width"), "48");
+        EXPECT_GT(std::stod(field(rows, row, "median_mpix_s")), 0.0);
+        const std::string backend = field(rows, row, "backend");
+        const std::string precision = field(rows, row, "precision");
+        // The robust shader, the reference itself and Embree agree with the reference on every
+        // unambiguous pixel: topology 0. Their colour is within a few levels of the converged image.
+        if (precision != "f32-naive") {
+            EXPECT_EQ(field(rows, row, "topology_mismatches"), "0") << backend << ' ' << precision;
+        }
+        EXPECT_EQ(field(rows, row, "vs_embree").empty(), !kWithEmbree) << backend;
     }
+    EXPECT_NE(run.out.find(kWithEmbree ? "Embree: Embree 3." : "built without Embree"), std::string::npos) << run.out;
+}
+
+TEST_F(CliTest, BenchSphereCurveHasARowPerBackendAndCount) {
+    const RunResult run = hexray("bench --spheres 1,20 --width 64 --height 36 --rounds 1 --samples 1 --csv c.csv");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("| spheres | resolution | backend | precision | spp | Mpix/s median |"), std::string::npos)
+        << run.out;
+    const std::string text = readFile(dir_ / "c.csv");
+    const auto rows = csvRows(text);
+    const std::size_t backends = kWithEmbree ? 3 : 2;  // lavapipe f32, cpu-reference (, embree)
+    ASSERT_EQ(rows.size(), 1 + 2 * backends) << text;
+    std::map<std::string, int> perCount;
+    for (std::size_t row = 1; row < rows.size(); ++row) {
+        SCOPED_TRACE(text);
+        EXPECT_EQ(field(rows, row, "scene"), "random-spheres");
+        EXPECT_EQ(field(rows, row, "width"), "64");
+        EXPECT_EQ(field(rows, row, "height"), "36");
+        ++perCount[field(rows, row, "spheres")];
+        EXPECT_GT(std::stod(field(rows, row, "median_mpix_s")), 0.0);
+        EXPECT_GT(std::stod(field(rows, row, "core_ns_per_pixel")), 0.0);
+        EXPECT_GE(std::stoi(field(rows, row, "threads")), 1);
+        const std::string backend = field(rows, row, "backend");
+        // The curve's reference is the CPU reference at the same sample count: its own row is exact.
+        if (backend == "cpu-reference") {
+            EXPECT_EQ(field(rows, row, "rmse_levels"), "0");
+        }
+        EXPECT_LT(std::stod(field(rows, row, "rmse_levels")), 1.0) << backend;
+        EXPECT_EQ(field(rows, row, "topology_mismatches"), "0") << backend;
+        if (kWithEmbree) {
+            const double versus = std::stod(field(rows, row, "vs_embree"));
+            EXPECT_GT(versus, 0.0);
+            if (backend == "embree") {
+                EXPECT_EQ(versus, 1.0);
+            }
+        }
+    }
+    EXPECT_EQ(perCount, (std::map<std::string, int>{{"1", int(backends)}, {"20", int(backends)}}));
+}
+
+TEST_F(CliTest, BenchWithNothingToMeasureIsBadInput) {
+    const RunResult run = hexray("bench --rounds 1");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("--spheres"), std::string::npos) << run.err;
 }
 
 TEST_F(CliTest, AnUnwritableOutputIsExitCode5AndLeavesNothing) {
