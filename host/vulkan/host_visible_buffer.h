@@ -22,7 +22,11 @@ public:
     vk::DeviceSize size() const { return size_; }
     std::byte* data() const { return mapped_; }
 
-    void upload(std::span<const std::byte> bytes) { std::memcpy(mapped_, bytes.data(), bytes.size()); }
+    void upload(std::span<const std::byte> bytes) {
+        if (!bytes.empty()) {  // an empty span may have a null data(), which memcpy must not get
+            std::memcpy(mapped_, bytes.data(), bytes.size());
+        }
+    }
 
 private:
     vk::DeviceSize size_;
