@@ -52,7 +52,7 @@ interleaved runs of each precision in this run (median, then all runs):
 COST
   for run in 1 2 3 4 5; do
     for precision in f32 f64; do
-      ./build/hexray render scenes/lecture-demo.json -o /tmp/hexray-accuracy-cost.png \
+      ./build/hexray render scenes/lecture-demo.json --backend gpu -o /tmp/hexray-accuracy-cost.png \
         --width 1920 --height 1080 --precision "$precision" |
         sed -n "s/.*gpu $precision .*render \([0-9.]*\) ms.*/$precision \1/p"
     done

@@ -10,7 +10,7 @@ bash ci/build.sh --bench >/dev/null
 start_seconds=$(date +%s)
 
 # The sphere curve: N random spheres over a plane at 1080p, one sample per pixel, three rounds
-# (a 100k-sphere frame of the CPU reference alone takes about a minute here).
+# (a 100k-sphere frame of the CPU reference alone takes several seconds here).
 curve_counts=1,10,100,1000,10000,100000
 curve_rounds=3
 
@@ -30,11 +30,11 @@ output=$(mktemp -d)
 whole_process() {
   local start end
   start=$(date +%s%N)
-  "$@" $hexray render scenes/lecture-demo.json --width 1920 --height 1080 -o "$output/demo.png" >/dev/null
+  "$@" $hexray render scenes/lecture-demo.json --backend gpu --width 1920 --height 1080 -o "$output/demo.png" >/dev/null
   end=$(date +%s%N)
   echo $(((end - start) / 1000000))
 }
-$hexray render scenes/lecture-demo.json --width 1920 --height 1080 -o "$output/demo.png" >/dev/null  # fill the cache
+$hexray render scenes/lecture-demo.json --backend gpu --width 1920 --height 1080 -o "$output/demo.png" >/dev/null  # fill the cache
 warm=() cold=()
 for _ in 1 2 3 4 5 6 7; do
   warm+=("$(whole_process env)")
@@ -106,7 +106,7 @@ $bench_curve
 
 ## Whole process
 
-\`hexray render scenes/lecture-demo.json --width 1920 --height 1080 -o demo.png\`, from exec
+\`hexray render scenes/lecture-demo.json --backend gpu --width 1920 --height 1080 -o demo.png\`, from exec
 to exit, seven interleaved runs (median; all runs in ms):
 
 | Mesa shader cache | median ms | runs |

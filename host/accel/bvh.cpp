@@ -161,7 +161,11 @@ bool bvhPays(const Scene& scene) {
 
 Bvh buildBvh(const Scene& scene) {
     std::vector<Item> items;
+    std::vector<std::uint32_t> planeNodes;
     for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+        if (std::holds_alternative<Plane>(scene.nodes[index].geometry)) {
+            planeNodes.push_back(static_cast<std::uint32_t>(index));
+        }
         if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[index].geometry)) {
             const double r = std::abs(sphere->radius);
             Item item;
@@ -172,7 +176,9 @@ Bvh buildBvh(const Scene& scene) {
             items.push_back(item);
         }
     }
-    return Builder(std::move(items)).build();
+    Bvh bvh = Builder(std::move(items)).build();
+    bvh.planeNodes = std::move(planeNodes);
+    return bvh;
 }
 
 }  // namespace hexray

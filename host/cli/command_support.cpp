@@ -69,8 +69,4 @@ int withValidationVerdict(int commandCode, const ValidationLog& log) {
     return kValidationFailed;
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace hexray::cli

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "util/milliseconds_since.h"
 #include "cli/commands.h"
 #include "scene/scene.h"
 #include "vulkan/vulkan_context.h"
@@ -25,7 +26,5 @@ Scene loadScene(const std::string& path, const ImageOverride& image);
 // Validation messages fail the command: a tester's run must be clean, not merely finish.
 // `commandCode` wins when it is already a failure.
 int withValidationVerdict(int commandCode, const ValidationLog& log);
-
-double millisecondsSince(std::chrono::steady_clock::time_point start);
 
 }  // namespace hexray::cli

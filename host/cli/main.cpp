@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     benchCommand->add_option("--max-frame-seconds", bench.maxFrameSeconds,
                              "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
-                             "not measured at that sphere count or above")
+                             "not measured at that sphere count (its error columns still use a CPU reference render)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     addImageOptions(*benchCommand, bench.image);
@@ -170,7 +170,10 @@ int main(int argc, char** argv) {
 
     try {
         app.parse(argc, argv);
-        if (renderCommand->parsed() && renderBackend == "cpu" && renderCommand->count("--precision") > 0) {
+        const bool cpuOnlyWithPrecision =
+            (renderCommand->parsed() && renderBackend == "cpu" && renderCommand->count("--precision") > 0) ||
+            (pixelCommand->parsed() && pixelBackend == "cpu" && pixelCommand->count("--precision") > 0);
+        if (cpuOnlyWithPrecision) {
             throw CLI::ValidationError("--precision", "applies to the GPU backend only");
         }
         if (benchCommand->parsed() && bench.scenePaths.empty() && bench.sphereCounts.empty()) {

@@ -169,8 +169,7 @@ int runPixel(const PixelOptions& options) {
         float margin = 0.0f;
         if (useCpu) {
             c = explainPixel(scene, x, y, sample);
-            const CpuRender render = renderOnCpu(scene, 0);
-            margin = render.margins[std::size_t(y) * scene.image.width + x];
+            margin = pixelMargin(scene, x, y);
             std::printf("cpu: double-precision reference, world units\n");
         }
         std::printf("\n");

@@ -47,25 +47,12 @@ private:
     bool started_ = false;
 };
 
-// Renders on the GPU into `writer`, band by band, or whole with the AOVs (written to
-// options.aovDirectory, their paths to `aovFiles`); returns how, for the summary line.
+// Renders on the GPU into `writer`, band by band; then, with --aov, the AOVs (written to
+// options.aovDirectory, their paths to `aovFiles`). Returns how, for the summary line.
 std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
                         std::vector<std::filesystem::path>& aovFiles) {
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
-    char how[512];
-    if (!options.aovDirectory.empty()) {
-        // The AOVs come from the shader's AOV mode, with the linear image and classes.
-        GpuRenderResult result = renderer.render(scene, options.precision, GpuOutput::LinearClassesAndAov);
-        writer.writeRows(encodeImage(result.image, scene.image.encoding).bytes);
-        aovFiles = writeAovs(options.aovDirectory,
-                             AovSet{scene.image.width, scene.image.height, std::move(result.depth),
-                                    std::move(result.normals), std::move(result.classes), scene.lights.size()});
-        std::snprintf(how, sizeof how, "gpu %s (%s) with AOVs: render %.2f ms",
-                      std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
-                      result.timing.renderMilliseconds);
-        return how;
-    }
     Progress progress(scene.image.height);
     // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
     // sits whole in memory.
@@ -74,10 +61,19 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
             writer.writeRows(rgbRows);
             progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
         });
+    char how[512];
     std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s, first dispatch %.1f ms incl. shader compile",
                   std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
                   result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
                   result.timing.firstDispatchMilliseconds);
+    if (!options.aovDirectory.empty()) {
+        // A second pass in the shader's AOV mode, so that the image is the one a render
+        // without --aov writes (encoded on the device); the AOVs are held whole, for the EXR files.
+        GpuRenderResult aovs = renderer.render(scene, result.precision, GpuOutput::LinearClassesAndAov);
+        aovFiles = writeAovs(options.aovDirectory,
+                             AovSet{scene.image.width, scene.image.height, std::move(aovs.depth),
+                                    std::move(aovs.normals), std::move(aovs.classes), scene.lights.size()});
+    }
     return how;
 }
 

@@ -213,14 +213,12 @@ std::optional<SceneHit> findNearestHit(const Ray& ray, const Scene& scene, const
         return nearest;
     }
 
-    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
-        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
-            const std::optional<Hit> hit = intersectPlane(ray, *plane);
-            if (hit && isBefore(*hit, index, nearest)) {
-                nearest = SceneHit{*hit, index};
-            }
+    forEachPlane(scene, bvh, [&](std::size_t index, const Plane& plane) {
+        const std::optional<Hit> hit = intersectPlane(ray, plane);
+        if (hit && isBefore(*hit, index, nearest)) {
+            nearest = SceneHit{*hit, index};
         }
-    }
+    });
     forEachSphereAlongRay(ray, *bvh, [&](std::uint32_t index) {
         const std::optional<Hit> hit = intersectSphere(ray, std::get<Sphere>(scene.nodes[index].geometry));
         if (hit && isBefore(*hit, index, nearest)) {

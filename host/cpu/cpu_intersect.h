@@ -65,4 +65,21 @@ BvhTolerance bvhTolerance(const Ray& ray, const Bvh& bvh);
 // missed, and is entered at or before t + tSlack.
 std::optional<double> bvhBoxEntry(const Ray& ray, const BvhNode& node, double pad);
 
+// Calls visit(index, plane) for every plane node, in scene order: from the BVH's list when
+// there is one, so that a ray in a scene of many spheres does not scan every node.
+template <typename Visit>
+void forEachPlane(const Scene& scene, const Bvh* bvh, Visit&& visit) {
+    if (bvh) {
+        for (const std::uint32_t index : bvh->planeNodes) {
+            visit(std::size_t{index}, std::get<Plane>(scene.nodes[index].geometry));
+        }
+        return;
+    }
+    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
+            visit(index, *plane);
+        }
+    }
+}
+
 }  // namespace hexray

@@ -160,12 +160,10 @@ void addIntersectionMarginsBvh(const Scene& scene, const Bvh& bvh, const Ray& ra
             margins.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
         }
     };
-    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
-        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
-            margins.add(cameraRayPlaneMargin(ray.direction.y, plane->height - eye.y));
-            addNearestNodeMargin(index, intersectPlane(ray, *plane));
-        }
-    }
+    forEachPlane(scene, &bvh, [&](std::size_t index, const Plane& plane) {
+        margins.add(cameraRayPlaneMargin(ray.direction.y, plane.height - eye.y));
+        addNearestNodeMargin(index, intersectPlane(ray, plane));
+    });
     forEachSphereThatMayMatter(bvh, ray, eye, 0.0, margins, [&](std::uint32_t index) {
         const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
         margins.add(sphereCrossingMargin(ray, sphere, kNoEnd, sphereScale(sphere, eye)));
@@ -221,18 +219,19 @@ void addShadowMargins(const Scene& scene, const Bvh* bvh, std::size_t shadedNode
         const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
         margins.add(sphereCrossingMargin(shadowRay, sphere, distance, segmentScale + sphereScale(sphere, eye)));
     };
-    for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
-        if (index == shadedNode) {
-            continue;
+    forEachPlane(scene, bvh, [&](std::size_t index, const Plane& plane) {
+        if (index != shadedNode) {
+            margins.add(planeSegmentMargin(hit.point.y - plane.height, light.position.y - plane.height,
+                                           segmentScale + std::abs(plane.height - eye.y)));
         }
-        if (const auto* plane = std::get_if<Plane>(&scene.nodes[index].geometry)) {
-            margins.add(planeSegmentMargin(hit.point.y - plane->height, light.position.y - plane->height,
-                                           segmentScale + std::abs(plane->height - eye.y)));
-        } else if (!bvh) {
-            addSphereMargin(index);
+    });
+    if (!bvh) {
+        for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
+            if (index != shadedNode && std::holds_alternative<Sphere>(scene.nodes[index].geometry)) {
+                addSphereMargin(index);
+            }
         }
-    }
-    if (bvh) {
+    } else {
         forEachSphereThatMayMatter(*bvh, shadowRay, eye, segmentScale, margins, [&](std::uint32_t index) {
             if (index != shadedNode) {
                 addSphereMargin(index);
@@ -289,25 +288,43 @@ TracedPixel tracePixel(const Scene& scene, const Bvh* bvh, const Ray& ray) {
     return {shadeNearest(scene, bvh, nearest), classify(scene, bvh, nearest), margins.stored()};
 }
 
+// One pixel: the average of its samples, classified by its first.
+struct RenderedPixel {
+    Color color;
+    PixelClass pixelClass;
+    float margin;
+};
+
+RenderedPixel renderPixel(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t x,
+                          std::uint32_t y) {
+    // With several samples the pixel is classified by its first and is as ambiguous as its
+    // closest call: only then do equal classes mean equal colours.
+    const std::uint32_t samples = scene.image.samplesPerPixel;
+    const TracedPixel first = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, 0));
+    Color sum = first.color;
+    float margin = first.margin;
+    for (std::uint32_t sample = 1; sample < samples; ++sample) {
+        const TracedPixel pixel = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, sample));
+        sum += pixel.color;
+        margin = std::min(margin, pixel.margin);
+    }
+    return {sum / double(samples), first.pixelClass, margin};
+}
+
 void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
     Image& image = render.image;
-    const std::uint32_t samples = scene.image.samplesPerPixel;
     for (std::uint32_t x = 0; x < image.width; ++x) {
-        // With several samples the pixel is classified by its first and is as ambiguous as its
-        // closest call: only then do equal classes mean equal colours.
-        const TracedPixel first = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, 0));
-        Color sum = first.color;
-        float margin = first.margin;
-        for (std::uint32_t sample = 1; sample < samples; ++sample) {
-            const TracedPixel pixel = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, sample));
-            sum += pixel.color;
-            margin = std::min(margin, pixel.margin);
-        }
+        const RenderedPixel pixel = renderPixel(scene, bvh, sheet, x, y);
         const std::size_t index = std::size_t(y) * image.width + x;
-        image.pixels[index] = glm::vec3(sum / double(samples));  // linear, not clamped: encoding happens later
-        render.classes[index] = first.pixelClass;
-        render.margins[index] = margin;
+        image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
+        render.classes[index] = pixel.pixelClass;
+        render.margins[index] = pixel.margin;
     }
+}
+
+std::optional<Bvh> bvhFor(const Scene& scene, Acceleration acceleration) {
+    const bool useBvh = acceleration == Acceleration::Bvh || (acceleration == Acceleration::Auto && bvhPays(scene));
+    return useBvh ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
 }
 
 // A bad index would otherwise throw inside a worker thread, which ends the program.
@@ -344,9 +361,7 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acc
     }
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
     // Built once per render and shared, read-only, by every worker.
-    const bool useBvh = acceleration == Acceleration::Bvh ||
-                        (acceleration == Acceleration::Auto && bvhPays(scene));
-    const std::optional<Bvh> bvh = useBvh ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
+    const std::optional<Bvh> bvh = bvhFor(scene, acceleration);
     const Bvh* const bvhOrNull = bvh ? &*bvh : nullptr;
 
     threadCount = std::min(cpuThreadCount(threadCount), image.height);
@@ -368,6 +383,13 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acc
         renderRows(0);  // the calling thread is worker 0
     }
     return render;
+}
+
+float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y) {
+    checkShaderIndices(scene);
+    const std::optional<Bvh> bvh = bvhFor(scene, Acceleration::Auto);
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    return renderPixel(scene, bvh ? &*bvh : nullptr, sheet, x, y).margin;
 }
 
 }  // namespace hexray

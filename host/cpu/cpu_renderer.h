@@ -45,4 +45,7 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
 // gives the same image, classes and margins bit for bit.
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration);
 
+// The margin renderOnCpu would give pixel (x, y), without rendering the others.
+float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y);
+
 }  // namespace hexray

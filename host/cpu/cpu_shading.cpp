@@ -80,14 +80,14 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
     }
     // A plane blocks the segment exactly when its ends lie strictly on opposite sides: decided
     // without a division, so a light lying in a plane is never blocked by that plane.
-    for (const Node& node : scene.nodes) {
-        if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
-            const double fromSide = from.y - plane->height;
-            const double toSide = to.y - plane->height;
-            if ((fromSide < 0.0 && toSide > 0.0) || (fromSide > 0.0 && toSide < 0.0)) {
-                return false;
-            }
-        }
+    bool planeBlocks = false;
+    forEachPlane(scene, bvh, [&](std::size_t, const Plane& plane) {
+        const double fromSide = from.y - plane.height;
+        const double toSide = to.y - plane.height;
+        planeBlocks = planeBlocks || (fromSide < 0.0 && toSide > 0.0) || (fromSide > 0.0 && toSide < 0.0);
+    });
+    if (planeBlocks) {
+        return false;
     }
     const Ray shadowRay{from, toTarget / distance};
     return !hasSphereHitBefore(shadowRay, scene, maxDistance, bvh);

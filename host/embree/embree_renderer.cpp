@@ -15,6 +15,7 @@
 
 #include "camera/camera.h"
 #include "cpu/cpu_shading.h"
+#include "util/milliseconds_since.h"
 
 namespace hexray {
 
@@ -25,10 +26,6 @@ void check(RTCDevice device, const char* what) {
     if (error != RTC_ERROR_NONE) {
         throw std::runtime_error(std::string("Embree: ") + what + " failed (RTCError " + std::to_string(error) + ")");
     }
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // The scene as Embree and the shading below see it.
@@ -225,7 +222,6 @@ EmbreeRender EmbreeRenderer::render(const Scene& scene) const {
     render.image = Image(scene.image.width, scene.image.height);
     render.classes.resize(render.image.pixels.size());
 
-    const auto buildStart = std::chrono::steady_clock::now();
     Prepared prepared(scene, scene.camera.position);
     prepared.spheres = rtcNewScene(device_);
     check(device_, "rtcNewScene");
@@ -257,7 +253,6 @@ EmbreeRender EmbreeRenderer::render(const Scene& scene) const {
     }
     rtcCommitScene(prepared.spheres);
     check(device_, "rtcCommitScene");
-    render.buildMilliseconds = millisecondsSince(buildStart);
 
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;

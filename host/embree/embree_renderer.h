@@ -25,7 +25,6 @@ namespace hexray {
 struct EmbreeRender {
     Image image;                      // linear, like the CPU reference's
     std::vector<PixelClass> classes;  // of each pixel's first sample, like the other renderers
-    double buildMilliseconds = 0;     // rtcCommitScene: Embree's BVH over the spheres
     double renderMilliseconds = 0;    // tracing and shading every sample, all threads
 };
 

@@ -14,6 +14,7 @@
 
 #include "gpu/gpu_layout.h"
 #include "gpu/gpu_scene.h"
+#include "util/milliseconds_since.h"
 #include "vulkan/host_visible_buffer.h"
 
 namespace {
@@ -169,9 +170,16 @@ std::chrono::nanoseconds dispatchTimeout(const Scene& scene, std::uint64_t sampl
     return std::chrono::nanoseconds(std::int64_t(std::min(seconds, 30.0 * 86400.0) * 1e9));
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
+// Runs `leak` on destruction when the context's device hung.
+struct LeakIfAbandoned {
+    const VulkanContext& context;
+    std::function<void()> leak;
+    ~LeakIfAbandoned() {
+        if (context.abandoned()) {
+            leak();
+        }
+    }
+};
 
 }  // namespace
 
@@ -191,6 +199,20 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
         timestamps_ = vk::raii::QueryPool(context.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
         nanosecondsPerTick_ = context.physicalDevice().getProperties().limits.timestampPeriod;
         timestampMask_ = validBits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << validBits) - 1;
+    }
+}
+
+GpuRenderer::~GpuRenderer() {
+    if (context_.abandoned()) {  // the hung work may still use them: see LeakIfAbandoned
+        for (auto& [key, pipeline] : pipelines_) {
+            pipeline.release();
+        }
+        for (SceneBindings* bindings : {&uniformScene_, &storageScene_}) {
+            bindings->pipelineLayout.release();
+            bindings->setLayout.release();
+        }
+        timestamps_.release();
+        commandPool_.release();
     }
 }
 
@@ -414,7 +436,7 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, std::uint32_t(setBindings.size())),
         vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, std::uint32_t(setBindings.size()))};
-    const vk::raii::DescriptorPool pool(
+    vk::raii::DescriptorPool pool(
         device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
     const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
@@ -432,7 +454,19 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     vk::raii::CommandBuffers commandBuffers(
         device, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
     const vk::raii::CommandBuffer& commands = commandBuffers[0];
-    const vk::raii::Fence done(device, vk::FenceCreateInfo());
+    vk::raii::Fence done(device, vk::FenceCreateInfo());
+    // Destroyed first when a hang unwinds this scope: the hung dispatch may still be using the
+    // objects above, so they are leaked with the device instead (VulkanContext::abandoned()).
+    const LeakIfAbandoned leakIfAbandoned{context_, [&] {
+        for (HostVisibleBuffer* buffer : {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
+                                          &encodedBuffer, &aovBuffer, &traceBuffer, &bvhBuffer, &primitiveBuffer}) {
+            buffer->abandon();
+        }
+        sets[0].release();
+        pool.release();
+        commandBuffers[0].release();
+        done.release();
+    }};
 
     // Records, submits and waits for one dispatch; returns its duration in milliseconds.
     const auto runDispatch = [&](GpuBand band, std::uint32_t groupsX, std::uint32_t groupsY, bool timed) {

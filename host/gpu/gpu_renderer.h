@@ -84,6 +84,9 @@ public:
     static constexpr std::uint64_t kDefaultMaxBandBytes = std::uint64_t{256} << 20;
 
     explicit GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes = kDefaultMaxBandBytes);
+    ~GpuRenderer();
+    GpuRenderer(const GpuRenderer&) = delete;
+    GpuRenderer& operator=(const GpuRenderer&) = delete;
 
     // Precision::Auto picks per scene (choosePrecision). Throws VulkanError for F64 on a
     // device without shaderFloat64.

@@ -4,7 +4,7 @@
 //   no-compute-queue      the devices' queue families report no compute bit
 //   no-float64            the devices' features report no shaderFloat64
 //   device-lost           the fence wait of a render ends in VK_ERROR_DEVICE_LOST
-//   device-hang           the fence wait of a render times out (after the real work finished)
+//   device-hang           the fence wait of a render times out at once (the work still running)
 //   out-of-device-memory  the render's buffer allocation fails with VK_ERROR_OUT_OF_DEVICE_MEMORY
 // Unset or empty: no fault. Any other value is an error, so a mistyped test cannot pass quietly.
 

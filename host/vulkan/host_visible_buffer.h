@@ -28,6 +28,13 @@ public:
         }
     }
 
+    // Leaves the buffer and its memory (still mapped) to a device that hung: see
+    // VulkanContext::abandoned().
+    void abandon() {
+        buffer_.release();
+        memory_.release();
+    }
+
 private:
     vk::DeviceSize size_;
     vk::raii::DeviceMemory memory_;  // declared first so the buffer is destroyed before it

@@ -256,11 +256,14 @@ void VulkanContext::submitAndWait(const vk::raii::CommandBuffer& commands, const
     vk::Result result;
     try {
         queue_.submit(vk::SubmitInfo({}, {}, *commands), *fence);
-        result = device_.waitForFences(*fence, VK_TRUE, std::uint64_t(timeout.count()));
+        // An injected hang does not wait, so the abandoned work is still running, as a real
+        // hang's would be.
+        const bool hang = injected(InjectedFault::DeviceHang);
+        result = device_.waitForFences(*fence, VK_TRUE, hang ? 0 : std::uint64_t(timeout.count()));
         if (injected(InjectedFault::DeviceLost)) {
             throw vk::DeviceLostError("vkWaitForFences");
         }
-        if (injected(InjectedFault::DeviceHang)) {
+        if (hang) {
             result = vk::Result::eTimeout;
         }
     } catch (const vk::SystemError& error) {

@@ -97,6 +97,10 @@ public:
     void submitAndWait(const vk::raii::CommandBuffer& commands, const vk::raii::Fence& fence,
                        std::chrono::nanoseconds timeout) const;
 
+    // Whether a submission timed out. The hung work may still read and write whatever it
+    // uses, so the owners of those objects (GpuRenderer) leak them instead of destroying them.
+    bool abandoned() const { return abandoned_; }
+
     // All devices the loader reports, in its order.
     std::vector<DeviceInfo> devices() const;
 

@@ -92,6 +92,12 @@ TEST_F(InspectCliTest, PixelOutsideTheImageIsBadInput) {
     EXPECT_NE(run.err.find("--sample = 1"), std::string::npos) << run.err;
 }
 
+TEST_F(InspectCliTest, PixelRejectsAPrecisionForTheCpuBackendAlone) {
+    const test::RunResult run = hexray("pixel " + demoScene() + " 10 10 --backend cpu --precision f64");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--precision: applies to the GPU backend only"), std::string::npos) << run.err;
+}
+
 // Depth, object id, normal and light mask at the hand-computed pixels, on each backend; and
 // the two backends' files against each other.
 TEST_F(InspectCliTest, RenderAovFilesHoldTheAnalyticValuesOnBothBackends) {
