@@ -366,12 +366,13 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, Precision requested, s
     const std::vector<std::byte> request =
         f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
     GpuPixelTrace trace;
-    GpuRenderResult unused;
-    renderBands(scene, precision, GpuOutput::LinearAndClasses, Acceleration::Auto, unused, [&](const Band& band) {
+    GpuRenderResult bands;
+    renderBands(scene, precision, GpuOutput::LinearAndClasses, Acceleration::Auto, bands, [&](const Band& band) {
         trace = f64 ? unpackTrace<double>(scene, band.trace, cameraRelative, scale)
                     : unpackTrace<float>(scene, band.trace, cameraRelative, scale);
     }, request);
     trace.precision = precision;
+    trace.usedBvh = bands.usedBvh;
     return trace;
 }
 

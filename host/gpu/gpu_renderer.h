@@ -60,6 +60,7 @@ struct GpuPixelTrace {
     glm::vec3 sampleColor{0};        // the traced sample's linear colour
     glm::vec3 pixelColor{0};         // the pixel's (average of its samples)
     std::vector<GpuTraceLight> lights;
+    bool usedBvh = false;  // the trace followed the BVH, as the scene's render does
 };
 
 struct GpuRenderResult {

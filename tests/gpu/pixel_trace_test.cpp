@@ -9,6 +9,7 @@
 #include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
 #include "support/lecture_demo.h"
 #include "support/test_paths.h"
@@ -180,6 +181,39 @@ TEST_F(PixelTraceTest, AovModeGivesDepthAndNormalsAndTheSameImage) {
         ASSERT_NEAR(glm::length(aov64.normals[i] - cpu.normals[i]), 0.0f, 1e-6f) << "pixel " << i;
     }
     EXPECT_GT(compared, 479000u);  // of 480000
+}
+
+// A scene large enough for the BVH layout: the trace and AOV modes follow the tree there too,
+// and agree with the CPU reference.
+TEST_F(PixelTraceTest, TraceAndAovModesFollowTheBvhInAManySphereScene) {
+    Scene scene = makeRandomSpheresScene(500, 1);
+    overrideImageSize(scene, 96, 54, "test");
+    GpuRenderer renderer(context());
+    const GpuRenderResult aov = renderer.render(scene, Precision::F64, GpuOutput::LinearClassesAndAov);
+    ASSERT_TRUE(aov.usedBvh);
+    const CpuRender reference = renderOnCpu(scene);
+    const CpuAovs cpu = renderCpuAovs(scene);
+    std::size_t traced = 0;
+    std::size_t spheres = 0;
+    for (std::uint32_t y = 0; y < 54; y += 7) {
+        for (std::uint32_t x = 0; x < 96; x += 11) {
+            const std::size_t i = std::size_t(y) * 96 + x;
+            if (reference.margins[i] < kAmbiguityMargin) {
+                continue;  // either answer would be honest
+            }
+            const GpuPixelTrace g = renderer.tracePixel(scene, Precision::F64, x, y, 0);
+            ASSERT_TRUE(g.usedBvh);
+            expectAgreement(g, explainPixel(scene, x, y, 0));
+            EXPECT_EQ(aov.classes[i], reference.classes[i]) << "pixel " << x << ", " << y;
+            if (!std::isinf(cpu.depth[i])) {
+                EXPECT_NEAR(aov.depth[i], cpu.depth[i], 1e-5 * cpu.depth[i]) << "pixel " << x << ", " << y;
+            }
+            ++traced;
+            spheres += g.node != PixelClass::kBackground && g.node != 0 ? 1 : 0;
+        }
+    }
+    EXPECT_GE(traced, 50u);
+    EXPECT_GE(spheres, 5u);  // not only floor and sky
 }
 
 }  // namespace
