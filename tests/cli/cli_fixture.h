@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/temporary_directory_test.h"
 #include "support/test_paths.h"
 
 namespace hexray::test {
@@ -33,14 +34,8 @@ inline std::string readFile(const fs::path& path) {
     return text.str();
 }
 
-class CliTest : public ::testing::Test {
+class CliTest : public TemporaryDirectoryTest {
 protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "hexray-cli-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
 
     // Runs `hexray ARGS` in the test's directory; `environment` is prefixed to the command.
     RunResult hexray(const std::string& arguments, const std::string& environment = "") const {
@@ -75,8 +70,6 @@ protected:
     }
 
     static std::string scene(const std::string& name) { return "'" + test::sourcePath("scenes/" + name).string() + "'"; }
-
-    fs::path dir_;
 };
 
 }  // namespace hexray::test

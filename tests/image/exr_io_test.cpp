@@ -9,22 +9,14 @@
 #include "image/aov.h"
 #include "image/exr_io.h"
 #include "image/image_io.h"
+#include "support/temporary_directory_test.h"
 
 namespace hexray {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ExrTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "hexray-exr-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using ExrTest = test::TemporaryDirectoryTest;
 
 TEST_F(ExrTest, ChannelsRoundTripExactlyIncludingInfinity) {
     const float inf = std::numeric_limits<float>::infinity();

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "support/temporary_directory_test.h"
 
 namespace hexray {
 namespace {
@@ -31,16 +32,7 @@ TEST(EncodeChannel, SrgbBrightensMidTones) {
     EXPECT_EQ(encodeChannel(1.0f, Encoding::Srgb), 255);
 }
 
-class PngFileTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "hexray-png-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using PngFileTest = test::TemporaryDirectoryTest;
 
 Rgb8Image gradient(std::uint32_t width, std::uint32_t height) {
     Rgb8Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
