@@ -183,16 +183,16 @@ int runCompare(const CompareOptions& options) {
                 std::snprintf(cpuHow, sizeof cpuHow, "cpu reference (%u threads): render %.2f ms", threads,
                               cpuMilliseconds);
                 printDetailed(file.path, scene, row, gpuHow, cpuHow, options.tolerance);
+                const bool encodedNeeded = !options.diffPath.empty() || !options.maskPath.empty();
+                const Rgb8Image reference8 = encodedNeeded ? encodeImage(reference.image, scene.image.encoding)
+                                                           : Rgb8Image{};
+                const Rgb8Image gpu8 = encodedNeeded ? encodeImage(gpu.image, scene.image.encoding) : Rgb8Image{};
                 if (!options.diffPath.empty()) {
-                    writePng(options.diffPath, diffHeatMap(encodeImage(reference.image, scene.image.encoding),
-                                                           encodeImage(gpu.image, scene.image.encoding)));
+                    writePng(options.diffPath, diffHeatMap(reference8, gpu8));
                     std::printf("wrote diff heat map %s\n", options.diffPath.c_str());
                 }
                 if (!options.maskPath.empty()) {
-                    writePng(options.maskPath,
-                             mismatchMask(reference.classes, gpu.classes, ambiguous,
-                                          encodeImage(reference.image, scene.image.encoding),
-                                          encodeImage(gpu.image, scene.image.encoding)));
+                    writePng(options.maskPath, mismatchMask(reference.classes, gpu.classes, ambiguous, reference8, gpu8));
                     std::printf("wrote mismatch mask %s (red topology, yellow colour > 1 level, blue ambiguous)\n",
                                 options.maskPath.c_str());
                 }

@@ -23,13 +23,8 @@ namespace hexray {
 
 Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
               std::uint32_t sample) {
-    const glm::dvec2 offset = sampleOffset(sample, image.samplesPerPixel, image.sampling);
-    const double sx = double(x) + offset.x;
-    const double sy = double(y) + offset.y;
-    const glm::dvec3 aim = sheet.topLeft + sheet.right * (sx / double(image.width)) +
-                           sheet.down * (sy / double(image.height));
     // Camera rays start at t = 0 exactly: no offset, so nothing right in front of the eye is lost.
-    return Ray{sheet.origin, glm::normalize(aim)};
+    return Ray{sheet.origin, sampleDirection(sheet, image, x, y, sample)};
 }
 
 namespace {

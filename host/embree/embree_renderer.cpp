@@ -264,10 +264,8 @@ EmbreeRender EmbreeRenderer::render(const Scene& scene) const {
             for (std::uint32_t x = 0; x < width; ++x) {
                 Color sum{0.0};
                 for (std::uint32_t s = 0; s < samples; ++s) {
-                    const glm::dvec2 offset = sampleOffset(s, samples, scene.image.sampling);
-                    const glm::dvec3 aim = sheet.topLeft + sheet.right * ((double(x) + offset.x) / double(width)) +
-                                           sheet.down * ((double(y) + offset.y) / double(height));
-                    const Sample sample = shade(prepared, nearestSurface(prepared, glm::normalize(aim)));
+                    const Sample sample =
+                        shade(prepared, nearestSurface(prepared, sampleDirection(sheet, scene.image, x, y, s)));
                     sum += sample.color;
                     if (s == 0) {
                         render.classes[std::size_t(y) * width + x] = sample.pixelClass;
