@@ -6,7 +6,7 @@ void writeAov(uint index, Ray ray, Hit hit) {
         aovs[index] = vec4(0.0);
         return;
     }
-    Surface s = surfaceAt(ray, hit);
+    Surface s = surfaceAt(ray, hit, nodes[hit.node], isPlane(hit.node));
     aovs[index] = vec4(vec3(s.normal), float(hit.t));
 }
 
@@ -26,7 +26,7 @@ void traceMain() {
         Hit hit = findNearestHit(ray);
         if (traceActive && hit.node != NO_NODE) {
             // Constant shaders never build a Surface; lit ones overwrite this with their own.
-            traceSurface(surfaceAt(ray, hit), nodes[hit.node].color1.rgb);
+            traceSurface(surfaceAt(ray, hit, nodes[hit.node], isPlane(hit.node)), nodes[hit.node].color1.rgb);
         }
         uint flags = 0u;
         vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);

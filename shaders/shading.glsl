@@ -38,7 +38,7 @@ real parity(real wholeNumber) {
 
 bool isOddChecker(uint index, Node node, Surface s) {
     vec2r cell;
-    if (isPlane(index)) {
+    if (isCheckerPlane(index)) {
         // u = x, v = z in world space: the eye's cell offset comes from the host in double.
         cell = floor(node.checker.yz + s.position.xz / node.checker.x);
     } else {
@@ -59,7 +59,7 @@ vec3 shade(Ray ray, Hit hit, out uint flags) {
     if (isConstantShaded(hit.node)) {
         return node.color1.rgb;
     }
-    Surface s = surfaceAt(ray, hit);
+    Surface s = surfaceAt(ray, hit, node, isLitPlane(hit.node));
     vec3 albedo = node.color1.rgb;
     if (isCheckerShaded(hit.node) && isOddChecker(hit.node, node, s)) {
         albedo = node.color2.rgb;

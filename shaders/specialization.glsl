@@ -27,14 +27,44 @@ uint lightCount() {
     return SCENE_LIGHT_COUNT != DYNAMIC ? SCENE_LIGHT_COUNT : frame.lightCount;
 }
 
+// The node kinds the scene has at all. lavapipe runs both sides of every branch whichever
+// way its lanes go, so a path the scene cannot take still costs its full price unless these
+// fold it away at compile time.
+const uint SCENE_NODES = SCENE_NODE_COUNT >= 32u ? 0xffffffffu : (1u << SCENE_NODE_COUNT) - 1u;
+const uint PLANE_NODES = SCENE_NODES & ~SPHERE_NODES;
+const uint LIT_NODES = SCENE_NODES & ~CONSTANT_NODES;
+
+// Whether `node`, one of the nodes in `candidates` (a bit set), is also in `subset`; known
+// at compile time when the candidates all lie inside or all outside the subset.
+bool nodeIn(uint node, uint subset, uint candidates) {
+    if ((candidates & subset) == 0u) {
+        return false;
+    }
+    if ((candidates & ~subset) == 0u) {
+        return true;
+    }
+    return ((subset >> node) & 1u) != 0u;
+}
+
 bool isPlane(uint node) {
-    return NODES_SPECIALISED ? ((SPHERE_NODES >> node) & 1u) == 0u : nodes[node].kinds.x == GEOMETRY_PLANE;
+    return NODES_SPECIALISED ? nodeIn(node, PLANE_NODES, SCENE_NODES) : nodes[node].kinds.x == GEOMETRY_PLANE;
+}
+
+// The same question about a node known to be lit (not constant-shaded) or checker-shaded:
+// a scene whose checkers are all planes, say, then has no checker-sphere code at all.
+bool isLitPlane(uint node) {
+    return NODES_SPECIALISED ? nodeIn(node, PLANE_NODES, LIT_NODES) : isPlane(node);
+}
+
+bool isCheckerPlane(uint node) {
+    return NODES_SPECIALISED ? nodeIn(node, PLANE_NODES, CHECKER_NODES) : isPlane(node);
 }
 
 bool isConstantShaded(uint node) {
-    return NODES_SPECIALISED ? ((CONSTANT_NODES >> node) & 1u) != 0u : nodes[node].kinds.y == SHADER_CONSTANT;
+    return NODES_SPECIALISED ? nodeIn(node, CONSTANT_NODES, SCENE_NODES) : nodes[node].kinds.y == SHADER_CONSTANT;
 }
 
 bool isCheckerShaded(uint node) {
-    return NODES_SPECIALISED ? ((CHECKER_NODES >> node) & 1u) != 0u : nodes[node].kinds.y == SHADER_CHECKER;
+    return NODES_SPECIALISED ? nodeIn(node, CHECKER_NODES, LIT_NODES) : nodes[node].kinds.y == SHADER_CHECKER;
 }
+

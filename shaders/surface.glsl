@@ -17,11 +17,13 @@ const real SHADOW_EPSILON = 1e-4;
 const real REPROJECTION_ERROR = 5.0 * UNIT_ROUNDOFF;
 #endif
 
-Surface surfaceAt(Ray ray, Hit hit) {
-    vec4r geometry = nodes[hit.node].geometry;
+// `node` is the hit node's data; `onPlane` whether it is a plane, asked by the caller in the
+// form that folds best for what it knows about the node.
+Surface surfaceAt(Ray ray, Hit hit, Node node, bool onPlane) {
+    vec4r geometry = node.geometry;
     vec3r approximate = ray.origin + hit.t * ray.direction;
     Surface s;
-    if (isPlane(hit.node)) {
+    if (onPlane) {
         s.outwardNormal = vec3r(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);
         s.normal = s.outwardNormal;
 #ifdef HEXRAY_NAIVE
@@ -53,7 +55,7 @@ Surface surfaceAt(Ray ray, Hit hit) {
     // Camera rays take the near root from outside, the far one from inside (or on) the sphere:
     // decided by the sign of the eye's power, not by comparing t with -b, which rounding
     // cannot tell apart when the half-chord is below an ulp of the distance.
-    bool nearRoot = nodes[hit.node].surface.x > 0.0;
+    bool nearRoot = node.surface.x > 0.0;
     s.outwardNormal = normalize(nearRoot ? l - halfChord * ray.direction : l + halfChord * ray.direction);
     s.position = center + radius * s.outwardNormal;  // on the sphere, up to rounding
 #endif
