@@ -2,15 +2,11 @@
 
 // The plane y = height. A ray parallel to it (d.y = +-0) misses; so does any non-finite t.
 real intersectPlane(Ray ray, real height) {
-#ifdef HEXRAY_NAIVE
-    real t = (height - ray.origin.y) / ray.direction.y;  // textbook: +-inf and NaN slip through
-    return t > 0.0 ? t : NO_HIT;
-#else
-    if (ray.direction.y == 0.0) {
-        return NO_HIT;
-    }
     real t = (height - ray.origin.y) / ray.direction.y;
-    return (t > 0.0 && !isinf(t)) ? t : NO_HIT;  // NaN fails t > 0
+#ifdef HEXRAY_NAIVE
+    return t > 0.0 ? t : NO_HIT;  // textbook: +-inf and NaN slip through
+#else
+    return (ray.direction.y != 0.0 && t > 0.0 && !isinf(t)) ? t : NO_HIT;  // NaN fails t > 0
 #endif
 }
 
@@ -25,6 +21,8 @@ real originPower(vec3r f, real radius) {
 // `power` is originPower of the ray's origin.
 real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     vec3r f = ray.origin - center;
+    // Straight-line code (no early returns): lavapipe runs every path anyway, and a return
+    // from inside a branch costs it extra bookkeeping.
 #ifdef HEXRAY_NAIVE
     // Textbook b^2 - 4ac: both terms are about |f|^2 and cancel for small or distant spheres;
     // (-b - sqrt)/2a cancels for rays starting near the surface.
@@ -32,12 +30,10 @@ real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     real b = 2.0 * dot(f, ray.direction);
     real c = dot(f, f) - radius * radius;
     real discriminant = b * b - 4.0 * a * c;
-    if (discriminant < 0.0) {
-        return NO_HIT;
-    }
-    real root = sqrt(discriminant);
+    real root = sqrt(max(discriminant, 0.0));
     real near = (-b - root) / (2.0 * a);
     real far = (-b + root) / (2.0 * a);
+    bool meets = discriminant >= 0.0;
 #else
     // The discriminant from the centre's distance to the ray's line (Hearn-Baker) compares r
     // with a quantity of its own size; the roots come from the stable pair q and c/q, so
@@ -45,21 +41,14 @@ real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     real b = dot(f, ray.direction);
     real lineDistance = length(f - b * ray.direction);
     real discriminant = (radius - lineDistance) * (radius + lineDistance);
-    if (discriminant < 0.0) {
-        return NO_HIT;
-    }
-    real root = sqrt(discriminant);
+    real root = sqrt(max(discriminant, 0.0));
     real q = -b - (b >= 0.0 ? root : -root);
-    if (q == 0.0) {
-        return NO_HIT;  // tangent at the origin itself
-    }
     real near = min(power / q, q);
     real far = max(power / q, q);
+    bool meets = discriminant >= 0.0 && q != 0.0;  // q = 0: tangent at the origin itself
 #endif
-    if (near > 0.0) {
-        return near;
-    }
-    return far > 0.0 ? far : NO_HIT;
+    real t = near > 0.0 ? near : far;
+    return (meets && t > 0.0) ? t : NO_HIT;
 }
 
 // A plane blocks a segment exactly when its ends lie strictly on opposite sides: no division,

@@ -7,24 +7,24 @@ vec3 incidentLight(Surface s, inout uint flags) {
     for (uint i = 0u; i < lightCount(); ++i) {
         vec3r toLight = lights[i].position.xyz - s.position;
         real r2 = dot(toLight, toLight);
-        if (r2 == 0.0) {
-            traceLight(i, TRACE_LIGHT_AT_POINT, 0.0, r2, 0.0, vec3(0.0));
-            continue;  // a light exactly at the point: no direction, no contribution
-        }
+        // A light exactly at the point (r2 = 0) has no direction and contributes nothing.
         real cosTheta = dot(s.normal, toLight) * inversesqrt(r2);
-        if (cosTheta <= 0.0) {
-            traceLight(i, TRACE_LIGHT_FACING_AWAY, cosTheta, r2, 0.0, vec3(0.0));
-            continue;  // facing away: dark whether or not anything is in between
-        }
+        bool facing = r2 > 0.0 && cosTheta > 0.0;
         vec3r shadowPath = lights[i].position.xyz - s.shadowOrigin;
         real shadowLength = length(shadowPath);
-        if (isOccluded(Ray(s.shadowOrigin, shadowPath / shadowLength), lights[i].position.xyz, shadowLength)) {
-            traceLight(i, TRACE_LIGHT_SHADOWED, cosTheta, r2, shadowLength, vec3(0.0));
-            continue;
-        }
-        sum += lights[i].power.rgb * float(cosTheta / r2);
-        traceLight(i, TRACE_LIGHT_LIT, cosTheta, r2, shadowLength, lights[i].power.rgb * float(cosTheta / r2));
-        if (i < CLASSIFIED_LIGHTS) {
+        // Straight-line code, as lavapipe runs a skipped branch anyway. A surface facing away
+        // asks about an empty segment (the answer is unused), for which a BVH walk opens no box.
+        bool shadowed = isOccluded(Ray(s.shadowOrigin, shadowPath / shadowLength), lights[i].position.xyz,
+                                   facing ? shadowLength : 0.0);
+        bool lit = facing && !shadowed;
+        vec3 contribution = lit ? lights[i].power.rgb * float(cosTheta / r2) : vec3(0.0);
+        sum += contribution;
+        uint status = r2 == 0.0 ? TRACE_LIGHT_AT_POINT
+                    : !facing   ? TRACE_LIGHT_FACING_AWAY
+                    : shadowed  ? TRACE_LIGHT_SHADOWED
+                                : TRACE_LIGHT_LIT;
+        traceLight(i, status, r2 == 0.0 ? 0.0 : cosTheta, r2, facing ? shadowLength : 0.0, contribution);
+        if (lit && i < CLASSIFIED_LIGHTS) {
             flags |= 2u << i;
         }
     }

@@ -17,29 +17,29 @@ const real SHADOW_EPSILON = 1e-4;
 const real REPROJECTION_ERROR = 5.0 * UNIT_ROUNDOFF;
 #endif
 
-// `node` is the hit node's data; `onPlane` whether it is a plane, asked by the caller in the
-// form that folds best for what it knows about the node.
-Surface surfaceAt(Ray ray, Hit hit, Node node, bool onPlane) {
-    vec4r geometry = node.geometry;
+Surface planeSurfaceAt(Ray ray, Hit hit, Node node) {
     vec3r approximate = ray.origin + hit.t * ray.direction;
     Surface s;
-    if (onPlane) {
-        s.outwardNormal = vec3r(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);
-        s.normal = s.outwardNormal;
+    s.outwardNormal = vec3r(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);
+    s.normal = s.outwardNormal;
 #ifdef HEXRAY_NAIVE
-        s.position = approximate;
-        s.shadowOrigin = s.position + SHADOW_EPSILON * s.normal;
+    s.position = approximate;
+    s.shadowOrigin = s.position + SHADOW_EPSILON * s.normal;
 #else
-        // Snapped exactly onto the plane, a shadow ray from here cannot hit it again (t = 0),
-        // so no offset is needed.
-        s.position = vec3r(approximate.x, geometry.x, approximate.z);
-        s.shadowOrigin = s.position;
+    // Snapped exactly onto the plane, a shadow ray from here cannot hit it again (t = 0), so
+    // no offset is needed.
+    s.position = vec3r(approximate.x, node.geometry.x, approximate.z);
+    s.shadowOrigin = s.position;
 #endif
-        return s;
-    }
-    vec3r center = geometry.xyz;
-    real radius = geometry.w;
+    return s;
+}
+
+Surface sphereSurfaceAt(Ray ray, Hit hit, Node node) {
+    vec3r center = node.geometry.xyz;
+    real radius = node.geometry.w;
+    Surface s;
 #ifdef HEXRAY_NAIVE
+    vec3r approximate = ray.origin + hit.t * ray.direction;
     s.outwardNormal = normalize(approximate - center);
     s.position = approximate;
 #else
@@ -70,4 +70,10 @@ Surface surfaceAt(Ray ray, Hit hit, Node node, bool onPlane) {
     s.shadowOrigin = s.position + offset * s.normal;
 #endif
     return s;
+}
+
+// `node` is the hit node's data; `onPlane` whether it is a plane, asked by the caller in the
+// form that folds best for what it knows about the node.
+Surface surfaceAt(Ray ray, Hit hit, Node node, bool onPlane) {
+    return onPlane ? planeSurfaceAt(ray, hit, node) : sphereSurfaceAt(ray, hit, node);
 }

@@ -21,11 +21,12 @@ bool isOccluded(Ray ray, vec3r target, real distance) {
 #ifdef HEXRAY_BVH
     return isOccludedInBvh(ray, target, distance);
 #else
-    for (uint i = 0u; i < nodeCount(); ++i) {
-        if (blocksSegment(ray, i, target, distance)) {
-            return true;
-        }
+    // Unrolled (node count specialised), the loop stays straight-line code; a data-driven one
+    // stops at the first blocker.
+    bool blocked = false;
+    for (uint i = 0u; i < nodeCount() && (NODES_SPECIALISED || !blocked); ++i) {
+        blocked = blocksSegment(ray, i, target, distance) || blocked;
     }
-    return false;
+    return blocked;
 #endif
 }

@@ -100,6 +100,29 @@ TEST_F(PixelTraceTest, ShadowCentreIsShadowedOnBothBackends) {
     expectAgreement(g, c);
 }
 
+// A light below the floor: the floor faces away from it, so it contributes nothing and its
+// shadow ray is not asked about (length 0), in both precisions.
+TEST_F(PixelTraceTest, LightBelowTheFloorFacesAwayOnBothBackends) {
+    Scene scene = demoScene();
+    scene.lights[0].position.y = -10.0;
+    GpuRenderer renderer(context());
+    for (const Precision precision : {Precision::F32, Precision::F64}) {
+        SCOPED_TRACE(std::string(precisionName(precision)));
+        const GpuPixelTrace g = renderer.tracePixel(scene, precision, demo::kFloorX, demo::kFloorY, 0);
+        const CpuPixelExplanation c = explainPixel(scene, demo::kFloorX, demo::kFloorY, 0);
+        EXPECT_EQ(g.node, 0u);
+        ASSERT_EQ(g.lights.size(), 1u);
+        EXPECT_EQ(g.lights[0].status, gpu::kTraceLightFacingAway);
+        EXPECT_EQ(c.lights[0].decision.reach, LightReach::FacingAway);
+        EXPECT_LT(g.lights[0].cosTheta, 0.0);
+        EXPECT_EQ(g.lights[0].shadowLength, 0.0);
+        EXPECT_EQ(g.lights[0].contribution, glm::vec3(0));
+        EXPECT_EQ(g.flags & PixelClass::litBit(0), 0u);
+        EXPECT_NEAR(g.pixelColor.b, 0.6 * 0.15, 1e-6);  // ambient only, odd cell
+        expectAgreement(g, c);
+    }
+}
+
 TEST_F(PixelTraceTest, SpherePixelShowsBothCandidatesAndTheNearerWins) {
     const Scene scene = demoScene();
     GpuRenderer renderer(context());
