@@ -67,7 +67,11 @@ the double-precision reference (\`host/cpu\`), which also computes every decisio
 and is built for clarity, not speed; **embree** = Intel's Embree 3 on the same scenes, camera
 rays and shading (\`host/embree\`: spheres as Embree sphere points in float, camera-relative;
 planes analytic; one ray at a time with \`rtcIntersect1\` / \`rtcOccluded1\`; hit points
-rebuilt and shaded in double), as a yardstick for what a tuned CPU tracer does here.
+rebuilt and shaded in double), as a yardstick for what a tuned CPU tracer does here;
+**lavapipe hand-written** (demo scene only) = \`shaders/lecture_demo_ceiling.comp\`, a
+straight-line kernel with that scene's values as literals and textbook float arithmetic, as
+the yardstick for the data-driven shader: lavapipe's ceiling for this scene on this machine
+(it writes no pixel classes, so its topology column is empty).
 
 Columns: **Mpix/s** = pixels / render time (lavapipe: dispatch time from timestamps, after a
 warm-up dispatch; CPU reference: wall time, all cores, BVH build included; Embree: tracing and

@@ -33,7 +33,7 @@ def pareto_panel(axis, scene, rows):
         error = float(row["rmse_levels"])
         label = f'{row["backend"]} {row["precision"]} {row["spp"]}spp'
         points.append((time, error, label))
-        marker = {"cpu-reference": "s", "embree": "^"}.get(row["backend"], "o")
+        marker = {"cpu-reference": "s", "embree": "^"}.get(row["backend"], "D" if "hand-written" in row["backend"] else "o")
         axis.scatter(time, error, marker=marker)
         axis.annotate(label, (time, error), fontsize=7, xytext=(4, 3), textcoords="offset points")
     frontier = pareto(points)

@@ -14,6 +14,7 @@
 #include "compare/compare.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "gpu/lecture_demo_ceiling.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/random_spheres.h"
@@ -40,7 +41,9 @@ std::string formatSeconds(double seconds) {
     return text;
 }
 
-enum class BenchBackend { Gpu, Cpu, Embree };
+// GpuCeiling: the lecture demo scene's hand-written kernel (GpuRenderer::renderLectureDemoCeiling),
+// the yardstick for the data-driven shader on the same device.
+enum class BenchBackend { Gpu, GpuCeiling, Cpu, Embree };
 
 // What every configuration of a scene is judged against. File scenes: the CPU reference at a
 // high sample count for colour; for the pixel classes (those of each pixel's first sample) and
@@ -73,7 +76,7 @@ struct Measurement {
     std::vector<double> frameMilliseconds;   // the whole frame in-process
     Image image;                             // CPU reference and Embree: linear
     Rgb8Image encoded;                       // GPU: the 8-bit output `render` writes
-    std::vector<PixelClass> classes;
+    std::vector<PixelClass> classes;         // empty for GpuCeiling, which writes none
     std::vector<float> margins;  // CPU reference only
 };
 
@@ -113,6 +116,7 @@ public:
     std::string name(BenchBackend backend) const {
         switch (backend) {
             case BenchBackend::Gpu: return gpuName_;
+            case BenchBackend::GpuCeiling: return gpuName_ + " hand-written";
             case BenchBackend::Cpu: return "cpu-reference";
             case BenchBackend::Embree: return "embree";
         }
@@ -120,7 +124,8 @@ public:
     }
     unsigned threads(BenchBackend backend) const {
         switch (backend) {
-            case BenchBackend::Gpu: return isLavapipe_ ? lavapipeThreads() : 0;
+            case BenchBackend::Gpu:
+            case BenchBackend::GpuCeiling: return isLavapipe_ ? lavapipeThreads() : 0;
             case BenchBackend::Cpu: return cpuThreadCount(0);
             case BenchBackend::Embree:
 #ifdef HEXRAY_WITH_EMBREE
@@ -144,6 +149,13 @@ public:
                 if (withClasses) {
                     measurement.classes = gpu_.render(scene, configuration.precision).classes;
                 }
+                return;
+            }
+            case BenchBackend::GpuCeiling: {
+                GpuRenderResult render = gpu_.renderLectureDemoCeiling(scene);
+                measurement.renderMilliseconds.push_back(render.timing.renderMilliseconds);
+                measurement.frameMilliseconds.push_back(millisecondsSince(start));
+                measurement.encoded = std::move(render.encoded);
                 return;
             }
             case BenchBackend::Cpu: {
@@ -222,6 +234,9 @@ int runBench(const BenchOptions& options) {
                     if (precision != Precision::F64 || backends.hasFloat64()) {
                         configurations.push_back({index, BenchBackend::Gpu, precision, spp});
                     }
+                }
+                if (isLectureDemoScene(sampled)) {
+                    configurations.push_back({index, BenchBackend::GpuCeiling, Precision::F32, spp});
                 }
                 configurations.push_back({index, BenchBackend::Cpu, Precision::F64, spp});
                 if (backends.hasEmbree()) {
@@ -347,7 +362,7 @@ int runBench(const BenchOptions& options) {
             std::optional<double> versusEmbree;
             unsigned threads = 0;
             ErrorMetrics error;
-            TopologyComparison topology;
+            std::optional<TopologyComparison> topology;  // none for a backend without pixel classes
         };
         std::vector<Row> rows(configurations.size());
         std::map<std::pair<std::size_t, std::uint32_t>, double> embreeMpix;  // (scene, spp) -> median
@@ -365,8 +380,9 @@ int runBench(const BenchOptions& options) {
             row.frameMs = median(measurement.frameMilliseconds);
             row.threads = backends.threads(configuration.backend);
             row.coreNsPerPixel = row.medianMs * 1e6 * std::max(1u, row.threads) / pixels;
-            const Rgb8Image encoded = configuration.backend == BenchBackend::Gpu
-                                          ? measurement.encoded
+            const bool encodedOnDevice =
+                configuration.backend == BenchBackend::Gpu || configuration.backend == BenchBackend::GpuCeiling;
+            const Rgb8Image encoded = encodedOnDevice ? measurement.encoded
                                           : encodeImage(measurement.image, bench.scene.image.encoding);
             const std::uint32_t spp = configuration.samplesPerPixel;
             const Reference& reference = bench.reference;
@@ -374,8 +390,10 @@ int runBench(const BenchOptions& options) {
                                                                    bench.scene.image.encoding)
                                                      : reference.colour,
                                        encoded);
-            row.topology = compareTopology(reference.bySamples.at(spp).classes, measurement.classes,
-                                           reference.ambiguousBySamples.at(spp));
+            if (!measurement.classes.empty()) {
+                row.topology = compareTopology(reference.bySamples.at(spp).classes, measurement.classes,
+                                               reference.ambiguousBySamples.at(spp));
+            }
             if (configuration.backend == BenchBackend::Embree) {
                 embreeMpix[{configuration.scene, spp}] = row.medianMpix;
             }
@@ -394,6 +412,7 @@ int runBench(const BenchOptions& options) {
         const auto precisionOf = [&](const Configuration& configuration) {
             switch (configuration.backend) {
                 case BenchBackend::Gpu: return std::string(precisionName(configuration.precision));
+                case BenchBackend::GpuCeiling: return std::string("f32 textbook");
                 case BenchBackend::Cpu: return std::string("f64 (double)");
                 case BenchBackend::Embree: return std::string("f32 (Embree)");
             }
@@ -431,26 +450,26 @@ int runBench(const BenchOptions& options) {
                 if (row.versusEmbree) {
                     std::snprintf(versus, sizeof versus, "%.2f", *row.versusEmbree);
                 }
+                const std::string mismatches = row.topology ? std::to_string(row.topology->mismatches) : "–";
                 if (curve) {
                     std::printf("| %u | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %u | %.0f | %s | %.3f | %.0f | "
-                                "%.3f%% | %llu |\n",
+                                "%.3f%% | %s |\n",
                                 *bench.spheres, bench.scene.image.width, bench.scene.image.height, backend.c_str(),
                                 precision.c_str(), configuration.samplesPerPixel, row.medianMpix, row.bestMpix,
                                 row.frameMs, row.threads, row.coreNsPerPixel, versus, row.error.rmse, row.error.maxAbs,
-                                100.0 * row.error.shareOverOneLevel,
-                                static_cast<unsigned long long>(row.topology.mismatches));
+                                100.0 * row.error.shareOverOneLevel, mismatches.c_str());
                 } else {
-                    std::printf("| %s | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %.3f | %.0f | %.3f%% | %llu |\n",
+                    std::printf("| %s | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %.3f | %.0f | %.3f%% | %s |\n",
                                 bench.name.c_str(), bench.scene.image.width, bench.scene.image.height, backend.c_str(),
                                 precision.c_str(), configuration.samplesPerPixel, row.medianMpix, row.bestMpix,
                                 row.frameMs, row.error.rmse, row.error.maxAbs, 100.0 * row.error.shareOverOneLevel,
-                                static_cast<unsigned long long>(row.topology.mismatches));
+                                mismatches.c_str());
                 }
                 csv << bench.name << ',' << bench.scene.image.width << ',' << bench.scene.image.height << ','
                     << backend << ',' << precision << ',' << configuration.samplesPerPixel << ',' << row.medianMpix
                     << ',' << row.bestMpix << ',' << row.medianMs << ',' << row.frameMs << ',' << row.error.rmse
                     << ',' << row.error.maxAbs << ',' << row.error.pixelsOverOneLevel << ','
-                    << row.topology.mismatches << ',' << (bench.spheres ? std::to_string(*bench.spheres) : "")
+                    << (row.topology ? std::to_string(row.topology->mismatches) : "") << ',' << (bench.spheres ? std::to_string(*bench.spheres) : "")
                     << ',' << row.threads << ',' << row.coreNsPerPixel << ','
                     << (row.versusEmbree ? std::to_string(*row.versusEmbree) : "") << '\n';
             }

@@ -14,6 +14,7 @@
 
 #include "gpu/gpu_layout.h"
 #include "gpu/gpu_scene.h"
+#include "gpu/lecture_demo_ceiling.h"
 #include "util/milliseconds_since.h"
 #include "vulkan/host_visible_buffer.h"
 
@@ -29,6 +30,7 @@ namespace {
 #include "kRenderF64BvhSpv.h"
 #include "kRenderF64StorageSpv.h"
 #include "kRenderF64UniformSpv.h"
+#include "kLectureDemoCeilingSpv.h"
 }  // namespace
 
 namespace hexray {
@@ -232,10 +234,12 @@ Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
 const vk::raii::Pipeline& GpuRenderer::pipeline(const PipelineKey& key) {
     auto found = pipelines_.find(key);
     if (found == pipelines_.end()) {
-        const auto& [precision, layout, specialization] = key;
+        const auto& [kernel, precision, layout, specialization] = key;
+        const Spirv spirv = kernel == Kernel::LectureDemoCeiling ? Spirv(kLectureDemoCeilingSpv)
+                                                                 : spirvFor(precision, layout);
         found = pipelines_
-                    .emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout,
-                                                 spirvFor(precision, layout), specialization))
+                    .emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv,
+                                                 specialization))
                     .first;
     }
     return found->second;
@@ -256,7 +260,7 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
         }
         // The shader's t is in the placement's units.
         const double scale = result.precision == Precision::F32Naive ? 1.0 : gpu::placementScale(scene);
-        renderBands(scene, result.precision, output, acceleration, result, [&](const Band& band) {
+        renderBands(scene, result.precision, output, acceleration, Kernel::Renderer, result, [&](const Band& band) {
             const std::size_t count = std::size_t(band.rows) * width;
             const std::ptrdiff_t first = std::ptrdiff_t(band.firstRow) * width;
             std::transform(band.pixels, band.pixels + count, result.image.pixels.begin() + first,
@@ -274,9 +278,22 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
         });
         return result;
     }
-    result.encoded = Rgb8Image{width, scene.image.height, {}};
-    result.encoded.bytes.reserve(std::size_t(width) * scene.image.height * 3);
-    const GpuRenderResult streamed = renderEncodedRows(scene, result.precision, [&](std::uint32_t, auto rgbRows) {
+    return renderEncoded(scene, result.precision, Kernel::Renderer);
+}
+
+GpuRenderResult GpuRenderer::renderLectureDemoCeiling(const Scene& scene) {
+    if (!isLectureDemoScene(scene)) {
+        throw std::invalid_argument("the lecture demo's hand-written kernel renders only that scene");
+    }
+    return renderEncoded(scene, Precision::F32, Kernel::LectureDemoCeiling);
+}
+
+GpuRenderResult GpuRenderer::renderEncoded(const Scene& scene, Precision precision, Kernel kernel) {
+    GpuRenderResult result;
+    result.precision = precision;
+    result.encoded = Rgb8Image{scene.image.width, scene.image.height, {}};
+    result.encoded.bytes.reserve(std::size_t(scene.image.width) * scene.image.height * 3);
+    const GpuRenderResult streamed = encodedRows(scene, precision, kernel, [&](std::uint32_t, auto rgbRows) {
         result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
     });
     result.timing = streamed.timing;
@@ -285,10 +302,16 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
 }
 
 GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, Precision requested, const RowConsumer& consume) {
+    return encodedRows(scene, resolve(scene, requested), Kernel::Renderer, consume);
+}
+
+GpuRenderResult GpuRenderer::encodedRows(const Scene& scene, Precision precision, Kernel kernel,
+                                         const RowConsumer& consume) {
     GpuRenderResult result;
-    result.precision = resolve(scene, requested);
+    result.precision = precision;
     std::vector<std::uint8_t> rgb;
-    renderBands(scene, result.precision, GpuOutput::Encoded8, Acceleration::Auto, result, [&](const Band& band) {
+    const Acceleration acceleration = kernel == Kernel::Renderer ? Acceleration::Auto : Acceleration::None;
+    renderBands(scene, precision, GpuOutput::Encoded8, acceleration, kernel, result, [&](const Band& band) {
         const std::size_t count = std::size_t(band.rows) * scene.image.width;
         rgb.resize(count * 3);
         for (std::size_t i = 0; i < count; ++i) {
@@ -367,17 +390,20 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, Precision requested, s
         f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
     GpuPixelTrace trace;
     GpuRenderResult bands;
-    renderBands(scene, precision, GpuOutput::LinearAndClasses, Acceleration::Auto, bands, [&](const Band& band) {
+    const auto unpack = [&](const Band& band) {
         trace = f64 ? unpackTrace<double>(scene, band.trace, cameraRelative, scale)
                     : unpackTrace<float>(scene, band.trace, cameraRelative, scale);
-    }, request);
+    };
+    renderBands(scene, precision, GpuOutput::LinearAndClasses, Acceleration::Auto, Kernel::Renderer, bands, unpack,
+                request);
     trace.precision = precision;
     trace.usedBvh = bands.usedBvh;
     return trace;
 }
 
 void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
-                              GpuRenderResult& result, const std::function<void(const Band&)>& consume,
+                              Kernel kernel, GpuRenderResult& result,
+                              const std::function<void(const Band&)>& consume,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
@@ -398,7 +424,7 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
 
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
-    const vk::raii::Pipeline& computePipeline = pipeline({precision, layout, specialization});
+    const vk::raii::Pipeline& computePipeline = pipeline({kernel, precision, layout, specialization});
     const SceneBindings& sceneBindings = bindings(layout);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;

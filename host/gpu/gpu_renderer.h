@@ -107,10 +107,20 @@ public:
     GpuPixelTrace tracePixel(const Scene& scene, Precision precision, std::uint32_t x, std::uint32_t y,
                              std::uint32_t sample);
 
+    // The 8-bit image of the lecture demo scene from shaders/lecture_demo_ceiling.comp, a
+    // hand-written kernel with the scene's values as literals: lavapipe's ceiling for that
+    // scene, which `hexray bench` times beside render(). Throws std::invalid_argument unless
+    // isLectureDemoScene(scene).
+    GpuRenderResult renderLectureDemoCeiling(const Scene& scene);
+
     // The precision render() would use for `scene`.
     Precision resolve(const Scene& scene, Precision requested) const;
 
 private:
+    enum class Kernel { Renderer, LectureDemoCeiling };  // which compute shader runs
+    GpuRenderResult renderEncoded(const Scene& scene, Precision precision, Kernel kernel);
+    GpuRenderResult encodedRows(const Scene& scene, Precision precision, Kernel kernel, const RowConsumer& consume);
+
     // One band of rows as the device left it; only the output's own buffer is meaningful.
     struct Band {
         std::uint32_t firstRow;
@@ -124,7 +134,7 @@ private:
     // Sets `result`'s timing and usedBvh. With `traceRequest` non-empty, one trace dispatch
     // instead (see tracePixel): the trace buffer starts as those bytes.
     void renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
-                     GpuRenderResult& result, const std::function<void(const Band&)>& consume,
+                     Kernel kernel, GpuRenderResult& result, const std::function<void(const Band&)>& consume,
                      std::span<const std::byte> traceRequest = {});
 
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
@@ -132,7 +142,7 @@ private:
         vk::raii::DescriptorSetLayout setLayout;
         vk::raii::PipelineLayout pipelineLayout;
     };
-    using PipelineKey = std::tuple<Precision, gpu::SceneLayout, gpu::ShaderSpecialization>;
+    using PipelineKey = std::tuple<Kernel, Precision, gpu::SceneLayout, gpu::ShaderSpecialization>;
 
     const SceneBindings& bindings(gpu::SceneLayout layout) const {
         return layout == gpu::SceneLayout::Uniform ? uniformScene_ : storageScene_;
