@@ -198,13 +198,16 @@ int runCompare(const CompareOptions& options) {
                 }
                 if (aov) {
                     const fs::path directory(options.aovDirectory);
-                    writeAovs(directory / "gpu", AovSet{scene.image.width, scene.image.height, std::move(gpu.depth),
-                                                        std::move(gpu.normals), gpu.classes, scene.lights.size()});
-                    CpuAovs cpuAovs = renderCpuAovs(scene);
-                    writeAovs(directory / "cpu",
-                              AovSet{scene.image.width, scene.image.height, std::move(cpuAovs.depth),
-                                     std::move(cpuAovs.normals), reference.classes, scene.lights.size(),
-                                     &reference.margins, kAmbiguityMargin});
+                    StagedAovs gpuAovs(directory / "gpu", AovSet{scene.image.width, scene.image.height,
+                                                                 std::move(gpu.depth), std::move(gpu.normals),
+                                                                 gpu.classes, scene.lights.size()});
+                    CpuAovs cpuPass = renderCpuAovs(scene);
+                    StagedAovs cpuAovs(directory / "cpu",
+                                       AovSet{scene.image.width, scene.image.height, std::move(cpuPass.depth),
+                                              std::move(cpuPass.normals), reference.classes, scene.lights.size(),
+                                              &reference.margins, kAmbiguityMargin});
+                    gpuAovs.commit();
+                    cpuAovs.commit();
                     std::printf("wrote AOVs in %s and %s\n", (directory / "gpu").c_str(), (directory / "cpu").c_str());
                 }
             }

@@ -47,10 +47,10 @@ private:
     bool started_ = false;
 };
 
-// Renders on the GPU into `writer`, band by band; then, with --aov, the AOVs (written to
-// options.aovDirectory, their paths to `aovFiles`). Returns how, for the summary line.
+// Renders on the GPU into `writer`, band by band; then, with --aov, stages the AOVs in
+// `aovs`. Returns how, for the summary line.
 std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
-                        std::vector<std::filesystem::path>& aovFiles) {
+                        std::optional<StagedAovs>& aovs) {
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
     Progress progress(scene.image.height);
@@ -69,16 +69,16 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
     if (!options.aovDirectory.empty()) {
         // A second pass in the shader's AOV mode, so that the image is the one a render
         // without --aov writes (encoded on the device); the AOVs are held whole, for the EXR files.
-        GpuRenderResult aovs = renderer.render(scene, result.precision, GpuOutput::LinearClassesAndAov);
-        aovFiles = writeAovs(options.aovDirectory,
-                             AovSet{scene.image.width, scene.image.height, std::move(aovs.depth),
-                                    std::move(aovs.normals), std::move(aovs.classes), scene.lights.size()});
+        GpuRenderResult pass = renderer.render(scene, result.precision, GpuOutput::LinearClassesAndAov);
+        aovs.emplace(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(pass.depth),
+                                                  std::move(pass.normals), std::move(pass.classes),
+                                                  scene.lights.size()});
     }
     return how;
 }
 
 std::string renderWithCpuReference(const RenderOptions& options, const Scene& scene, PngRowWriter& writer,
-                                   std::vector<std::filesystem::path>& aovFiles) {
+                                   std::optional<StagedAovs>& aovs) {
     const unsigned threads = cpuThreadCount(options.threads);
     const auto start = std::chrono::steady_clock::now();
     CpuRender render = renderOnCpu(scene, threads);
@@ -87,10 +87,10 @@ std::string renderWithCpuReference(const RenderOptions& options, const Scene& sc
     std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads, millisecondsSince(start));
     writer.writeRows(image.bytes);
     if (!options.aovDirectory.empty()) {
-        CpuAovs aovs = renderCpuAovs(scene);
-        aovFiles = writeAovs(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(aovs.depth),
-                                                          std::move(aovs.normals), std::move(render.classes),
-                                                          scene.lights.size()});
+        CpuAovs pass = renderCpuAovs(scene);
+        aovs.emplace(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(pass.depth),
+                                                  std::move(pass.normals), std::move(render.classes),
+                                                  scene.lights.size()});
     }
     return how;
 }
@@ -116,11 +116,11 @@ int runRender(const RenderOptions& options) {
         // only once every row is in.
         std::optional<PngRowWriter> writer(std::in_place, output, scene.image.width, scene.image.height);
         std::string how;
-        std::vector<std::filesystem::path> aovFiles;
+        std::optional<StagedAovs> aovs;
         if (options.backend != Backend::Cpu) {
             bool fallBack = false;
             try {
-                how = renderOnGpu(options, scene, log, *writer, aovFiles);
+                how = renderOnGpu(options, scene, log, *writer, aovs);
             } catch (const VulkanError& error) {
                 if (!fallsBack(options, error)) throw;
                 fallBack = true;
@@ -130,17 +130,19 @@ int runRender(const RenderOptions& options) {
             }
             if (fallBack) {
                 writer.reset();  // drops the GPU's partial rows with their temporary file
+                aovs.reset();
                 writer.emplace(output, scene.image.width, scene.image.height);
             }
         }
         if (how.empty()) {
-            how = renderWithCpuReference(options, scene, *writer, aovFiles);
+            how = renderWithCpuReference(options, scene, *writer, aovs);
         }
         writer->finish();
         std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how.c_str());
-        if (!aovFiles.empty()) {
-            std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", aovFiles.size(),
-                        options.aovDirectory.c_str());
+        if (aovs) {
+            // Only now, so a failed render leaves the directory's earlier AOVs as they were.
+            const std::size_t files = aovs->commit().size();
+            std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files, options.aovDirectory.c_str());
         }
         return int(kSuccess);
     });

@@ -1,7 +1,10 @@
 #include "image/aov.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <regex>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -58,19 +61,25 @@ Rgb8Image preview(const AovSet& aovs, PixelColour&& colour) {
 
 }  // namespace
 
-std::vector<std::filesystem::path> writeAovs(const std::filesystem::path& directory, const AovSet& aovs) {
+StagedAovs::StagedAovs(const std::filesystem::path& directory, const AovSet& aovs) : directory_(directory) {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error) {
         throw ImageIoError(directory.string() + ": cannot create the AOV directory: " + error.message());
     }
+    // Inside the target directory, so that commit() renames within one file system.
+    std::string pattern = (directory / ".hexray-aov-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) {
+        throw ImageIoError(directory.string() + ": cannot create a staging directory: " +
+                           std::generic_category().message(errno));
+    }
+    staging_ = pattern;
     const std::size_t count = std::size_t(aovs.width) * aovs.height;
-    std::vector<std::filesystem::path> written;
     const auto write = [&](const std::string& name, std::vector<ExrChannel> channels, const Rgb8Image& image) {
-        writeExr(directory / (name + ".exr"), aovs.width, aovs.height, std::move(channels));
-        writePng(directory / (name + ".png"), image);
-        written.push_back(directory / (name + ".exr"));
-        written.push_back(directory / (name + ".png"));
+        writeExr(staging_ / (name + ".exr"), aovs.width, aovs.height, std::move(channels));
+        writePng(staging_ / (name + ".png"), image);
+        names_.push_back(name + ".exr");
+        names_.push_back(name + ".png");
     };
     const auto background = [&](std::size_t i) { return aovs.classes[i].node == PixelClass::kBackground; };
 
@@ -136,7 +145,42 @@ std::vector<std::filesystem::path> writeAovs(const std::filesystem::path& direct
                   return ramp((std::log10(std::max(double(margins[i]), 1e-12)) + 12.0) / 12.0);
               }));
     }
-    return written;
+}
+
+StagedAovs::~StagedAovs() {
+    if (!staging_.empty()) {
+        std::error_code ignored;
+        std::filesystem::remove_all(staging_, ignored);
+    }
+}
+
+std::vector<std::filesystem::path> StagedAovs::commit() {
+    // An earlier set's files that this one does not replace: its extra lights, its margin.
+    static const std::regex kAovName(R"((depth|normal|object-id|margin|light-[0-9]+)\.(exr|png))");
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(directory_, error)) {
+        const std::string name = entry.path().filename().string();
+        if (std::regex_match(name, kAovName) && std::find(names_.begin(), names_.end(), name) == names_.end()) {
+            std::filesystem::remove(entry.path(), error);
+            if (error) {
+                throw ImageIoError(entry.path().string() + ": cannot remove an earlier AOV: " + error.message());
+            }
+        }
+    }
+    if (error) {
+        throw ImageIoError(directory_.string() + ": cannot list the AOV directory: " + error.message());
+    }
+    std::vector<std::filesystem::path> committed;
+    for (const std::string& name : names_) {
+        std::filesystem::rename(staging_ / name, directory_ / name, error);
+        if (error) {
+            throw ImageIoError((directory_ / name).string() + ": cannot move the AOV into place: " + error.message());
+        }
+        committed.push_back(directory_ / name);
+    }
+    std::filesystem::remove(staging_, error);
+    staging_.clear();
+    return committed;
 }
 
 }  // namespace hexray

@@ -36,8 +36,27 @@ struct AovSet {
     double ambiguityMargin = 0.0;                 // with margins: the threshold the preview marks
 };
 
-// Writes every AOV of `aovs` into `directory` (created if needed); returns the files written.
-// Throws ImageIoError when a file cannot be written.
-std::vector<std::filesystem::path> writeAovs(const std::filesystem::path& directory, const AovSet& aovs);
+// One render's AOVs, written whole into a hidden staging directory inside `directory` by the
+// constructor and moved into `directory` by commit(), after the image itself is in place.
+// commit() also removes the AOV files of an earlier set that this one lacks (light-N beyond
+// its lights, margin), so the directory never mixes two renders' AOVs. Destroyed without
+// commit() (a failure, an exception), it removes the staging directory and leaves
+// `directory` as it was. A process killed outright may leave a `.hexray-aov-*` directory.
+class StagedAovs {
+public:
+    // Creates `directory` if needed; throws ImageIoError when a file cannot be written.
+    StagedAovs(const std::filesystem::path& directory, const AovSet& aovs);
+    ~StagedAovs();
+    StagedAovs(const StagedAovs&) = delete;
+    StagedAovs& operator=(const StagedAovs&) = delete;
+
+    // Moves every file into place; returns their paths. Throws ImageIoError on failure.
+    std::vector<std::filesystem::path> commit();
+
+private:
+    std::filesystem::path directory_;
+    std::filesystem::path staging_;  // empty once committed
+    std::vector<std::string> names_;  // file names, in the order written
+};
 
 }  // namespace hexray

@@ -98,6 +98,26 @@ TEST_F(InspectCliTest, PixelRejectsAPrecisionForTheCpuBackendAlone) {
     EXPECT_NE(run.err.find("--precision: applies to the GPU backend only"), std::string::npos) << run.err;
 }
 
+// A second render into the same AOV directory replaces the first's set whole: the three-light
+// scene's light-1 and light-2 do not linger beside the one-light demo's files.
+TEST_F(InspectCliTest, RenderAovReplacesAnEarlierSetInTheSameDirectory) {
+    ASSERT_EQ(hexray("render " + scene("spheres-and-lights.json") + " -o a.png --width 64 --height 36 --aov aov")
+                  .exitCode,
+              0);
+    ASSERT_TRUE(fs::exists(dir_ / "aov" / "light-2.exr"));
+    const test::RunResult run = hexray("render " + demoScene() + " -o b.png --width 64 --height 48 --aov aov");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("wrote 8 AOV files"), std::string::npos) << run.out;
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(dir_ / "aov")) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_TRUE(name.rfind("light-1", 0) != 0 && name.rfind("light-2", 0) != 0 && name[0] != '.') << name;
+        ++files;
+    }
+    EXPECT_EQ(files, 8u);
+    EXPECT_EQ(readExr(dir_ / "aov" / "depth.exr").width, 64u);
+}
+
 // Depth, object id, normal and light mask at the hand-computed pixels, on each backend; and
 // the two backends' files against each other.
 TEST_F(InspectCliTest, RenderAovFilesHoldTheAnalyticValuesOnBothBackends) {
