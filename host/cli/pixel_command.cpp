@@ -229,8 +229,8 @@ int runPixel(const PixelOptions& options) {
             table.row("albedo", gpuAlbedo, cpuAlbedo, gpuOdd != cpuOdd || differs(glm::dvec3(g.albedo), c.albedo, 0.0));
             for (std::size_t i = 0; i < scene.lights.size(); ++i) {
                 const GpuTraceLight gl = useGpu ? g.lights[i] : GpuTraceLight{};
-                const CpuLightExplanation cl =
-                    i < c.lights.size() ? c.lights[i] : CpuLightExplanation{{LightReach::AtPoint, 0, 0}, Color(0)};
+                const LightTerm cl =
+                    i < c.lights.size() ? c.lights[i] : LightTerm{{LightReach::AtPoint, 0, 0}, Color(0)};
                 const std::uint32_t cpuStatus = i < c.lights.size() ? statusOf(cl.decision.reach) : 0;
                 const bool gpuEvaluated = gl.status != gpu::kTraceLightNotEvaluated;
                 const bool cpuEvaluated = cpuStatus != gpu::kTraceLightNotEvaluated;

@@ -17,7 +17,23 @@ CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint3
     for (std::uint32_t s = 0; s < scene.image.samplesPerPixel; ++s) {
         const Ray ray = cameraRay(sheet, scene.image, x, y, s);
         const std::optional<SceneHit> nearest = findNearestHit(ray, scene);
-        const Color color = nearest ? shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit) : scene.background;
+        Color color = scene.background;
+        if (nearest) {
+            // The explained sample keeps every light's term; the shading is renderOnCpu's own.
+            const Node& node = scene.nodes[nearest->nodeIndex];
+            const ShadedHit shaded = shadeHit(scene, node, nearest->hit, nullptr, s == sample ? &out.lights : nullptr);
+            color = shaded.color;
+            if (s == sample) {
+                const Shader& shader = scene.shaders.at(node.shaderIndex);
+                out.constantShaded = std::holds_alternative<ConstantShader>(shader);
+                out.albedo = shaded.albedo;
+                if (shaded.checkerUv) {
+                    out.uv = *shaded.checkerUv;
+                    out.checkerCell = glm::floor(out.uv / std::get<CheckerShader>(shader).size);
+                }
+                out.pixelClass = PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags};
+            }
+        }
         out.pixelColor += color;
         if (s == sample) {
             out.ray = ray;
@@ -28,39 +44,6 @@ CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint3
     out.pixelColor /= double(scene.image.samplesPerPixel);
     for (const Node& node : scene.nodes) {
         out.candidates.push_back(intersectGeometry(out.ray, node.geometry));
-    }
-    if (!out.nearest) {
-        return out;
-    }
-    const Node& node = scene.nodes[out.nearest->nodeIndex];
-    const Hit& hit = out.nearest->hit;
-    const Shader& shader = scene.shaders.at(node.shaderIndex);
-    out.pixelClass.node = std::uint32_t(out.nearest->nodeIndex);
-    if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
-        out.constantShaded = true;
-        out.albedo = constant->color;
-        return out;
-    }
-    if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
-        out.albedo = lambert->color;
-    } else {
-        const CheckerShader& checker = std::get<CheckerShader>(shader);
-        out.uv = textureCoordinates(node.geometry, hit);
-        out.checkerCell = glm::floor(out.uv / checker.size);
-        out.albedo = checkerColor(checker, out.uv);
-        if (checkerParity(out.uv.x, out.uv.y, checker.size) == 1) {
-            out.pixelClass.flags |= PixelClass::kOddCheckerBit;
-        }
-    }
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        const PointLight& light = scene.lights[i];
-        CpuLightExplanation explained{decideLight(scene, node.geometry, hit, light), Color(0.0)};
-        if (explained.decision.reach == LightReach::Lit) {
-            explained.contribution =
-                light.color * (light.intensity * explained.decision.cosTheta / explained.decision.distanceSquared);
-            out.pixelClass.flags |= PixelClass::litBit(std::uint32_t(i));
-        }
-        out.lights.push_back(explained);
     }
     return out;
 }

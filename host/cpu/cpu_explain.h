@@ -16,11 +16,6 @@
 
 namespace hexray {
 
-struct CpuLightExplanation {
-    LightDecision decision;
-    Color contribution{0.0};  // colour × intensity × cos θ / r² when lit, else 0
-};
-
 struct CpuPixelExplanation {
     Ray ray;                                    // of the explained sample
     std::vector<std::optional<Hit>> candidates;  // per node
@@ -29,7 +24,7 @@ struct CpuPixelExplanation {
     Color albedo{0.0};                   // the shader's colour at the hit
     glm::dvec2 uv{0.0};                  // texture coordinates (checker only)
     std::optional<glm::dvec2> checkerCell;  // floor(u/size), floor(v/size) (checker only)
-    std::vector<CpuLightExplanation> lights;  // empty for constant shaders and the background
+    std::vector<LightTerm> lights;       // empty for constant shaders and the background
     Color sampleColor{0.0};
     Color pixelColor{0.0};               // average over the pixel's samples, as renderOnCpu
     PixelClass pixelClass;               // of the explained sample (renderOnCpu uses sample 0)

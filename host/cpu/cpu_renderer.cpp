@@ -38,40 +38,6 @@ struct TracedPixel {
     float margin = 0.0f;
 };
 
-Color shadeNearest(const Scene& scene, const Bvh* bvh, const std::optional<SceneHit>& nearest) {
-    if (!nearest) {
-        return scene.background;
-    }
-    return shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, bvh);
-}
-
-// The node, and for lit shaders the checker cell and the lights that reach the hit, decided by
-// the same functions that chose the colour.
-PixelClass classify(const Scene& scene, const Bvh* bvh, const std::optional<SceneHit>& nearest) {
-    PixelClass pixelClass;
-    if (!nearest) {
-        return pixelClass;  // background
-    }
-    const Node& node = scene.nodes[nearest->nodeIndex];
-    const Shader& shader = scene.shaders[node.shaderIndex];
-    pixelClass.node = static_cast<std::uint32_t>(nearest->nodeIndex);
-    if (std::holds_alternative<ConstantShader>(shader)) {
-        return pixelClass;  // no lights are evaluated
-    }
-    if (const auto* checker = std::get_if<CheckerShader>(&shader)) {
-        const glm::dvec2 uv = textureCoordinates(node.geometry, nearest->hit);
-        if (checkerParity(uv.x, uv.y, checker->size) == 1) {
-            pixelClass.flags |= PixelClass::kOddCheckerBit;
-        }
-    }
-    for (std::size_t index = 0; index < scene.lights.size(); ++index) {
-        if (reachingLight(scene, node.geometry, nearest->hit, scene.lights[index], bvh)) {
-            pixelClass.flags |= PixelClass::litBit(static_cast<std::uint32_t>(index));
-        }
-    }
-    return pixelClass;
-}
-
 // ---------------------------------------------------------------- margins through the BVH
 //
 // The margin pass must give exactly the margins of the loop over every node. They are combined
@@ -280,7 +246,12 @@ TracedPixel tracePixel(const Scene& scene, const Bvh* bvh, const Ray& ray) {
     if (nearest) {
         addShadingMargins(scene, bvh, ray, *nearest, margins);
     }
-    return {shadeNearest(scene, bvh, nearest), classify(scene, bvh, nearest), margins.stored()};
+    if (!nearest) {
+        return {scene.background, PixelClass{}, margins.stored()};
+    }
+    // The classification comes from the decisions that made the colour, not a second look.
+    const ShadedHit shaded = shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, bvh);
+    return {shaded.color, PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags}, margins.stored()};
 }
 
 // One pixel: the average of its samples, classified by its first.

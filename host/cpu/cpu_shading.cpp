@@ -5,6 +5,8 @@
 #include <cmath>
 #include <variant>
 
+#include "image/pixel_class.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -119,41 +121,48 @@ LightDecision decideLight(const Scene& scene, const Geometry& geometry, const Hi
     return {LightReach::Lit, cosTheta, distanceSquared};
 }
 
-std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                                           const PointLight& light, const Bvh* bvh) {
-    const LightDecision decision = decideLight(scene, geometry, hit, light, bvh);
-    if (decision.reach != LightReach::Lit) {
-        return std::nullopt;
-    }
-    return ReachingLight{decision.cosTheta, decision.distanceSquared};
-}
-
-Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh) {
+Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh,
+                    std::uint32_t* litBits, std::vector<LightTerm>* terms) {
     Color total = scene.ambient;
-    for (const PointLight& light : scene.lights) {
-        if (const std::optional<ReachingLight> reaching = reachingLight(scene, geometry, hit, light, bvh)) {
-            total += light.color * (light.intensity * reaching->cosTheta / reaching->distanceSquared);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const PointLight& light = scene.lights[i];
+        LightTerm term{decideLight(scene, geometry, hit, light, bvh), Color(0.0)};
+        const LightDecision& decision = term.decision;
+        if (decision.reach == LightReach::Lit) {
+            term.contribution = light.color * (light.intensity * decision.cosTheta / decision.distanceSquared);
+            total += term.contribution;
+            if (litBits) {
+                *litBits |= PixelClass::litBit(std::uint32_t(i));
+            }
+        }
+        if (terms) {
+            terms->push_back(term);
         }
     }
     return total;
 }
 
-Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo,
-                   const Bvh* bvh) {
-    return albedo * incidentLight(scene, geometry, hit, bvh);
-}
-
-Color shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh) {
+ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh,
+                   std::vector<LightTerm>* lightTerms) {
     const Shader& shader = scene.shaders.at(node.shaderIndex);
+    ShadedHit shaded;
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
-        return constant->color;
+        shaded.albedo = shaded.color = constant->color;
+        return shaded;
     }
     if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
-        return shadeLambert(scene, node.geometry, hit, lambert->color, bvh);
+        shaded.albedo = lambert->color;
+    } else {
+        const CheckerShader& checker = std::get<CheckerShader>(shader);
+        const glm::dvec2 uv = textureCoordinates(node.geometry, hit);
+        shaded.checkerUv = uv;
+        shaded.albedo = checkerColor(checker, uv);
+        if (checkerParity(uv.x, uv.y, checker.size) == 1) {
+            shaded.flags |= PixelClass::kOddCheckerBit;
+        }
     }
-    const CheckerShader& checker = std::get<CheckerShader>(shader);
-    const Color albedo = checkerColor(checker, textureCoordinates(node.geometry, hit));
-    return shadeLambert(scene, node.geometry, hit, albedo, bvh);
+    shaded.color = shaded.albedo * incidentLight(scene, node.geometry, hit, bvh, &shaded.flags, lightTerms);
+    return shaded;
 }
 
 }  // namespace hexray

@@ -2,7 +2,9 @@
 // Shading for the CPU reference renderer: checker texture, Lambert light with shadow rays,
 // constant colour. Double precision, written independently of the shader.
 
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -43,37 +45,42 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
                     const glm::dvec3& lightPosition, const Bvh* bvh = nullptr);
 
-// How a light reaches a hit point that it lights.
-struct ReachingLight {
-    double cosTheta = 0.0;         // facing normal . direction to the light, > 0
-    double distanceSquared = 0.0;  // from the hit point to the light, > 0
-};
-
-// Why a light does or does not reach a hit point, with the terms that decided it (the
-// instrumented form of reachingLight, for `hexray pixel`).
+// Why a light does or does not reach a hit point, with the terms that decided it.
 enum class LightReach { Lit, AtPoint, FacingAway, Shadowed };
 struct LightDecision {
     LightReach reach = LightReach::AtPoint;
     double cosTheta = 0.0;         // 0 when AtPoint
     double distanceSquared = 0.0;
 };
+// Lit unless the light lies on the point itself, the surface faces away from it (cos <= 0),
+// or it is shadowed (the shadow ray, offset as above).
 LightDecision decideLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const PointLight& light,
                           const Bvh* bvh = nullptr);
 
-// The light's cos and squared distance when it contributes to the hit; nothing when it does not:
-// it lies on the point itself, the surface faces away from it (cos <= 0), or it is shadowed.
-std::optional<ReachingLight> reachingLight(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                                           const PointLight& light, const Bvh* bvh = nullptr);
+// One light's part in the light a hit receives.
+struct LightTerm {
+    LightDecision decision;
+    Color contribution{0.0};  // colour × intensity × cos θ / r² when lit, else 0
+};
 
-// ambient + sum over visible lights of lightColor * intensity * max(0, cos) / r^2.
-// No pi factor: intensity 10000 at distance 100 at normal incidence gives 1.
-Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh = nullptr);
+// ambient + sum over the lights that reach the hit of colour * intensity * cos / r^2.
+// No pi factor: intensity 10000 at distance 100 at normal incidence gives 1. `litBits` (when
+// given) receives PixelClass::litBit(i) for each light i that contributes, `terms` (when
+// given) every light's term.
+Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit, const Bvh* bvh = nullptr,
+                    std::uint32_t* litBits = nullptr, std::vector<LightTerm>* terms = nullptr);
 
-// albedo (component-wise) times the incident light.
-Color shadeLambert(const Scene& scene, const Geometry& geometry, const Hit& hit, const Color& albedo,
-                   const Bvh* bvh = nullptr);
-
-// The colour the node's shader gives this hit.
-Color shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh = nullptr);
+// A hit's colour and what decided it: the pixel classification's flags (the odd checker cell,
+// a bit per light that contributes) come from the very decisions that made the colour.
+struct ShadedHit {
+    Color color{0.0};
+    Color albedo{0.0};                   // the shader's colour at the hit
+    std::optional<glm::dvec2> checkerUv;  // texture coordinates, checker shaders only
+    std::uint32_t flags = 0;             // PixelClass flags
+};
+// The colour the node's shader gives this hit. `lightTerms` (when given) receives every light's
+// term for a lit shader; a constant shader evaluates no light.
+ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh = nullptr,
+                   std::vector<LightTerm>* lightTerms = nullptr);
 
 }  // namespace hexray

@@ -137,7 +137,7 @@ TEST(Lambert, NormalIncidenceAtDistance100WithIntensity10000IsOne) {
     Scene scene;
     scene.lights.push_back(lightAt({0, 100, 0}, 10000));
     expectNear(incidentLight(scene, kGround, planeHitFromAbove(0, 0)), {1, 1, 1}, 1e-15);
-    expectNear(shadeLambert(scene, kGround, planeHitFromAbove(0, 0), {0.2, 0.4, 0.8}), {0.2, 0.4, 0.8}, 1e-15);
+    expectNear(Color(0.2, 0.4, 0.8) * incidentLight(scene, kGround, planeHitFromAbove(0, 0)), {0.2, 0.4, 0.8}, 1e-15);
 }
 
 TEST(Lambert, SixtyDegreesGivesHalf) {
@@ -157,7 +157,7 @@ TEST(Lambert, AmbientAndLightColourAndFalloff) {
     const Color expectedLight(0.1 + 1.6, 0.2 + 0.8, 0.3 + 0.4);
     expectNear(incidentLight(scene, kGround, planeHitFromAbove(0, 0)), expectedLight, 1e-14);
     const Color albedo(0.5, 1.0, 2.0);
-    expectNear(shadeLambert(scene, kGround, planeHitFromAbove(0, 0), albedo), albedo * expectedLight, 1e-14);
+    expectNear(albedo * incidentLight(scene, kGround, planeHitFromAbove(0, 0)), albedo * expectedLight, 1e-14);
 }
 
 TEST(Lambert, LightsAddUp) {
@@ -361,7 +361,7 @@ TEST(ShadeHit, ConstantIgnoresLightsAndAmbient) {
     scene.lights.push_back(lightAt({0, 10, 0}, 1e6));
     scene.shaders.push_back(ConstantShader{{0.25, 0.5, 0.75}});
     scene.nodes.push_back(Node{kGround, 0});
-    expectNear(shadeHit(scene, scene.nodes[0], planeHitFromAbove(1, 2)), {0.25, 0.5, 0.75}, 0.0);
+    expectNear(shadeHit(scene, scene.nodes[0], planeHitFromAbove(1, 2)).color, {0.25, 0.5, 0.75}, 0.0);
 }
 
 TEST(ShadeHit, LambertAndChecker) {
@@ -372,9 +372,9 @@ TEST(ShadeHit, LambertAndChecker) {
     scene.shaders.push_back(CheckerShader{{1, 0, 0}, {0, 0, 1}, 1.0});
     scene.nodes.push_back(Node{kGround, 0});
     scene.nodes.push_back(Node{kGround, 1});
-    expectNear(shadeHit(scene, scene.nodes[0], planeHitFromAbove(0, 0)), {0.25, 0.5, 0.75}, 1e-15);
+    expectNear(shadeHit(scene, scene.nodes[0], planeHitFromAbove(0, 0)).color, {0.25, 0.5, 0.75}, 1e-15);
     // (0.5, 0.5) is an even cell: color1; (-0.5, 0.5) odd: color2. r^2 = 0.25 + 10000 + 0.25.
     const double light = 0.25 + 10000.0 * (100.0 / std::sqrt(10000.5)) / 10000.5;
-    expectNear(shadeHit(scene, scene.nodes[1], planeHitFromAbove(0.5, 0.5)), {light, 0, 0}, 1e-14);
-    expectNear(shadeHit(scene, scene.nodes[1], planeHitFromAbove(-0.5, 0.5)), {0, 0, light}, 1e-14);
+    expectNear(shadeHit(scene, scene.nodes[1], planeHitFromAbove(0.5, 0.5)).color, {light, 0, 0}, 1e-14);
+    expectNear(shadeHit(scene, scene.nodes[1], planeHitFromAbove(-0.5, 0.5)).color, {0, 0, light}, 1e-14);
 }
