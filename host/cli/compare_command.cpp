@@ -146,7 +146,7 @@ int runCompare(const CompareOptions& options) {
             const Scene scene = loadScene(file.path, options.image);
             const unsigned threads = cpuThreadCount(options.threads);
             const auto cpuStart = std::chrono::steady_clock::now();
-            const CpuRender reference = renderOnCpu(scene, threads);
+            const CpuRender reference = renderOnCpu(scene, threads, Acceleration::Auto, aov);
             const double cpuMilliseconds = millisecondsSince(cpuStart);
             const PixelMask ambiguous = marginsBelow(reference.margins, kAmbiguityMargin);
 
@@ -201,10 +201,9 @@ int runCompare(const CompareOptions& options) {
                     StagedAovs gpuAovs(directory / "gpu", AovSet{scene.image.width, scene.image.height,
                                                                  std::move(gpu.depth), std::move(gpu.normals),
                                                                  gpu.classes, scene.lights.size()});
-                    CpuAovs cpuPass = renderCpuAovs(scene);
                     StagedAovs cpuAovs(directory / "cpu",
-                                       AovSet{scene.image.width, scene.image.height, std::move(cpuPass.depth),
-                                              std::move(cpuPass.normals), reference.classes, scene.lights.size(),
+                                       AovSet{scene.image.width, scene.image.height, reference.depth,
+                                              reference.normals, reference.classes, scene.lights.size(),
                                               &reference.margins, kAmbiguityMargin});
                     gpuAovs.commit();
                     cpuAovs.commit();

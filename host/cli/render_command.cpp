@@ -81,15 +81,14 @@ std::string renderWithCpuReference(const RenderOptions& options, const Scene& sc
                                    std::optional<StagedAovs>& aovs) {
     const unsigned threads = cpuThreadCount(options.threads);
     const auto start = std::chrono::steady_clock::now();
-    CpuRender render = renderOnCpu(scene, threads);
+    CpuRender render = renderOnCpu(scene, threads, Acceleration::Auto, !options.aovDirectory.empty());
     const Rgb8Image image = encodeImage(render.image, scene.image.encoding);
     char how[128];
     std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads, millisecondsSince(start));
     writer.writeRows(image.bytes);
     if (!options.aovDirectory.empty()) {
-        CpuAovs pass = renderCpuAovs(scene);
-        aovs.emplace(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(pass.depth),
-                                                  std::move(pass.normals), std::move(render.classes),
+        aovs.emplace(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(render.depth),
+                                                  std::move(render.normals), std::move(render.classes),
                                                   scene.lights.size()});
     }
     return how;

@@ -48,23 +48,4 @@ CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint3
     return out;
 }
 
-CpuAovs renderCpuAovs(const Scene& scene) {
-    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
-    const std::optional<Bvh> bvh = bvhPays(scene) ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
-    const std::size_t count = std::size_t(scene.image.width) * scene.image.height;
-    CpuAovs aovs{std::vector<float>(count, std::numeric_limits<float>::infinity()),
-                 std::vector<glm::vec3>(count, glm::vec3(0.0f))};
-    for (std::uint32_t y = 0; y < scene.image.height; ++y) {
-        for (std::uint32_t x = 0; x < scene.image.width; ++x) {
-            const Ray ray = cameraRay(sheet, scene.image, x, y, 0);
-            if (const auto nearest = findNearestHit(ray, scene, bvh ? &*bvh : nullptr)) {
-                const std::size_t index = std::size_t(y) * scene.image.width + x;
-                aovs.depth[index] = float(nearest->hit.t);
-                aovs.normals[index] = glm::vec3(nearest->hit.facingNormal);
-            }
-        }
-    }
-    return aovs;
-}
-
 }  // namespace hexray

@@ -1,6 +1,6 @@
 #pragma once
-// The CPU reference's decisions for one pixel, and its per-pixel AOVs, from the reference's own
-// functions (cpu_intersect, cpu_shading): what `hexray pixel` and `render --aov` print and write.
+// The CPU reference's decisions for one pixel, from the reference's own functions
+// (cpu_intersect, cpu_shading): what `hexray pixel` prints.
 
 #include <cstdint>
 #include <optional>
@@ -32,13 +32,5 @@ struct CpuPixelExplanation {
 
 // Sample `sample` of pixel (x, y); the caller checks the ranges.
 CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint32_t y, std::uint32_t sample);
-
-// Per pixel, from its first sample (as the classes): the hit distance (+inf for the
-// background) and the shading normal (facing the ray; 0 for the background).
-struct CpuAovs {
-    std::vector<float> depth;
-    std::vector<glm::vec3> normals;
-};
-CpuAovs renderCpuAovs(const Scene& scene);
 
 }  // namespace hexray

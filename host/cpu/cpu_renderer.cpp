@@ -36,6 +36,7 @@ struct TracedPixel {
     Color color{0.0};
     PixelClass pixelClass;
     float margin = 0.0f;
+    std::optional<Hit> hit;  // the nearest, for the AOVs
 };
 
 // ---------------------------------------------------------------- margins through the BVH
@@ -247,11 +248,11 @@ TracedPixel tracePixel(const Scene& scene, const Bvh* bvh, const Ray& ray) {
         addShadingMargins(scene, bvh, ray, *nearest, margins);
     }
     if (!nearest) {
-        return {scene.background, PixelClass{}, margins.stored()};
+        return {scene.background, PixelClass{}, margins.stored(), std::nullopt};
     }
     // The classification comes from the decisions that made the colour, not a second look.
     const ShadedHit shaded = shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, bvh);
-    return {shaded.color, PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags}, margins.stored()};
+    return {shaded.color, PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags}, margins.stored(), nearest->hit};
 }
 
 // One pixel: the average of its samples, classified by its first.
@@ -259,6 +260,7 @@ struct RenderedPixel {
     Color color;
     PixelClass pixelClass;
     float margin;
+    std::optional<Hit> firstHit;
 };
 
 RenderedPixel renderPixel(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t x,
@@ -274,7 +276,7 @@ RenderedPixel renderPixel(const Scene& scene, const Bvh* bvh, const PixelSheet& 
         sum += pixel.color;
         margin = std::min(margin, pixel.margin);
     }
-    return {sum / double(samples), first.pixelClass, margin};
+    return {sum / double(samples), first.pixelClass, margin, first.hit};
 }
 
 void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
@@ -285,6 +287,10 @@ void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std:
         image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
         render.classes[index] = pixel.pixelClass;
         render.margins[index] = pixel.margin;
+        if (!render.depth.empty() && pixel.firstHit) {
+            render.depth[index] = float(pixel.firstHit->t);
+            render.normals[index] = glm::vec3(pixel.firstHit->facingNormal);
+        }
     }
 }
 
@@ -314,13 +320,17 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
     return renderOnCpu(scene, threadCount, Acceleration::Auto);
 }
 
-CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration) {
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs) {
     checkShaderIndices(scene);
 
     CpuRender render;
     render.image = Image(scene.image.width, scene.image.height);
     render.classes.resize(render.image.pixels.size());
     render.margins.resize(render.image.pixels.size());
+    if (withAovs) {
+        render.depth.assign(render.image.pixels.size(), std::numeric_limits<float>::infinity());
+        render.normals.assign(render.image.pixels.size(), glm::vec3(0.0f));
+    }
     const Image& image = render.image;
     if (image.width == 0 || image.height == 0) {
         return render;

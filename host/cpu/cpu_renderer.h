@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "accel/bvh.h"
 #include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
@@ -25,6 +27,10 @@ struct CpuRender {
     // miss, which node, which checker cell, facing each light, shadowed or not); infinity
     // when no decision was made. Below kAmbiguityMargin the pixel is ambiguous.
     std::vector<float> margins;
+    // With AOVs asked for, from each pixel's first sample (as the classes): the hit distance
+    // (+inf for the background) and the shading normal (facing the ray; 0 for the background).
+    std::vector<float> depth;
+    std::vector<glm::vec3> normals;
 
     bool isAmbiguous(std::size_t pixel) const { return margins[pixel] < kAmbiguityMargin; }
 };
@@ -42,8 +48,8 @@ unsigned cpuThreadCount(unsigned requested);
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
 
 // How renderOnCpu finds what a ray meets (Auto: a BVH when bvhPays(scene)). Every choice
-// gives the same image, classes and margins bit for bit.
-CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration);
+// gives the same image, classes and margins bit for bit. `withAovs`: also the depth and normals.
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs = false);
 
 // The margin renderOnCpu would give pixel (x, y), without rendering the others.
 float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y);

@@ -188,7 +188,7 @@ TEST_F(PixelTraceTest, AovModeGivesDepthAndNormalsAndTheSameImage) {
     // Against the CPU reference's AOVs wherever both show the same node, in f64: in f32 the
     // floor's rows near the horizon amplify the direction's rounding (1e-7 / |d.y|) in t.
     const GpuRenderResult aov64 = renderer.render(scene, Precision::F64, GpuOutput::LinearClassesAndAov);
-    const CpuAovs cpu = renderCpuAovs(scene);
+    const CpuRender cpu = renderOnCpu(scene, 0, Acceleration::Auto, true);
     const CpuRender reference = renderOnCpu(scene);
     std::size_t compared = 0;
     for (std::size_t i = 0; i < cpu.depth.size(); ++i) {
@@ -215,7 +215,7 @@ TEST_F(PixelTraceTest, TraceAndAovModesFollowTheBvhInAManySphereScene) {
     const GpuRenderResult aov = renderer.render(scene, Precision::F64, GpuOutput::LinearClassesAndAov);
     ASSERT_TRUE(aov.usedBvh);
     const CpuRender reference = renderOnCpu(scene);
-    const CpuAovs cpu = renderCpuAovs(scene);
+    const CpuRender cpu = renderOnCpu(scene, 0, Acceleration::Auto, true);
     std::size_t traced = 0;
     std::size_t spheres = 0;
     for (std::uint32_t y = 0; y < 54; y += 7) {
