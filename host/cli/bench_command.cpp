@@ -345,7 +345,10 @@ int runBench(const BenchOptions& options) {
             BenchScene& bench = scenes[configurations[i].scene];
             const std::uint32_t spp = configurations[i].samplesPerPixel;
             if (bench.spheres && configurations[i].backend == BenchBackend::Cpu) {
-                bench.reference.bySamples[spp] = {measurements[i].image, measurements[i].classes, measurements[i].margins};
+                CpuRender& reference = bench.reference.bySamples[spp];
+                reference.image = measurements[i].image;
+                reference.classes = measurements[i].classes;
+                reference.margins = measurements[i].margins;
             }
         }
         for (BenchScene& bench : scenes) {
