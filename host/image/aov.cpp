@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <regex>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <limits>
@@ -46,6 +46,22 @@ Rgb idColour(std::uint32_t id) {
         default: rgb = {1, 0, x}; break;
     }
     return {std::uint8_t(55 + 200 * rgb[0]), std::uint8_t(55 + 200 * rgb[1]), std::uint8_t(55 + 200 * rgb[2])};
+}
+
+// Whether `name` is a file an AOV set may hold: depth, normal, object-id, margin or light-N,
+// as .exr or .png.
+bool isAovFileName(const std::filesystem::path& name) {
+    const std::string extension = name.extension().string();
+    const std::string stem = name.stem().string();
+    if (extension != ".exr" && extension != ".png") {
+        return false;
+    }
+    if (stem == "depth" || stem == "normal" || stem == "object-id" || stem == "margin") {
+        return true;
+    }
+    const std::string light = "light-";
+    return stem.size() > light.size() && stem.compare(0, light.size(), light) == 0 &&
+           std::all_of(stem.begin() + light.size(), stem.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
 template <class PixelColour>
@@ -156,11 +172,10 @@ StagedAovs::~StagedAovs() {
 
 std::vector<std::filesystem::path> StagedAovs::commit() {
     // An earlier set's files that this one does not replace: its extra lights, its margin.
-    static const std::regex kAovName(R"((depth|normal|object-id|margin|light-[0-9]+)\.(exr|png))");
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(directory_, error)) {
         const std::string name = entry.path().filename().string();
-        if (std::regex_match(name, kAovName) && std::find(names_.begin(), names_.end(), name) == names_.end()) {
+        if (isAovFileName(name) && std::find(names_.begin(), names_.end(), name) == names_.end()) {
             std::filesystem::remove(entry.path(), error);
             if (error) {
                 throw ImageIoError(entry.path().string() + ": cannot remove an earlier AOV: " + error.message());

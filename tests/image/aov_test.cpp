@@ -77,13 +77,16 @@ TEST_F(AovTest, CommitReplacesAnEarlierSetAndDropsWhatThisOneLacks) {
     const std::vector<float> margins = {1.0f};
     withMargins.margins = &margins;
     StagedAovs(dir_ / "aov", withMargins).commit();
-    std::ofstream(dir_ / "aov" / "notes.txt") << "kept";
+    for (const char* name : {"notes.txt", "light-extra.png", "depth.txt"}) {
+        std::ofstream(dir_ / "aov" / name) << "kept";
+    }
     const auto files = StagedAovs(dir_ / "aov", tinySet(1)).commit();
     EXPECT_EQ(files.size(), 8u);
-    // light-1, light-2 and margin were the earlier set's only; files hexray does not write stay.
+    // light-1, light-2 and margin were the earlier set's only; files hexray does not name stay.
     EXPECT_EQ(namesIn(dir_ / "aov"),
-              (std::vector<std::string>{"depth.exr", "depth.png", "light-0.exr", "light-0.png", "normal.exr",
-                                        "normal.png", "notes.txt", "object-id.exr", "object-id.png"}));
+              (std::vector<std::string>{"depth.exr", "depth.png", "depth.txt", "light-0.exr", "light-0.png",
+                                        "light-extra.png", "normal.exr", "normal.png", "notes.txt", "object-id.exr",
+                                        "object-id.png"}));
 }
 
 }  // namespace
