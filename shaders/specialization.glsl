@@ -67,4 +67,3 @@ bool isConstantShaded(uint node) {
 bool isCheckerShaded(uint node) {
     return NODES_SPECIALISED ? nodeIn(node, CHECKER_NODES, LIT_NODES) : nodes[node].kinds.y == SHADER_CHECKER;
 }
-

@@ -1,10 +1,9 @@
 #include "cpu/cpu_explain.h"
 
-#include <cmath>
-#include <limits>
 #include <variant>
 
-#include "accel/bvh.h"
+#include <glm/common.hpp>
+
 #include "camera/camera.h"
 #include "cpu/cpu_renderer.h"
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <variant>
 
-#include "image/pixel_class.h"
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+
+#include "image/pixel_class.h"
 
 namespace hexray {
 
