@@ -140,24 +140,19 @@ public:
     // the comparison pipeline, untimed, for the pixel classes the render pipeline does not write.
     void measure(const Scene& scene, const Configuration& configuration, bool withClasses, Measurement& measurement) {
         const auto start = std::chrono::steady_clock::now();
+        const auto recordDevice = [&](GpuRenderResult&& render) {
+            measurement.renderMilliseconds.push_back(render.timing.renderMilliseconds);
+            measurement.frameMilliseconds.push_back(millisecondsSince(start));
+            measurement.encoded = std::move(render.encoded);
+        };
         switch (configuration.backend) {
-            case BenchBackend::Gpu: {
-                GpuRenderResult render = gpu_.render(scene, configuration.precision, GpuOutput::Encoded8);
-                measurement.renderMilliseconds.push_back(render.timing.renderMilliseconds);
-                measurement.frameMilliseconds.push_back(millisecondsSince(start));
-                measurement.encoded = std::move(render.encoded);
+            case BenchBackend::Gpu:
+                recordDevice(gpu_.render(scene, configuration.precision, GpuOutput::Encoded8));
                 if (withClasses) {
                     measurement.classes = gpu_.render(scene, configuration.precision).classes;
                 }
                 return;
-            }
-            case BenchBackend::GpuCeiling: {
-                GpuRenderResult render = gpu_.renderLectureDemoCeiling(scene);
-                measurement.renderMilliseconds.push_back(render.timing.renderMilliseconds);
-                measurement.frameMilliseconds.push_back(millisecondsSince(start));
-                measurement.encoded = std::move(render.encoded);
-                return;
-            }
+            case BenchBackend::GpuCeiling: recordDevice(gpu_.renderLectureDemoCeiling(scene)); return;
             case BenchBackend::Cpu: {
                 CpuRender render = renderOnCpu(scene);
                 measurement.renderMilliseconds.push_back(millisecondsSince(start));
@@ -472,8 +467,9 @@ int runBench(const BenchOptions& options) {
                     << backend << ',' << precision << ',' << configuration.samplesPerPixel << ',' << row.medianMpix
                     << ',' << row.bestMpix << ',' << row.medianMs << ',' << row.frameMs << ',' << row.error.rmse
                     << ',' << row.error.maxAbs << ',' << row.error.pixelsOverOneLevel << ','
-                    << (row.topology ? std::to_string(row.topology->mismatches) : "") << ',' << (bench.spheres ? std::to_string(*bench.spheres) : "")
-                    << ',' << row.threads << ',' << row.coreNsPerPixel << ','
+                    << (row.topology ? std::to_string(row.topology->mismatches) : "") << ','
+                    << (bench.spheres ? std::to_string(*bench.spheres) : "") << ',' << row.threads << ','
+                    << row.coreNsPerPixel << ','
                     << (row.versusEmbree ? std::to_string(*row.versusEmbree) : "") << '\n';
             }
         };

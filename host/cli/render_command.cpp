@@ -129,7 +129,6 @@ int runRender(const RenderOptions& options) {
             }
             if (fallBack) {
                 writer.reset();  // drops the GPU's partial rows with their temporary file
-                aovs.reset();
                 writer.emplace(output, scene.image.width, scene.image.height);
             }
         }

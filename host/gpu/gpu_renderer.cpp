@@ -310,8 +310,7 @@ GpuRenderResult GpuRenderer::encodedRows(const Scene& scene, Precision precision
     GpuRenderResult result;
     result.precision = precision;
     std::vector<std::uint8_t> rgb;
-    const Acceleration acceleration = kernel == Kernel::Renderer ? Acceleration::Auto : Acceleration::None;
-    renderBands(scene, precision, GpuOutput::Encoded8, acceleration, kernel, result, [&](const Band& band) {
+    renderBands(scene, precision, GpuOutput::Encoded8, Acceleration::Auto, kernel, result, [&](const Band& band) {
         const std::size_t count = std::size_t(band.rows) * scene.image.width;
         rgb.resize(count * 3);
         for (std::size_t i = 0; i < count; ++i) {

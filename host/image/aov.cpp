@@ -1,11 +1,11 @@
 #include "image/aov.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <system_error>
@@ -75,27 +75,14 @@ Rgb8Image preview(const AovSet& aovs, PixelColour&& colour) {
     return image;
 }
 
-}  // namespace
-
-StagedAovs::StagedAovs(const std::filesystem::path& directory, const AovSet& aovs) : directory_(directory) {
-    std::error_code error;
-    std::filesystem::create_directories(directory, error);
-    if (error) {
-        throw ImageIoError(directory.string() + ": cannot create the AOV directory: " + error.message());
-    }
-    // Inside the target directory, so that commit() renames within one file system.
-    std::string pattern = (directory / ".hexray-aov-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) {
-        throw ImageIoError(directory.string() + ": cannot create a staging directory: " +
-                           std::generic_category().message(errno));
-    }
-    staging_ = pattern;
+// Writes every AOV of `aovs` into `into`, appending the file names to `names`.
+void writeSet(const std::filesystem::path& into, const AovSet& aovs, std::vector<std::string>& names) {
     const std::size_t count = std::size_t(aovs.width) * aovs.height;
     const auto write = [&](const std::string& name, std::vector<ExrChannel> channels, const Rgb8Image& image) {
-        writeExr(staging_ / (name + ".exr"), aovs.width, aovs.height, std::move(channels));
-        writePng(staging_ / (name + ".png"), image);
-        names_.push_back(name + ".exr");
-        names_.push_back(name + ".png");
+        writeExr(into / (name + ".exr"), aovs.width, aovs.height, std::move(channels));
+        writePng(into / (name + ".png"), image);
+        names.push_back(name + ".exr");
+        names.push_back(name + ".png");
     };
     const auto background = [&](std::size_t i) { return aovs.classes[i].node == PixelClass::kBackground; };
 
@@ -163,16 +150,53 @@ StagedAovs::StagedAovs(const std::filesystem::path& directory, const AovSet& aov
     }
 }
 
+void removeQuietly(const std::filesystem::path& directory) {
+    std::error_code ignored;
+    std::filesystem::remove_all(directory, ignored);
+}
+
+}  // namespace
+
+StagedAovs::StagedAovs(const std::filesystem::path& directory, const AovSet& aovs) : directory_(directory) {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) {
+        throw ImageIoError(directory.string() + ": cannot create the AOV directory: " + error.message());
+    }
+    // Inside the target directory, so that commit() renames within one file system.
+    std::string pattern = (directory / ".hexray-aov-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) {
+        throw ImageIoError(directory.string() + ": cannot create a staging directory: " +
+                           std::generic_category().message(errno));
+    }
+    staging_ = pattern;
+    try {
+        writeSet(staging_, aovs, names_);
+    } catch (...) {
+        removeQuietly(staging_);  // a constructor that throws gets no destructor call
+        throw;
+    }
+}
+
 StagedAovs::~StagedAovs() {
     if (!staging_.empty()) {
-        std::error_code ignored;
-        std::filesystem::remove_all(staging_, ignored);
+        removeQuietly(staging_);
     }
 }
 
 std::vector<std::filesystem::path> StagedAovs::commit() {
-    // An earlier set's files that this one does not replace: its extra lights, its margin.
     std::error_code error;
+    std::vector<std::filesystem::path> committed;
+    for (const std::string& name : names_) {
+        std::filesystem::rename(staging_ / name, directory_ / name, error);
+        if (error) {
+            throw ImageIoError((directory_ / name).string() + ": cannot move the AOV into place: " + error.message());
+        }
+        committed.push_back(directory_ / name);
+    }
+    removeQuietly(staging_);
+    staging_.clear();
+    // Then an earlier set's files that this one did not replace: its extra lights, its margin.
     for (const auto& entry : std::filesystem::directory_iterator(directory_, error)) {
         const std::string name = entry.path().filename().string();
         if (isAovFileName(name) && std::find(names_.begin(), names_.end(), name) == names_.end()) {
@@ -185,16 +209,6 @@ std::vector<std::filesystem::path> StagedAovs::commit() {
     if (error) {
         throw ImageIoError(directory_.string() + ": cannot list the AOV directory: " + error.message());
     }
-    std::vector<std::filesystem::path> committed;
-    for (const std::string& name : names_) {
-        std::filesystem::rename(staging_ / name, directory_ / name, error);
-        if (error) {
-            throw ImageIoError((directory_ / name).string() + ": cannot move the AOV into place: " + error.message());
-        }
-        committed.push_back(directory_ / name);
-    }
-    std::filesystem::remove(staging_, error);
-    staging_.clear();
     return committed;
 }
 

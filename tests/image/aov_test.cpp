@@ -72,6 +72,13 @@ TEST_F(AovTest, NothingAppearsBeforeCommitAndAnUncommittedSetLeavesNoTrace) {
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(earlier), {}), "an earlier render's");
 }
 
+TEST_F(AovTest, ASetThatCannotBeWrittenLeavesNoStagingDirectory) {
+    AovSet wrong = tinySet(1);
+    wrong.depth.push_back(1.0f);  // one value too many: the EXR writer refuses it
+    EXPECT_THROW(StagedAovs(dir_ / "aov", wrong), ImageIoError);
+    EXPECT_TRUE(fs::is_empty(dir_ / "aov"));
+}
+
 TEST_F(AovTest, CommitReplacesAnEarlierSetAndDropsWhatThisOneLacks) {
     AovSet withMargins = tinySet(3);
     const std::vector<float> margins = {1.0f};
