@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gpu_scene.h"
+#include "gpu/render_plan.h"
 #include "gpu/precision.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
@@ -34,7 +34,7 @@ TEST(Precision, ConditioningOfTheLectureDemo) {
     EXPECT_NEAR(c.largestDistance, std::sqrt(100.0 + 14400.0) + 10.0, 1e-9);
     EXPECT_EQ(c.smallestFeature, 10.0);
     EXPECT_EQ(choosePrecision(scene, true), Precision::F32);
-    EXPECT_EQ(gpu::placementScale(scene), 128.0);  // 2^round(log2(130.4))
+    EXPECT_EQ(placementScale(scene), 128.0);  // 2^round(log2(130.4))
 }
 
 TEST(Precision, ASphereTooSmallForItsDistanceNeedsDouble) {
@@ -81,7 +81,7 @@ TEST(Precision, ScaleOfTheSceneDoesNotMatter) {
     small.nodes[0].geometry = Sphere{{0, 0, 1e-27}, 1e-30};
     EXPECT_NEAR(estimateConditioning(small).ratio(), 1001.0, 1e-9);
     EXPECT_EQ(choosePrecision(small, true), Precision::F32);
-    EXPECT_EQ(gpu::placementScale(small), std::exp2(std::round(std::log2(1.001e-27))));
+    EXPECT_EQ(placementScale(small), std::exp2(std::round(std::log2(1.001e-27))));
 }
 
 }  // namespace
