@@ -18,18 +18,20 @@ struct LightPath {
 
 LightPath lightPath(Surface s, vec3r lightPosition) {
     LightPath path;
-    vec3r toLight = lightPosition - s.position;
+    // From the shadow origin, which is the point itself or (off a sphere the shadow rays must not
+    // hit again) a few units of roundoff away: one square root serves cos theta, the shadow ray's
+    // direction and its length.
+    vec3r toLight = lightPosition - s.shadowOrigin;
     path.r2 = dot(toLight, toLight);
+    real inverseDistance = inversesqrt(path.r2);
     // A light exactly at the point (r2 = 0) has no direction and contributes nothing.
-    real cosTheta = dot(s.normal, toLight) * inversesqrt(path.r2);
+    real cosTheta = dot(s.normal, toLight) * inverseDistance;
     path.facing = path.r2 > 0.0 && cosTheta > 0.0;
     path.cosTheta = path.r2 == 0.0 ? 0.0 : cosTheta;
-    vec3r shadowPath = lightPosition - s.shadowOrigin;
-    real shadowLength = length(shadowPath);
-    path.shadowRay = Ray(s.shadowOrigin, shadowPath / shadowLength);
+    path.shadowRay = Ray(s.shadowOrigin, toLight * inverseDistance);
     // A surface facing away asks about an empty segment: the answer is unused, and a BVH walk
     // opens no box for it (straight-line code, as lavapipe runs a skipped branch anyway).
-    path.shadowLength = path.facing ? shadowLength : 0.0;
+    path.shadowLength = path.facing ? path.r2 * inverseDistance : 0.0;
     return path;
 }
 

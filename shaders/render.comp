@@ -52,8 +52,10 @@ Surface hitSurface(Ray ray, Hit hit) {
 #ifdef HEXRAY_TEXTBOOK
     return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
-    return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x)
-                                 : sphereSurface(ray, geometry, nodes[hit.node].surface.x > 0.0);
+    Surface sphere = sphereSurface(ray, geometry, nodes[hit.node].surface.x > 0.0);
+    // Every node is tested for every shadow ray, the sphere itself included.
+    sphere.shadowOrigin = shadowOriginOffSphere(sphere, geometry);
+    return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
 #endif
 }
 

@@ -44,18 +44,29 @@ Surface planeSurfaceTextbook(Ray ray, real t) {
     return s;
 }
 
-// The outward normal turned toward the ray, and the point on the sphere along it pushed off by
-// its own error bound (it scales with the coordinates), twice over so the rounding of the
-// addition cannot pull it back: never a fixed epsilon.
+vec3r facing(vec3r outwardNormal, Ray ray) {
+    return dot(outwardNormal, ray.direction) > 0.0 ? -outwardNormal : outwardNormal;
+}
+
+// The point on the sphere along the outward normal. Its shadow rays start right there: fine when
+// the shadow tests leave out the sphere itself, as generated kernels do for a sphere the camera
+// sees from outside (see shadowOriginOffSphere otherwise).
 Surface reprojectedSphereSurface(Ray ray, vec4r sphere, vec3r outwardNormal) {
     Surface s;
     s.outwardNormal = outwardNormal;
     s.position = sphere.xyz + sphere.w * outwardNormal;  // on the sphere, up to rounding
-    s.normal = dot(outwardNormal, ray.direction) > 0.0 ? -outwardNormal : outwardNormal;
-    vec3r error = REPROJECTION_ERROR * (abs(sphere.xyz) + abs(sphere.w * outwardNormal));
-    real offset = 2.0 * dot(abs(outwardNormal), error);
-    s.shadowOrigin = s.position + offset * s.normal;
+    s.normal = facing(outwardNormal, ray);
+    s.shadowOrigin = s.position;
     return s;
+}
+
+// A shadow origin that cannot hit its own sphere again: the point pushed off along the facing
+// normal by its own error bound (it scales with the coordinates), twice over so the rounding of
+// the addition cannot pull it back: never a fixed epsilon.
+vec3r shadowOriginOffSphere(Surface s, vec4r sphere) {
+    vec3r error = REPROJECTION_ERROR * (abs(sphere.xyz) + abs(sphere.w * s.outwardNormal));
+    real offset = 2.0 * dot(abs(s.outwardNormal), error);
+    return s.position + offset * s.normal;
 }
 
 // The normal from the intersection's own small quantities: with l the centre's offset to the
@@ -74,11 +85,15 @@ Surface sphereSurface(Ray ray, vec4r sphere, bool nearRoot) {
     return reprojectedSphereSurface(ray, sphere, outward);
 }
 
-// The normal from the hit point o + t d: accurate while the sphere is not far from the ray's
-// origin against its radius (see sphereDistanceFast).
+// The hit point o + t d and the normal from it: accurate while the sphere is not far from the
+// ray's origin against its radius (see sphereDistanceFast).
 Surface sphereSurfaceFast(Ray ray, real t, vec4r sphere) {
-    vec3r outward = normalize(ray.origin + t * ray.direction - sphere.xyz);
-    return reprojectedSphereSurface(ray, sphere, outward);
+    Surface s;
+    s.position = ray.origin + t * ray.direction;
+    s.outwardNormal = normalize(s.position - sphere.xyz);
+    s.normal = facing(s.outwardNormal, ray);
+    s.shadowOrigin = s.position;
+    return s;
 }
 
 Surface sphereSurfaceTextbook(Ray ray, real t, vec4r sphere) {
@@ -86,7 +101,7 @@ Surface sphereSurfaceTextbook(Ray ray, real t, vec4r sphere) {
     Surface s;
     s.outwardNormal = normalize(approximate - sphere.xyz);
     s.position = approximate;
-    s.normal = dot(s.outwardNormal, ray.direction) > 0.0 ? -s.outwardNormal : s.outwardNormal;
+    s.normal = facing(s.outwardNormal, ray);
     s.shadowOrigin = s.position + SHADOW_EPSILON * s.normal;
     return s;
 }

@@ -219,6 +219,16 @@ private:
                     "    s.position = vec3r(0.0); s.normal = vec3r(0.0);\n"
                     "    s.outwardNormal = vec3r(0.0); s.shadowOrigin = vec3r(0.0);\n";
         }
+        // Shadow rays leave out a sphere the camera sees from outside (convexity), not one it sees
+        // from inside: from there they start off the sphere.
+        const NodeSet inside = set & where([](const NodeCode& n) {
+                                   return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside;
+                               });
+        if (inside && !textbook()) {
+            select("vec4r", "insideSphere", inside, "GEOMETRY");
+            out_ << "    s.shadowOrigin = " << contains(inside)
+                 << " ? shadowOriginOffSphere(s, insideSphere) : s.shadowOrigin;\n";
+        }
         out_ << "    return s;\n}\n\n";
     }
 
