@@ -15,8 +15,8 @@
 #include "compare/compare.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
-#include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "io/output_file.h"
 #include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
 #ifdef HEXRAY_WITH_EMBREE
@@ -495,7 +495,7 @@ int runBench(const BenchOptions& options) {
         }
 
         if (!options.csvPath.empty()) {
-            AtomicFile file(options.csvPath);
+            OutputFile file(options.csvPath);
             const std::string text = csv.str();
             if (std::fwrite(text.data(), 1, text.size(), file.stream()) != text.size()) {
                 file.fail("cannot write", "short write");

@@ -4,8 +4,11 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <new>
 
 #include "image/image_io.h"
+#include "io/output_error.h"
+#include "io/output_plan.h"
 #include "scene/scene_loader.h"
 
 namespace hexray::cli {
@@ -35,12 +38,22 @@ int guarded(const std::function<int()>& command) {
         const VulkanError classified = classify(error, "rendering");
         printError(classified.what());
         return exitCodeFor(classified.failure());
+    } catch (const OutputConflict& error) {
+        printError(error.what());
+        return kBadInput;
+    } catch (const OutputError& error) {
+        printError(error.what());
+        return kOutputFailed;
     } catch (const ImageIoError& error) {
         printError(error.what());
         return kOutputFailed;
     } catch (const std::filesystem::filesystem_error& error) {
         printError(error.what());
         return kBadInput;  // a path on the command line that cannot be read
+    } catch (const std::bad_alloc&) {
+        printError("out of memory: make the image narrower (--width): hexray's memory grows with the image's width "
+                   "(and, with --aov, its number of lights), not with its height");
+        return kInternalError;
     } catch (const std::exception& error) {
         printError(std::string("unexpected failure: ") + error.what());
         return kInternalError;

@@ -13,12 +13,17 @@
 
 namespace hexray::cli {
 
+// What a band of rows may hold, for the renders whose rows come back as floats (the CPU
+// reference, compare, AOVs): memory grows with the image's width, not its area.
+inline constexpr std::size_t kBandBytes = std::size_t{32} << 20;
+
 void printError(const std::string& message);
 
 // The exit code for a Vulkan failure of this kind.
 int exitCodeFor(VulkanFailure failure);
 
-// Runs a command, turning each kind of failure into its message and exit code.
+// Runs a command, turning each kind of failure into its message and exit code (out of memory:
+// exit code 6 and a message that says which size to reduce).
 int guarded(const std::function<int()>& command);
 
 Scene loadScene(const std::string& path, const ImageOverride& image);

@@ -3,13 +3,16 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "cli/command_support.h"
-#include "cpu/cpu_explain.h"
+#include "compare/render_comparator.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
 #include "image/aov.h"
 #include "image/image_io.h"
+#include "io/output_plan.h"
+#include "io/standard_output.h"
 #include "scene/scene_loader.h"
 
 namespace hexray::cli {
@@ -119,6 +122,181 @@ void printTableRow(const std::string& scene, const Row& row) {
                 !row.judged ? (row.verdict.passed() ? "(pass)" : "(fail, not judged)") : row.verdict.passed() ? "pass" : "FAIL");
 }
 
+void printFailedRow(const std::string& scene) {
+    std::printf("| %s | – | | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n", scene.c_str());
+}
+
+// The files a single-scene comparison writes besides its report: the heat map, the mask and
+// both backends' AOVs, opened before the renders and written a band at a time.
+class BandOutputs {
+public:
+    BandOutputs(const CompareOptions& options, const Scene& scene) : options_(options) {
+        const std::uint32_t width = scene.image.width;
+        const std::uint32_t height = scene.image.height;
+        if (!options.diffPath.empty()) {
+            diff_.emplace(options.diffPath, width, height);
+        }
+        if (!options.maskPath.empty()) {
+            mask_.emplace(options.maskPath, width, height);
+        }
+        if (!options.aovDirectory.empty()) {
+            const fs::path directory(options.aovDirectory);
+            gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()});
+            cpuAovs_.emplace(directory / "cpu",
+                             AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin});
+        }
+    }
+
+    bool withAovs() const { return gpuAovs_.has_value(); }
+
+    void writeRows(const CpuRender& reference, const GpuRenderResult& gpu, const PixelMask& ambiguous,
+                   const Rgb8Image& reference8, const Rgb8Image& gpu8) {
+        if (diff_) {
+            diff_->writeRows(diffHeatMap(reference8, gpu8).bytes);
+        }
+        if (mask_) {
+            mask_->writeRows(mismatchMask(reference.classes, gpu.classes, ambiguous, reference8, gpu8).bytes);
+        }
+        if (gpuAovs_) {
+            gpuAovs_->writeRows({gpu.image.height, gpu.depth, gpu.normals, gpu.classes, {}});
+            cpuAovs_->writeRows(
+                {reference.image.height, reference.depth, reference.normals, reference.classes, reference.margins});
+        }
+    }
+
+    // Puts every file in place, saying so.
+    void commit() {
+        if (diff_) {
+            diff_->finish();
+            std::printf("wrote diff heat map %s\n", displayName(options_.diffPath).c_str());
+        }
+        if (mask_) {
+            mask_->finish();
+            std::printf("wrote mismatch mask %s (red topology, yellow colour > 1 level, blue ambiguous)\n",
+                        displayName(options_.maskPath).c_str());
+        }
+        if (gpuAovs_) {
+            gpuAovs_->commit();
+            cpuAovs_->commit();
+            const fs::path directory(options_.aovDirectory);
+            std::printf("wrote AOVs in %s and %s\n", (directory / "gpu").c_str(), (directory / "cpu").c_str());
+        }
+    }
+
+private:
+    const CompareOptions& options_;
+    std::optional<PngRowWriter> diff_;
+    std::optional<PngRowWriter> mask_;
+    std::optional<StagedAovs> gpuAovs_;
+    std::optional<StagedAovs> cpuAovs_;
+};
+
+// What one comparison of a scene in one precision found and took.
+struct BandedComparison {
+    RenderComparison comparison;
+    Precision precision;
+    double gpuMilliseconds;
+    double cpuMilliseconds;
+    unsigned threads;
+};
+
+// Renders `scene` on the GPU a band at a time, the CPU reference for the same rows as each band
+// arrives, and compares them; `outputs` (if any) get each band's rows.
+BandedComparison compareInBands(GpuRenderer& renderer, const Scene& scene, Precision requested, unsigned threads,
+                                BandOutputs* outputs) {
+    const bool aov = outputs && outputs->withAovs();
+    const CpuBandRenderer reference(scene, threads, Acceleration::Auto, aov);
+    RenderComparator comparator;
+    CpuRender cpu;
+    double cpuMilliseconds = 0;
+    const Encoding encoding = scene.image.encoding;
+    const GpuRenderResult gpu = renderer.renderLinearRows(
+        scene, renderer.plan(scene, {requested}), aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses,
+        [&](std::uint32_t firstRow, const GpuRenderResult& band) {
+            const auto start = std::chrono::steady_clock::now();
+            reference.render(firstRow, band.image.height, cpu);
+            cpuMilliseconds += millisecondsSince(start);
+            const PixelMask ambiguous = marginsBelow(cpu.margins, kAmbiguityMargin);
+            const Rgb8Image reference8 = encodeImage(cpu.image, encoding);
+            const Rgb8Image gpu8 = encodeImage(band.image, encoding);
+            comparator.add({cpu.image, cpu.classes, reference8}, {band.image, band.classes, gpu8}, ambiguous);
+            if (outputs) {
+                outputs->writeRows(cpu, band, ambiguous, reference8, gpu8);
+            }
+        });
+    return {comparator.result(), gpu.precision, gpu.timing.renderMilliseconds, cpuMilliseconds, reference.threadCount()};
+}
+
+// Every path the comparison reads or writes, checked before any work.
+void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& files) {
+    OutputPlan plan;
+    for (const SceneFile& file : files) {
+        plan.addInput("the scene", file.path);
+    }
+    if (!options.diffPath.empty()) {
+        plan.addFile("--diff", options.diffPath);
+    }
+    if (!options.maskPath.empty()) {
+        plan.addFile("--mask", options.maskPath);
+    }
+    if (!options.aovDirectory.empty()) {
+        plan.addDirectory("--aov", fs::path(options.aovDirectory) / "gpu", isAovFileName);
+        plan.addDirectory("--aov", fs::path(options.aovDirectory) / "cpu", isAovFileName);
+    }
+    plan.check();
+}
+
+// A table's scene that cannot be loaded is a failed row, not the end of the table.
+std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table) {
+    try {
+        return loadScene(file.path, image);
+    } catch (const SceneError& error) {
+        if (!table) {
+            throw;
+        }
+        printError(error.what());
+        printFailedRow(file.name);
+        return std::nullopt;
+    }
+}
+
+// --diff, --mask and --aov describe one comparison: not a table's.
+void requireSingleComparison(const CompareOptions& options, bool table) {
+    if (!options.diffPath.empty() && table) {
+        throw SceneError("--diff: a heat map needs a single scene and a single precision");
+    }
+    if (!options.maskPath.empty() && table) {
+        throw SceneError("--mask: a mismatch mask needs a single scene and a single precision");
+    }
+    if (!options.aovDirectory.empty() && table) {
+        throw SceneError("--aov: AOVs need a single scene and a single precision");
+    }
+}
+
+std::vector<Precision> precisionsToCompare(const CompareOptions& options, const VulkanContext& context) {
+    if (!options.allPrecisions) {
+        return {options.precision};
+    }
+    std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32};
+    if (context.selected().hasFloat64) {
+        precisions.push_back(Precision::F64);
+    }
+    return precisions;
+}
+
+void printComparison(const SceneFile& file, const Scene& scene, Precision requested, const BandedComparison& compared,
+                     const Row& row, const VulkanContext& context, const Tolerance& tolerance) {
+    char gpuHow[256];
+    std::snprintf(gpuHow, sizeof gpuHow, "gpu %s%s (%s): render %.2f ms",
+                  std::string(precisionName(compared.precision)).c_str(),
+                  requested == Precision::Auto ? ", chosen by auto" : "", context.selected().name.c_str(),
+                  compared.gpuMilliseconds);
+    char cpuHow[128];
+    std::snprintf(cpuHow, sizeof cpuHow, "cpu reference (%u threads): render %.2f ms", compared.threads,
+                  compared.cpuMilliseconds);
+    printDetailed(file.path, scene, row, gpuHow, cpuHow, tolerance);
+}
+
 }  // namespace
 
 int runCompare(const CompareOptions& options) {
@@ -126,95 +304,49 @@ int runCompare(const CompareOptions& options) {
     const int code = guarded([&] {
         const std::vector<SceneFile> files = sceneFiles(options.scenePaths);
         const bool table = options.allPrecisions || files.size() > 1;
-        if (!options.diffPath.empty() && table) {
-            throw SceneError("--diff: a heat map needs a single scene and a single precision");
-        }
-        if (!options.maskPath.empty() && table) {
-            throw SceneError("--mask: a mismatch mask needs a single scene and a single precision");
-        }
-        if (!options.aovDirectory.empty() && table) {
-            throw SceneError("--aov: AOVs need a single scene and a single precision");
-        }
-        const bool aov = !options.aovDirectory.empty();
+        requireSingleComparison(options, table);
+        checkPaths(options, files);
         const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
-        GpuRenderer renderer(context);
+        // Bands of floats, not the encoded render's larger ones: memory grows with the width only.
+        GpuRenderer renderer(context, kBandBytes);
         bool allPassed = true;
+        bool allLoaded = true;
         if (table) {
             printTableHeader();
         }
         for (const SceneFile& file : files) {
-            const Scene scene = loadScene(file.path, options.image);
-            const unsigned threads = cpuThreadCount(options.threads);
-            const auto cpuStart = std::chrono::steady_clock::now();
-            const CpuRender reference = renderOnCpu(scene, threads, Acceleration::Auto, aov);
-            const double cpuMilliseconds = millisecondsSince(cpuStart);
-            const PixelMask ambiguous = marginsBelow(reference.margins, kAmbiguityMargin);
-
-            const Precision automatic = renderer.resolve(scene, Precision::Auto);
-            std::vector<Precision> precisions = {options.precision};
-            if (options.allPrecisions) {
-                precisions = {Precision::F32Naive, Precision::F32};
-                if (context.selected().hasFloat64) {
-                    precisions.push_back(Precision::F64);
-                }
+            const std::optional<Scene> scene = loadForComparison(file, options.image, table);
+            allLoaded = allLoaded && scene.has_value();
+            if (!scene) {
+                continue;
             }
-            for (const Precision requested : precisions) {
-                GpuRenderResult gpu =
-                    renderer.render(scene, requested, aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses);
-                Row row{gpu.precision,
-                        gpu.precision == automatic,
-                        !(options.allPrecisions && gpu.precision == Precision::F32Naive),
-                        compareRenders(reference.image, reference.classes, ambiguous, gpu.image, gpu.classes,
-                                       scene.image.encoding),
-                        {},
-                        gpu.timing.renderMilliseconds};
-                row.verdict = judge(row.comparison, options.tolerance);
+            const Precision automatic = renderer.resolve(*scene, Precision::Auto);
+            for (const Precision requested : precisionsToCompare(options, context)) {
+                std::optional<BandOutputs> outputs;
+                if (!table) {
+                    outputs.emplace(options, *scene);
+                }
+                const BandedComparison compared =
+                    compareInBands(renderer, *scene, requested, options.threads, outputs ? &*outputs : nullptr);
+                Row row{compared.precision,
+                        compared.precision == automatic,
+                        !(options.allPrecisions && compared.precision == Precision::F32Naive),
+                        compared.comparison,
+                        judge(compared.comparison, options.tolerance),
+                        compared.gpuMilliseconds};
                 allPassed = allPassed && (!row.judged || row.verdict.passed());
                 if (table) {
                     printTableRow(file.name, row);
                     continue;
                 }
-                char gpuHow[256];
-                std::snprintf(gpuHow, sizeof gpuHow, "gpu %s%s (%s): render %.2f ms",
-                              std::string(precisionName(gpu.precision)).c_str(),
-                              requested == Precision::Auto ? ", chosen by auto" : "", context.selected().name.c_str(),
-                              gpu.timing.renderMilliseconds);
-                char cpuHow[128];
-                std::snprintf(cpuHow, sizeof cpuHow, "cpu reference (%u threads): render %.2f ms", threads,
-                              cpuMilliseconds);
-                printDetailed(file.path, scene, row, gpuHow, cpuHow, options.tolerance);
-                const bool encodedNeeded = !options.diffPath.empty() || !options.maskPath.empty();
-                const Rgb8Image reference8 = encodedNeeded ? encodeImage(reference.image, scene.image.encoding)
-                                                           : Rgb8Image{};
-                const Rgb8Image gpu8 = encodedNeeded ? encodeImage(gpu.image, scene.image.encoding) : Rgb8Image{};
-                if (!options.diffPath.empty()) {
-                    writePng(options.diffPath, diffHeatMap(reference8, gpu8));
-                    std::printf("wrote diff heat map %s\n", options.diffPath.c_str());
-                }
-                if (!options.maskPath.empty()) {
-                    writePng(options.maskPath, mismatchMask(reference.classes, gpu.classes, ambiguous, reference8, gpu8));
-                    std::printf("wrote mismatch mask %s (red topology, yellow colour > 1 level, blue ambiguous)\n",
-                                options.maskPath.c_str());
-                }
-                if (aov) {
-                    const fs::path directory(options.aovDirectory);
-                    StagedAovs gpuAovs(directory / "gpu", AovSet{scene.image.width, scene.image.height,
-                                                                 std::move(gpu.depth), std::move(gpu.normals),
-                                                                 gpu.classes, scene.lights.size()});
-                    StagedAovs cpuAovs(directory / "cpu",
-                                       AovSet{scene.image.width, scene.image.height, reference.depth,
-                                              reference.normals, reference.classes, scene.lights.size(),
-                                              &reference.margins, kAmbiguityMargin});
-                    gpuAovs.commit();
-                    cpuAovs.commit();
-                    std::printf("wrote AOVs in %s and %s\n", (directory / "gpu").c_str(), (directory / "cpu").c_str());
-                }
+                printComparison(file, *scene, requested, compared, row, context, options.tolerance);
+                outputs->commit();
             }
         }
         if (table) {
-            std::printf("%s\n", allPassed ? "PASS" : "FAIL");
+            std::printf("%s\n", allPassed && allLoaded ? "PASS" : "FAIL");
         }
-        return int(allPassed ? kSuccess : kToleranceExceeded);
+        return int(!allLoaded ? kBadInput : allPassed ? kSuccess : kToleranceExceeded);
     });
     return withValidationVerdict(code, log);
 }

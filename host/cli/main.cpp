@@ -1,9 +1,21 @@
 // hexray: renders scene files with a Vulkan compute shader (or the CPU reference) and compares
 // the two. The command line is defined here; the work is in the *_command.cpp files.
 
+#include <climits>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
+#include "cli/command_support.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
+#include "cpu/cpu_renderer.h"
+#include "io/output_plan.h"
+#include "io/standard_output.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -11,19 +23,46 @@ using namespace hexray;
 using namespace hexray::cli;
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line);\n"
-    "3 Vulkan unavailable or failed (no driver or device, no compute queue, no float64 for --precision f64);\n"
-    "4 --validate and the validation layer reported messages; 5 the output image could not be written;\n"
-    "6 any other failure (e.g. out of memory); 7 the Vulkan device was lost or hung during the render;\n"
+    "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line, or an\n"
+    "output that is an input or another output); 3 Vulkan unavailable or failed (no driver or device, no compute\n"
+    "queue, no float64 for --precision f64); 4 --validate and the validation layer reported messages; 5 an output\n"
+    "cannot be written (its directory is checked before any work); 6 any other failure (out of memory: make the\n"
+    "image narrower); 7 the Vulkan device was lost or hung during the render;\n"
     "8 the Vulkan driver ran out of device (or host) memory.\n"
     "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except an\n"
     "unknown --device or a missing validation layer), 7 or 8.";
 
 void addImageOptions(CLI::App& command, ImageOverride& image) {
-    command.add_option("--width", image.width, "Override the scene's image width (pixels)");
-    command.add_option("--height", image.height, "Override the scene's image height (pixels)");
-    command.add_option("--spp", image.samplesPerPixel,
-                       "Override the scene's samples per pixel (anti-aliasing, 1 to 1024; default 1)");
+    const CLI::Validator size = IntegerBetween<std::int64_t>(1, kMaxImageDimension);
+    command.add_option("--width", image.width, "Override the scene's image width (pixels)")->check(size);
+    command.add_option("--height", image.height, "Override the scene's image height (pixels)")->check(size);
+    command
+        .add_option("--spp", image.samplesPerPixel,
+                    "Override the scene's samples per pixel (anti-aliasing, 1 to 1024; default 1)")
+        ->check(IntegerBetween<std::int64_t>(1, kMaxSamplesPerPixel));
+}
+
+CLI::Option* addThreadsOption(CLI::App& command, unsigned& threads, const char* what) {
+    return command
+        .add_option("--threads", threads,
+                    std::string(what) + " threads (default: all cores; at most the image's height and " +
+                        std::to_string(kMaxCpuThreads) + " are started)")
+        ->check(IntegerBetween<unsigned>(1, UINT_MAX));
+}
+
+// The bench's paths, checked before its rounds (the bench itself only writes the CSV at the end).
+int checkBenchPaths(const BenchOptions& bench) {
+    return guarded([&] {
+        OutputPlan plan;
+        for (const std::string& scene : bench.scenePaths) {
+            plan.addInput("the scene", scene);
+        }
+        if (!bench.csvPath.empty()) {
+            plan.addFile("--csv", bench.csvPath);
+        }
+        plan.check();
+        return int(kSuccess);
+    });
 }
 
 void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
@@ -48,6 +87,9 @@ int main(int argc, char** argv) {
                  "independent CPU reference.",
                  "hexray");
     app.footer(kExitCodes);
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return std::string("hexray: error: ") + error.what() + "\nRun with --help for more information.\n";
+    });
     app.require_subcommand(1);
     bool validate = false;
     app.add_flag("--validate", validate,
@@ -59,7 +101,10 @@ int main(int argc, char** argv) {
     std::string renderPrecision = "auto";
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON), see README.md")->required();
-    renderCommand->add_option("-o,--output", render.outputPath, "Output PNG (default: <scene name>.png here)");
+    renderCommand
+        ->add_option("-o,--output", render.outputPath,
+                     "Output PNG (default: <scene name>.png here; - for standard output)")
+        ->check(NotEmpty());
     renderCommand
         ->add_option("--backend", renderBackend,
                      "gpu: the Vulkan compute shader; cpu: the double-precision reference; auto: the GPU, or the "
@@ -69,11 +114,12 @@ int main(int argc, char** argv) {
     addPrecisionOption(*renderCommand, renderPrecision);
     addImageOptions(*renderCommand, render.image);
     addDeviceOption(*renderCommand, render.vulkan);
-    renderCommand->add_option("--threads", render.threads, "CPU backend threads (default: all cores)")
-        ->check(CLI::PositiveNumber);
-    renderCommand->add_option("--aov", render.aovDirectory,
-                              "Also write depth, normal, object id and per-light shadow masks as OpenEXR files with "
-                              "PNG previews into this directory (see README)");
+    addThreadsOption(*renderCommand, render.threads, "CPU backend");
+    renderCommand
+        ->add_option("--aov", render.aovDirectory,
+                     "Also write depth, normal, object id and per-light shadow masks as OpenEXR files with "
+                     "PNG previews into this directory (see README)")
+        ->check(NotEmpty());
 
     CompareOptions compare;
     std::string comparePrecision = "auto";
@@ -90,30 +136,35 @@ int main(int argc, char** argv) {
         ->excludes(precisionOption);
     addImageOptions(*compareCommand, compare.image);
     addDeviceOption(*compareCommand, compare.vulkan);
-    compareCommand->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)");
+    compareCommand->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)")
+        ->check(NotEmpty());
     compareCommand
         ->add_option("--max-topology-mismatches", compare.tolerance.maxTopologyMismatches,
                      "Tolerance: unambiguous pixels whose node, checker cell or lit lights differ")
+        ->check(IntegerBetween<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
         ->capture_default_str();
     compareCommand
         ->add_option("--max-bad-pixels", compare.tolerance.maxSharePercent,
                      "Tolerance: share of unambiguous pixels, in percent, whose 8-bit value may differ by more "
                      "than one level")
-        ->check(CLI::Range(0.0, 100.0))
+        ->check(FiniteNumberBetween(0.0, 100.0))
         ->capture_default_str();
     compareCommand
         ->add_option("--max-rmse", compare.tolerance.maxRmseLevels,
                      "Tolerance: RMSE of the 8-bit output over unambiguous pixels, in levels")
-        ->check(CLI::NonNegativeNumber)
+        ->check(FiniteNumberBetween(0.0, 255.0))
         ->capture_default_str();
-    compareCommand->add_option("--threads", compare.threads, "CPU reference threads (default: all cores)")
-        ->check(CLI::PositiveNumber);
-    compareCommand->add_option("--mask", compare.maskPath,
-                               "Write a PNG of where the renders disagree: red topology mismatch, yellow colour more "
-                               "than one level off, blue ambiguous, black agreement");
-    compareCommand->add_option("--aov", compare.aovDirectory,
-                               "Write both backends' AOVs into DIR/gpu and DIR/cpu, and the CPU reference's decision "
-                               "margin as DIR/cpu/margin.exr (see README)");
+    addThreadsOption(*compareCommand, compare.threads, "CPU reference");
+    compareCommand
+        ->add_option("--mask", compare.maskPath,
+                     "Write a PNG of where the renders disagree: red topology mismatch, yellow colour more "
+                     "than one level off, blue ambiguous, black agreement")
+        ->check(NotEmpty());
+    compareCommand
+        ->add_option("--aov", compare.aovDirectory,
+                     "Write both backends' AOVs into DIR/gpu and DIR/cpu, and the CPU reference's decision "
+                     "margin as DIR/cpu/margin.exr (see README)")
+        ->check(NotEmpty());
 
     BenchOptions bench;
     CLI::App* benchCommand = app.add_subcommand(
@@ -125,26 +176,28 @@ int main(int argc, char** argv) {
     benchCommand->add_option("--spheres", bench.sphereCounts,
                              "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
                              "scene each, measured on every backend")
-        ->check(CLI::Range(1u, 1000000u))
+        ->check(IntegerBetween<std::uint32_t>(1, 1000000))
         ->allow_extra_args(false)  // one comma-separated list, so scene files may follow it
         ->delimiter(',');
     benchCommand->add_option("--max-frame-seconds", bench.maxFrameSeconds,
                              "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
                              "not measured at that sphere count (its error columns still use a CPU reference render)")
-        ->check(CLI::PositiveNumber)
+        ->check(FiniteNumberAbove(0.0))
         ->capture_default_str();
     addImageOptions(*benchCommand, bench.image);
     addDeviceOption(*benchCommand, bench.vulkan);
-    benchCommand->add_option("--rounds", bench.rounds, "Interleaved rounds")->check(CLI::Range(1u, 1000u))
+    benchCommand->add_option("--rounds", bench.rounds, "Interleaved rounds")
+        ->check(IntegerBetween<unsigned>(1, 1000))
         ->capture_default_str();
     benchCommand->add_option("--samples", bench.samples, "Samples per pixel to measure (several allowed)")
-        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
+        ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
         ->capture_default_str();
     benchCommand->add_option("--reference-samples", bench.referenceSamples,
                              "Samples per pixel of the converged CPU reference")
-        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
+        ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
         ->capture_default_str();
-    benchCommand->add_option("--csv", bench.csvPath, "Also write the table as CSV");
+    benchCommand->add_option("--csv", bench.csvPath, "Also write the table as CSV (- for standard output)")
+        ->check(NotEmpty());
 
     PixelOptions pixel;
     std::string pixelBackend = "both";
@@ -153,13 +206,14 @@ int main(int argc, char** argv) {
         "pixel", "Explain one pixel: its ray, every node's intersection, the hit, the shading terms and the colour, "
                  "from the shader and from the CPU reference side by side");
     pixelCommand->add_option("scene", pixel.scenePath, "Scene file (JSON)")->required();
-    pixelCommand->add_option("x", pixel.x, "Column, 0 at the left")->required();
-    pixelCommand->add_option("y", pixel.y, "Row, 0 at the top")->required();
+    pixelCommand->add_option("x", pixel.x, "Column, 0 at the left")->required()->check(AnInteger<std::int64_t>());
+    pixelCommand->add_option("y", pixel.y, "Row, 0 at the top")->required()->check(AnInteger<std::int64_t>());
     pixelCommand->add_option("--backend", pixelBackend, "both (side by side), gpu or cpu")
         ->check(CLI::IsMember({"both", "gpu", "cpu"}))
         ->capture_default_str();
     addPrecisionOption(*pixelCommand, pixelPrecision);
     pixelCommand->add_option("--sample", pixel.sample, "Which of the pixel's samples to explain (with --spp > 1)")
+        ->check(IntegerBetween<std::int64_t>(0, kMaxSamplesPerPixel - 1))
         ->capture_default_str();
     addImageOptions(*pixelCommand, pixel.image);
     addDeviceOption(*pixelCommand, pixel.vulkan);
@@ -184,6 +238,15 @@ int main(int argc, char** argv) {
         return code == 0 ? kSuccess : kBadInput;
     }
 
+    // Standard output carries the data when an output is "-" (or a path to it): what the command
+    // prints goes to standard error then.
+    if (const int code = guarded([&] {
+            reserveStandardOutputForData({render.outputPath, compare.diffPath, compare.maskPath, bench.csvPath});
+            return int(kSuccess);
+        });
+        code != kSuccess) {
+        return code;
+    }
     if (renderCommand->parsed()) {
         render.vulkan.validate = validate;
         render.backend = renderBackend == "cpu" ? Backend::Cpu : renderBackend == "gpu" ? Backend::Gpu : Backend::Auto;
@@ -197,7 +260,8 @@ int main(int argc, char** argv) {
     }
     if (benchCommand->parsed()) {
         bench.vulkan.validate = validate;
-        return runBench(bench);
+        const int checked = checkBenchPaths(bench);
+        return checked != kSuccess ? checked : runBench(bench);
     }
     if (pixelCommand->parsed()) {
         pixel.vulkan.validate = validate;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,8 @@
 #include "gpu/gpu_renderer.h"
 #include "image/aov.h"
 #include "image/image_io.h"
+#include "io/output_plan.h"
+#include "io/standard_output.h"
 
 namespace hexray::cli {
 namespace {
@@ -63,8 +66,12 @@ std::string describeKernel(const Kernel& kernel, const KernelBuild& build) {
     return description;
 }
 
-// Renders on the GPU into `writer`, band by band; then, with --aov, stages the AOVs in
-// `aovs`. Returns how, for the summary line.
+AovLayout aovLayout(const Scene& scene) {
+    return AovLayout{scene.image.width, scene.image.height, scene.lights.size()};
+}
+
+// Renders on the GPU into `writer`, band by band; then, with --aov, the AOVs into `aovs`, band
+// by band too. Returns how, for the summary line.
 std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
                         std::optional<StagedAovs>& aovs) {
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
@@ -86,30 +93,52 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
                   describeKernel(plan.kernel, result.timing.kernel).c_str(), result.timing.firstDispatchMilliseconds);
     if (!options.aovDirectory.empty()) {
         // A second pass in the shader's AOV mode, so that the image is the one a render
-        // without --aov writes (encoded on the device); the AOVs are held whole, for the EXR files.
-        GpuRenderResult pass = renderer.render(scene, plan, GpuOutput::LinearClassesAndAov);
-        aovs.emplace(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(pass.depth),
-                                                  std::move(pass.normals), std::move(pass.classes),
-                                                  scene.lights.size()});
+        // without --aov writes (encoded on the device). Its rows come back as floats: smaller bands.
+        aovs.emplace(options.aovDirectory, aovLayout(scene));
+        GpuRenderer aovRenderer(context, kBandBytes);
+        aovRenderer.renderLinearRows(scene, plan, GpuOutput::LinearClassesAndAov,
+                                     [&](std::uint32_t, const GpuRenderResult& band) {
+                                         aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
+                                     });
     }
     return how;
 }
 
 std::string renderWithCpuReference(const RenderOptions& options, const Scene& scene, PngRowWriter& writer,
                                    std::optional<StagedAovs>& aovs) {
-    const unsigned threads = cpuThreadCount(options.threads);
-    const auto start = std::chrono::steady_clock::now();
-    CpuRender render = renderOnCpu(scene, threads, Acceleration::Auto, !options.aovDirectory.empty());
-    const Rgb8Image image = encodeImage(render.image, scene.image.encoding);
-    char how[128];
-    std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", threads, millisecondsSince(start));
-    writer.writeRows(image.bytes);
-    if (!options.aovDirectory.empty()) {
-        aovs.emplace(options.aovDirectory, AovSet{scene.image.width, scene.image.height, std::move(render.depth),
-                                                  std::move(render.normals), std::move(render.classes),
-                                                  scene.lights.size()});
+    const bool withAovs = !options.aovDirectory.empty();
+    const CpuBandRenderer renderer(scene, options.threads, Acceleration::Auto, withAovs);
+    if (withAovs) {
+        aovs.emplace(options.aovDirectory, aovLayout(scene));
     }
+    Progress progress(scene.image.height);
+    const std::uint32_t bandRows = renderer.rowsPerBand(kBandBytes);
+    CpuRender band;
+    double milliseconds = 0;
+    for (std::uint32_t firstRow = 0; firstRow < scene.image.height; firstRow += bandRows) {
+        const auto start = std::chrono::steady_clock::now();
+        renderer.render(firstRow, std::min(bandRows, scene.image.height - firstRow), band);
+        milliseconds += millisecondsSince(start);
+        writer.writeRows(encodeImage(band.image, scene.image.encoding).bytes);
+        if (aovs) {
+            aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
+        }
+        progress.rowsDone(firstRow + band.image.height);
+    }
+    char how[128];
+    std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", renderer.threadCount(), milliseconds);
     return how;
+}
+
+// Every path the render reads or writes, checked before any work.
+void checkPaths(const RenderOptions& options, const std::string& output) {
+    OutputPlan plan;
+    plan.addInput("the scene", options.scenePath);
+    plan.addFile("-o", output);
+    if (!options.aovDirectory.empty()) {
+        plan.addDirectory("--aov", options.aovDirectory, isAovFileName);
+    }
+    plan.check();
 }
 
 // With --backend auto, a GPU path that cannot render (anything but a wrong request, such as an
@@ -127,8 +156,9 @@ bool fallsBack(const RenderOptions& options, const VulkanError& error) {
 int runRender(const RenderOptions& options) {
     ValidationLog log;
     const int code = guarded([&] {
-        const Scene scene = loadScene(options.scenePath, options.image);
         const std::string output = options.outputPath.empty() ? defaultOutputPath(options.scenePath) : options.outputPath;
+        checkPaths(options, output);
+        const Scene scene = loadScene(options.scenePath, options.image);
         // Opened first, so a bad output path fails before any rendering; renamed into place
         // only once every row is in.
         std::optional<PngRowWriter> writer(std::in_place, output, scene.image.width, scene.image.height);
@@ -154,7 +184,8 @@ int runRender(const RenderOptions& options) {
             how = renderWithCpuReference(options, scene, *writer, aovs);
         }
         writer->finish();
-        std::printf("wrote %s (%ux%u) — %s\n", output.c_str(), scene.image.width, scene.image.height, how.c_str());
+        std::printf("wrote %s (%ux%u) — %s\n", displayName(output).c_str(), scene.image.width, scene.image.height,
+                    how.c_str());
         if (aovs) {
             // Only now, so a failed render leaves the directory's earlier AOVs as they were.
             const std::size_t files = aovs->commit().size();

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include <glm/common.hpp>
-#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+
+#include "compare/error_accumulator.h"
+#include "compare/render_comparator.h"
 
 namespace hexray {
 namespace {
@@ -19,51 +20,6 @@ void requireSameSize(std::uint32_t w1, std::uint32_t h1, std::uint32_t w2, std::
         throw std::invalid_argument("cannot compare a " + std::to_string(w1) + "x" + std::to_string(h1) +
                                     " image with a " + std::to_string(w2) + "x" + std::to_string(h2) + " one");
     }
-}
-
-// Accumulates per-channel differences of one pixel at a time; `oneLevel` and `peak` are in the
-// images' units.
-class ErrorAccumulator {
-public:
-    ErrorAccumulator(double oneLevel, double peak) : oneLevel_(oneLevel), peak_(peak) {}
-
-    void addPixel(const glm::dvec3& difference) {
-        const glm::dvec3 magnitude = glm::abs(difference);
-        const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
-        metrics_.maxAbs = std::max(metrics_.maxAbs, largest);
-        sumAbs_ += magnitude.x + magnitude.y + magnitude.z;
-        sumSquares_ += glm::dot(difference, difference);
-        metrics_.pixelsOverOneLevel += largest > oneLevel_ ? 1 : 0;
-        ++pixels_;
-    }
-
-    ErrorMetrics result() const {
-        ErrorMetrics metrics = metrics_;
-        metrics.pixels = pixels_;
-        const double channels = 3.0 * double(std::max<std::uint64_t>(pixels_, 1));
-        metrics.meanAbs = sumAbs_ / channels;
-        metrics.rmse = std::sqrt(sumSquares_ / channels);
-        metrics.psnr = metrics.rmse == 0.0 ? std::numeric_limits<double>::infinity()
-                                           : 20.0 * std::log10(peak_ / metrics.rmse);
-        metrics.shareOverOneLevel = double(metrics.pixelsOverOneLevel) / double(std::max<std::uint64_t>(pixels_, 1));
-        return metrics;
-    }
-
-private:
-    double oneLevel_;
-    double peak_;
-    ErrorMetrics metrics_;
-    double sumAbs_ = 0;
-    double sumSquares_ = 0;
-    std::uint64_t pixels_ = 0;
-};
-
-glm::dvec3 displayable(const glm::vec3& linear) {
-    return glm::clamp(glm::dvec3(linear), 0.0, 1.0);
-}
-
-glm::dvec3 levelsAt(const Rgb8Image& image, std::size_t pixel) {
-    return glm::dvec3(image.bytes[3 * pixel], image.bytes[3 * pixel + 1], image.bytes[3 * pixel + 2]);
 }
 
 bool considered(const PixelMask& mask, std::size_t pixel) {
@@ -85,7 +41,7 @@ ErrorMetrics compareLinear(const Image& reference, const Image& test, const Pixe
     ErrorAccumulator accumulator(1.0 / 255.0, 1.0);
     for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
         if (considered(mask, i)) {
-            accumulator.addPixel(displayable(test.pixels[i]) - displayable(reference.pixels[i]));
+            accumulator.addPixel(displayedDifference(reference.pixels[i], test.pixels[i]));
         }
     }
     return accumulator.result();
@@ -97,7 +53,7 @@ ErrorMetrics compareEncoded(const Rgb8Image& reference, const Rgb8Image& test, c
     const std::size_t pixels = std::size_t(reference.width) * reference.height;
     for (std::size_t i = 0; i < pixels; ++i) {
         if (considered(mask, i)) {
-            accumulator.addPixel(levelsAt(test, i) - levelsAt(reference, i));
+            accumulator.addPixel(levelDifference(reference, test, i));
         }
     }
     return accumulator.result();
@@ -132,16 +88,24 @@ TopologyComparison compareTopology(const std::vector<PixelClass>& reference, con
     return topology;
 }
 
+TopologyComparison& TopologyComparison::operator+=(const TopologyComparison& band) {
+    pixels += band.pixels;
+    ambiguous += band.ambiguous;
+    mismatches += band.mismatches;
+    nodeMismatches += band.nodeMismatches;
+    checkerMismatches += band.checkerMismatches;
+    lightMismatches += band.lightMismatches;
+    return *this;
+}
+
 RenderComparison compareRenders(const Image& referenceImage, const std::vector<PixelClass>& referenceClasses,
                                 const PixelMask& ambiguous, const Image& testImage,
                                 const std::vector<PixelClass>& testClasses, Encoding encoding) {
-    PixelMask unambiguous(ambiguous.size());
-    for (std::size_t i = 0; i < ambiguous.size(); ++i) {
-        unambiguous[i] = !ambiguous[i];
-    }
-    return {compareTopology(referenceClasses, testClasses, ambiguous),
-            compareLinear(referenceImage, testImage, unambiguous),
-            compareEncoded(encodeImage(referenceImage, encoding), encodeImage(testImage, encoding), unambiguous)};
+    requireSameSize(referenceImage.width, referenceImage.height, testImage.width, testImage.height);
+    RenderComparator comparator;
+    comparator.add({referenceImage, referenceClasses, encodeImage(referenceImage, encoding)},
+                   {testImage, testClasses, encodeImage(testImage, encoding)}, ambiguous);
+    return comparator.result();
 }
 
 Verdict judge(const RenderComparison& comparison, const Tolerance& tolerance) {
@@ -158,7 +122,7 @@ Rgb8Image diffHeatMap(const Rgb8Image& reference, const Rgb8Image& test) {
     const std::size_t pixels = std::size_t(reference.width) * reference.height;
     Rgb8Image map{reference.width, reference.height, std::vector<std::uint8_t>(pixels * 3, 0)};
     for (std::size_t i = 0; i < pixels; ++i) {
-        const glm::dvec3 difference = glm::abs(levelsAt(test, i) - levelsAt(reference, i));
+        const glm::dvec3 difference = glm::abs(levelDifference(reference, test, i));
         const double levels = std::max({difference.x, difference.y, difference.z});
         if (levels == 0.0) {
             continue;
@@ -190,7 +154,7 @@ Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const st
         } else if (referenceClasses[i] != testClasses[i]) {
             colour = mask_colour::kTopology;
         } else {
-            const glm::dvec3 difference = glm::abs(levelsAt(test, i) - levelsAt(reference, i));
+            const glm::dvec3 difference = glm::abs(levelDifference(reference, test, i));
             if (std::max({difference.x, difference.y, difference.z}) > 1.0) {
                 colour = mask_colour::kColour;
             }

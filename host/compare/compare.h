@@ -42,12 +42,14 @@ struct TopologyComparison {
     std::uint64_t checkerMismatches = 0;  //   the same node, a different checker cell
     std::uint64_t lightMismatches = 0;    //   the same surface, a different set of lights reaching it
     double ambiguousShare() const { return pixels ? double(ambiguous) / double(pixels) : 0.0; }
+    TopologyComparison& operator+=(const TopologyComparison& band);  // counts of more pixels
 };
 
 TopologyComparison compareTopology(const std::vector<PixelClass>& reference, const std::vector<PixelClass>& test,
                                    const PixelMask& ambiguous);
 
-// A render under test against the reference, on the pixels the reference calls unambiguous.
+// A render under test against the reference, on the pixels the reference calls unambiguous
+// (band by band: render_comparator.h).
 struct RenderComparison {
     TopologyComparison topology;
     ErrorMetrics linear;   // colour on the linear float images

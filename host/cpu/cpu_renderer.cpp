@@ -279,19 +279,34 @@ RenderedPixel renderPixel(const Scene& scene, const Bvh* bvh, const PixelSheet& 
     return {sum / double(samples), first.pixelClass, margin, first.hit};
 }
 
-void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t y, CpuRender& render) {
-    Image& image = render.image;
-    for (std::uint32_t x = 0; x < image.width; ++x) {
+// Row `y` of the image into row `y - firstRow` of `band`.
+void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t y, std::uint32_t firstRow,
+               CpuRender& band) {
+    const std::uint32_t width = band.image.width;
+    for (std::uint32_t x = 0; x < width; ++x) {
         const RenderedPixel pixel = renderPixel(scene, bvh, sheet, x, y);
-        const std::size_t index = std::size_t(y) * image.width + x;
-        image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
-        render.classes[index] = pixel.pixelClass;
-        render.margins[index] = pixel.margin;
-        if (!render.depth.empty() && pixel.firstHit) {
-            render.depth[index] = float(pixel.firstHit->t);
-            render.normals[index] = glm::vec3(pixel.firstHit->facingNormal);
+        const std::size_t index = std::size_t(y - firstRow) * width + x;
+        band.image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
+        band.classes[index] = pixel.pixelClass;
+        band.margins[index] = pixel.margin;
+        if (!band.depth.empty() && pixel.firstHit) {
+            band.depth[index] = float(pixel.firstHit->t);
+            band.normals[index] = glm::vec3(pixel.firstHit->facingNormal);
         }
     }
+}
+
+// `band` sized for `rows` rows of `width`, reusing its storage; depth and normals reset to the
+// background's.
+void prepareBand(CpuRender& band, std::uint32_t width, std::uint32_t rows, bool withAovs) {
+    const std::size_t pixels = std::size_t(width) * rows;
+    band.image.width = width;
+    band.image.height = rows;
+    band.image.pixels.resize(pixels);
+    band.classes.resize(pixels);
+    band.margins.resize(pixels);
+    band.depth.assign(withAovs ? pixels : 0, std::numeric_limits<float>::infinity());
+    band.normals.assign(withAovs ? pixels : 0, glm::vec3(0.0f));
 }
 
 std::optional<Bvh> bvhFor(const Scene& scene, Acceleration acceleration) {
@@ -321,46 +336,51 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
 }
 
 CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs) {
-    checkShaderIndices(scene);
-
+    const CpuBandRenderer renderer(scene, threadCount, acceleration, withAovs);
     CpuRender render;
-    render.image = Image(scene.image.width, scene.image.height);
-    render.classes.resize(render.image.pixels.size());
-    render.margins.resize(render.image.pixels.size());
-    if (withAovs) {
-        render.depth.assign(render.image.pixels.size(), std::numeric_limits<float>::infinity());
-        render.normals.assign(render.image.pixels.size(), glm::vec3(0.0f));
-    }
-    const Image& image = render.image;
-    if (image.width == 0 || image.height == 0) {
-        return render;
-    }
-    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
-    // Built once per render and shared, read-only, by every worker.
-    const std::optional<Bvh> bvh = bvhFor(scene, acceleration);
-    const Bvh* const bvhOrNull = bvh ? &*bvh : nullptr;
+    renderer.render(0, scene.image.height, render);
+    return render;
+}
 
-    threadCount = std::min(cpuThreadCount(threadCount), image.height);
+CpuBandRenderer::CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs)
+    : scene_(scene),
+      sheet_(makePixelSheet(scene.camera, sheetAspect(scene))),
+      threads_(std::min({cpuThreadCount(threadCount), kMaxCpuThreads, std::max(scene.image.height, 1u)})),
+      withAovs_(withAovs) {
+    checkShaderIndices(scene);
+    bvh_ = bvhFor(scene, acceleration);  // built once and shared, read-only, by every worker
+}
 
+std::uint32_t CpuBandRenderer::rowsPerBand(std::size_t bandBytes) const {
+    const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float) +
+                                   (withAovs_ ? sizeof(float) + sizeof(glm::vec3) : 0);
+    const std::size_t rowBytes = pixelBytes * std::max(scene_.image.width, 1u);
+    return std::uint32_t(std::clamp<std::size_t>(bandBytes / rowBytes, 1, std::max(scene_.image.height, 1u)));
+}
+
+void CpuBandRenderer::render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band) const {
+    prepareBand(band, scene_.image.width, rows, withAovs_);
+    if (scene_.image.width == 0 || rows == 0) {
+        return;
+    }
+    const Bvh* const bvh = bvh_ ? &*bvh_ : nullptr;
+    const unsigned workers = std::min(threads_, rows);
     // Rows are interleaved (worker w takes rows w, w + n, ...) so that expensive regions of
     // the image are shared out; each row is written by exactly one worker, so no locking.
     const auto renderRows = [&](unsigned worker) {
-        for (std::uint32_t y = worker; y < image.height; y += threadCount) {
-            renderRow(scene, bvhOrNull, sheet, y, render);
+        for (std::uint32_t y = firstRow + worker; y < firstRow + rows; y += workers) {
+            renderRow(scene_, bvh, sheet_, y, firstRow, band);
         }
     };
-    {
-        // jthread joins on destruction, also if starting a later worker throws. The calling
-        // thread only waits: as a worker it would write its stack right beside `sheet` and
-        // `render`, which every worker reads for every pixel (that false sharing cost up to
-        // half again the CPU time on two cores).
-        std::vector<std::jthread> workers;
-        workers.reserve(threadCount);
-        for (unsigned worker = 0; worker < threadCount; ++worker) {
-            workers.emplace_back(renderRows, worker);
-        }
+    // jthread joins on destruction, also if starting a later worker throws. The calling
+    // thread only waits: as a worker it would write its stack right beside `sheet_` and
+    // `band`, which every worker reads for every pixel (that false sharing cost up to
+    // half again the CPU time on two cores).
+    std::vector<std::jthread> threads;
+    threads.reserve(workers);
+    for (unsigned worker = 0; worker < workers; ++worker) {
+        threads.emplace_back(renderRows, worker);
     }
-    return render;
 }
 
 float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y) {

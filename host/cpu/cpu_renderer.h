@@ -2,6 +2,8 @@
 // The CPU reference renderer: the same model as the shader, written independently,
 // in double precision and for clarity rather than speed.
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -39,8 +41,40 @@ struct CpuRender {
 Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
               std::uint32_t sample);
 
+// The most worker threads a render starts, whatever is asked: beyond this, starting them costs
+// more than they can gain.
+inline constexpr unsigned kMaxCpuThreads = 1024;
+
 // The worker threads renderOnCpu uses for `requested` (0 = all cores, at least 1).
 unsigned cpuThreadCount(unsigned requested);
+
+// Renders a scene a band of rows at a time into storage the caller provides and reuses, so that
+// what is in memory depends on the image's width, not its area. Every band is exactly those rows
+// of renderOnCpu's result.
+class CpuBandRenderer {
+public:
+    // `threadCount`: 0 = all cores; at most kMaxCpuThreads and the image's height are used.
+    // `withAovs`: also the depth and normals. Throws std::out_of_range for a node whose shader
+    // index is out of range.
+    CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration = Acceleration::Auto,
+                    bool withAovs = false);
+
+    // The threads each band is shared among (at most the band's rows).
+    unsigned threadCount() const { return threads_; }
+
+    // Rows that keep a band's storage near `bandBytes` at this scene's width (at least one).
+    std::uint32_t rowsPerBand(std::size_t bandBytes) const;
+
+    // Renders rows [firstRow, firstRow + rows) into `band`, resized to width x rows.
+    void render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band) const;
+
+private:
+    const Scene& scene_;
+    PixelSheet sheet_;
+    std::optional<Bvh> bvh_;
+    unsigned threads_;
+    bool withAovs_;
+};
 
 // Renders image.samplesPerPixel rays per pixel, rows spread over `threadCount` threads
 // (0 = all cores).

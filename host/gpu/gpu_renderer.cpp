@@ -223,43 +223,62 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> s
 }
 
 GpuRenderResult GpuRenderer::render(const Scene& scene, const RenderPlan& plan, GpuOutput output) {
-    if (output == GpuOutput::Encoded8) {
-        GpuRenderResult result;
-        result.encoded = Rgb8Image{scene.image.width, scene.image.height, {}};
-        result.encoded.bytes.reserve(std::size_t(scene.image.width) * scene.image.height * 3);
-        const GpuRenderResult streamed = renderEncodedRows(scene, plan, [&](std::uint32_t, auto rgbRows) {
-            result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
-        });
+    GpuRenderResult result;
+    const auto keep = [&](const GpuRenderResult& streamed) {
         result.precision = streamed.precision;
         result.timing = streamed.timing;
         result.usedBvh = streamed.usedBvh;
+    };
+    if (output == GpuOutput::Encoded8) {
+        result.encoded = Rgb8Image{scene.image.width, scene.image.height, {}};
+        result.encoded.bytes.reserve(std::size_t(scene.image.width) * scene.image.height * 3);
+        keep(renderEncodedRows(scene, plan, [&](std::uint32_t, auto rgbRows) {
+            result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
+        }));
         return result;
     }
+    const bool aov = output == GpuOutput::LinearClassesAndAov;
+    const std::size_t pixels = std::size_t(scene.image.width) * scene.image.height;
+    result.image = Image(scene.image.width, scene.image.height);
+    result.classes.reserve(pixels);
+    result.depth.reserve(aov ? pixels : 0);
+    result.normals.reserve(aov ? pixels : 0);
+    const auto append = [](auto& whole, const auto& band) { whole.insert(whole.end(), band.begin(), band.end()); };
+    keep(renderLinearRows(scene, plan, output, [&](std::uint32_t firstRow, const GpuRenderResult& band) {
+        std::copy(band.image.pixels.begin(), band.image.pixels.end(),
+                  result.image.pixels.begin() + std::ptrdiff_t(firstRow) * scene.image.width);
+        append(result.classes, band.classes);
+        append(result.depth, band.depth);
+        append(result.normals, band.normals);
+    }));
+    return result;
+}
+
+GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
+                                              const BandConsumer& consume) {
     GpuRenderResult result;
     const std::uint32_t width = scene.image.width;
     const bool aov = output == GpuOutput::LinearClassesAndAov;
-    result.image = Image(width, scene.image.height);
-    result.classes.resize(result.image.pixels.size());
-    if (aov) {
-        result.depth.resize(result.image.pixels.size());
-        result.normals.resize(result.image.pixels.size());
-    }
     const double scale = plan.placement.scale;  // the shader's t is in the placement's units
+    GpuRenderResult rows;  // reused from band to band
     renderBands(scene, plan, output, result, [&](const Band& band) {
         const std::size_t count = std::size_t(band.rows) * width;
-        const std::ptrdiff_t first = std::ptrdiff_t(band.firstRow) * width;
-        std::transform(band.pixels, band.pixels + count, result.image.pixels.begin() + first,
+        rows.image.width = width;
+        rows.image.height = band.rows;
+        rows.image.pixels.resize(count);
+        std::transform(band.pixels, band.pixels + count, rows.image.pixels.begin(),
                        [](const GpuPixel& p) { return glm::vec3(p); });
-        std::transform(band.classes, band.classes + count, result.classes.begin() + first,
+        rows.classes.resize(count);
+        std::transform(band.classes, band.classes + count, rows.classes.begin(),
                        [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
-        if (aov) {
-            for (std::size_t i = 0; i < count; ++i) {
-                const bool background = band.classes[i].x == PixelClass::kBackground;
-                result.depth[first + i] = background ? std::numeric_limits<float>::infinity()
-                                                     : float(double(band.aovs[i].w) * scale);
-                result.normals[first + i] = glm::vec3(band.aovs[i]);
-            }
+        rows.depth.resize(aov ? count : 0);
+        rows.normals.resize(aov ? count : 0);
+        for (std::size_t i = 0; aov && i < count; ++i) {
+            const bool background = band.classes[i].x == PixelClass::kBackground;
+            rows.depth[i] = background ? std::numeric_limits<float>::infinity() : float(double(band.aovs[i].w) * scale);
+            rows.normals[i] = glm::vec3(band.aovs[i]);
         }
+        consume(band.firstRow, rows);
     });
     return result;
 }

@@ -104,6 +104,14 @@ public:
     using RowConsumer = std::function<void(std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows)>;
     GpuRenderResult renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume);
 
+    // render()'s LinearAndClasses or LinearClassesAndAov output a band of rows at a time: each
+    // band is handed to `consume` (its first row, and a result whose image, classes, depth and
+    // normals hold just the band's rows) as soon as it is read back. The returned result has the
+    // precision, timing and usedBvh, and no pixels.
+    using BandConsumer = std::function<void(std::uint32_t firstRow, const GpuRenderResult& band)>;
+    GpuRenderResult renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
+                                     const BandConsumer& consume);
+
     // Replays pixel (x, y) in the kernel's trace mode and returns what it computed for sample
     // `sample` (and the pixel's colour). The caller checks the ranges.
     GpuPixelTrace tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,

@@ -17,6 +17,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -25,38 +28,62 @@
 
 namespace hexray {
 
-struct AovSet {
+class AovSetWriter;
+class RemovedOnSignal;
+
+// What a set holds.
+struct AovLayout {
     std::uint32_t width = 0;
     std::uint32_t height = 0;
-    std::vector<float> depth;
-    std::vector<glm::vec3> normals;
-    std::vector<PixelClass> classes;      // object id and light masks
-    std::size_t lightCount = 0;
-    const std::vector<float>* margins = nullptr;  // written when given
-    double ambiguityMargin = 0.0;                 // with margins: the threshold the preview marks
+    std::size_t lightCount = 0;    // a mask for each of the first PixelClass::kClassifiedLights
+    bool withMargins = false;      // margin.exr (compare's CPU reference)
+    double ambiguityMargin = 0.0;  // with margins: the threshold the preview marks
 };
 
-// One render's AOVs, written whole into a hidden staging directory inside `directory` by the
-// constructor and moved into `directory` by commit(), after the image itself is in place.
-// commit() also removes the AOV files of an earlier set that this one lacks (light-N beyond
-// its lights, margin), so the directory never mixes two renders' AOVs. Destroyed without
-// commit() (a failure, an exception), it removes the staging directory and leaves
-// `directory` as it was. A process killed outright may leave a `.hexray-aov-*` directory.
+// The next rows of every AOV, row-major, rows × width values each.
+struct AovBand {
+    std::uint32_t rows = 0;
+    std::span<const float> depth;
+    std::span<const glm::vec3> normals;
+    std::span<const PixelClass> classes;  // object id and light masks
+    std::span<const float> margins;       // with AovLayout::withMargins
+};
+
+// Whether `name` is a file an AOV set may hold: depth, normal, object-id, margin or light-N,
+// as .exr or .png.
+bool isAovFileName(const std::string& name);
+
+// One render's AOVs, written band by band into a hidden staging directory inside `directory`
+// (`.hexray-aov-XXXXXX`) and moved into `directory` by commit(), after the image itself is in
+// place. commit() also removes the AOV files of an earlier set that this one lacks (light-N
+// beyond its lights, margin), so the directory never mixes two renders' AOVs. Destroyed
+// without commit() (a failure, an exception), or ended by a catchable signal, it removes the
+// staging directory and leaves `directory` as it was, removing it (and any parents) if it
+// created it. A staging directory that a killed process left behind is removed by the next set
+// staged in the same directory.
 class StagedAovs {
 public:
-    // Creates `directory` if needed; throws ImageIoError when a file cannot be written.
-    StagedAovs(const std::filesystem::path& directory, const AovSet& aovs);
+    // Creates `directory` if needed; throws OutputError when it or a file cannot be written.
+    StagedAovs(const std::filesystem::path& directory, const AovLayout& layout);
     ~StagedAovs();
     StagedAovs(const StagedAovs&) = delete;
     StagedAovs& operator=(const StagedAovs&) = delete;
 
-    // Moves every file into place; returns their paths. Throws ImageIoError on failure.
+    void writeRows(const AovBand& band);
+
+    // Finishes every file and moves it into place; returns their paths. Throws OutputError on failure.
     std::vector<std::filesystem::path> commit();
 
 private:
+    void createDirectory();
+    void discard();
+
     std::filesystem::path directory_;
-    std::filesystem::path staging_;  // empty once committed
-    std::vector<std::string> names_;  // file names, in the order written
+    std::vector<std::filesystem::path> created_;  // directories this set created, deepest first
+    std::filesystem::path staging_;               // empty once committed
+    int stagingLock_ = -1;                        // holds the staging directory as a live run's
+    std::unique_ptr<RemovedOnSignal> removal_;
+    std::unique_ptr<AovSetWriter> writer_;
 };
 
 }  // namespace hexray

@@ -1,6 +1,6 @@
 #pragma once
-// Float OpenEXR files (through Debian's tinyexr): the AOVs `render --aov` writes, and reading
-// them back (tests).
+// Whole float OpenEXR files, through ExrRowWriter and ExrRowReader: small images in the tests,
+// and reading AOVs back.
 
 #include <cstdint>
 #include <filesystem>
@@ -15,10 +15,10 @@ struct ExrChannel {
     std::vector<float> values;  // width * height, row-major, (0, 0) at the top-left
 };
 
-// 32-bit float channels, ZIP-compressed. Atomic like the PNGs (atomic_file.h); throws
-// ImageIoError naming the file.
+// 32-bit float channels, ZIP-compressed; atomic (see io/output_file.h). Throws OutputError
+// naming the file when it cannot be written.
 void writeExr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-              std::vector<ExrChannel> channels);
+              const std::vector<ExrChannel>& channels);
 
 struct ExrImage {
     std::uint32_t width = 0;
@@ -26,6 +26,7 @@ struct ExrImage {
     std::map<std::string, std::vector<float>> channels;
 };
 
+// Throws ImageIoError naming the file.
 ExrImage readExr(const std::filesystem::path& path);
 
 }  // namespace hexray

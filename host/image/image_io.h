@@ -29,9 +29,11 @@ struct Rgb8Image {
 std::uint8_t encodeChannel(float linear, Encoding encoding);
 Rgb8Image encodeImage(const Image& image, Encoding encoding);
 
-// Writes a PNG row by row, so an image need never be whole in memory. Atomic (see
-// atomic_file.h): the image appears at `path` only when finish() succeeds; a writer destroyed
-// without finish(), or a SIGINT/SIGTERM meanwhile, leaves no partial or clobbered image.
+// Writes a PNG row by row, so an image need never be whole in memory, to an OutputFile (see
+// io/output_file.h): a regular file appears at `path` only when finish() succeeds; a writer
+// destroyed without finish(), or a catchable signal meanwhile, leaves no partial or clobbered
+// image. "-" is standard output. Throws OutputError when the file cannot be written, and
+// std::bad_alloc when the encoder runs out of memory.
 class PngRowWriter {
 public:
     PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height);

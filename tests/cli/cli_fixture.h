@@ -2,14 +2,20 @@
 // The fixture the CLI tests share: runs the real hexray executable in a fresh directory and
 // captures its exit code, stdout and stderr.
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -39,16 +45,80 @@ protected:
 
     // Runs `hexray ARGS` in the test's directory; `environment` is prefixed to the command.
     RunResult hexray(const std::string& arguments, const std::string& environment = "") const {
+        return shell(environment + " \"$HEXRAY\" " + arguments);
+    }
+
+    // Runs a shell script in the test's directory, with $HEXRAY naming the executable; its
+    // exit code is the script's.
+    RunResult shell(const std::string& script) const {
         const fs::path out = dir_ / "stdout.txt";
         const fs::path err = dir_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" HEXRAY_EXECUTABLE "' " +
-                                    arguments + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+        const std::string command = "cd '" + dir_.string() + "' && HEXRAY='" HEXRAY_EXECUTABLE "' && { " + script +
+                                    "\n} >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
         const int status = std::system(command.c_str());
         RunResult result;
         result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
         result.out = readFile(out);
         result.err = readFile(err);
         return result;
+    }
+
+    // Starts hexray in the test's directory with every signal at its default action (a shell's
+    // background job would ignore SIGINT and SIGQUIT); stdout and stderr go to the usual files.
+    pid_t start(const std::vector<std::string>& arguments) const {
+        std::vector<std::string> words = {HEXRAY_EXECUTABLE};
+        words.insert(words.end(), arguments.begin(), arguments.end());
+        std::vector<char*> argv;
+        for (std::string& word : words) {
+            argv.push_back(word.data());
+        }
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addchdir_np(&actions, dir_.c_str());
+        posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, 1, "stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_addopen(&actions, 2, "stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawnattr_t attributes;
+        posix_spawnattr_init(&attributes);
+        sigset_t all;
+        sigfillset(&all);
+        sigset_t none;
+        sigemptyset(&none);
+        posix_spawnattr_setsigdefault(&attributes, &all);
+        posix_spawnattr_setsigmask(&attributes, &none);
+        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+        pid_t pid = -1;
+        const int error = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
+        posix_spawn_file_actions_destroy(&actions);
+        posix_spawnattr_destroy(&attributes);
+        return error == 0 ? pid : -1;
+    }
+
+    // Whether an entry whose name starts with `prefix` appears in `directory` within `timeout`.
+    static bool waitForEntry(const fs::path& directory, const std::string& prefix,
+                             std::chrono::seconds timeout = std::chrono::seconds(120)) {
+        const auto deadline = std::chrono::steady_clock::now() + timeout;
+        while (std::chrono::steady_clock::now() < deadline) {
+            if (!entriesStartingWith(directory, prefix).empty()) {
+                return true;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        return false;
+    }
+
+    static std::vector<std::string> entriesStartingWith(const fs::path& directory, const std::string& prefix) {
+        std::vector<std::string> names;
+        std::error_code error;
+        for (auto entry = fs::directory_iterator(directory, error); !error && entry != fs::directory_iterator();
+             entry.increment(error)) {
+            const std::string name = entry->path().filename().string();
+            if (name.rfind(prefix, 0) == 0) {
+                names.push_back(name);
+            }
+        }
+        return names;
     }
 
     fs::path writeScene(const std::string& name, const std::string& text) const {
@@ -66,6 +136,7 @@ protected:
                 names.push_back(name);
             }
         }
+        std::sort(names.begin(), names.end());
         return names;
     }
 

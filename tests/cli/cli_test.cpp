@@ -97,6 +97,21 @@ TEST_F(CliTest, CompareAllPrintsOneTableOfScenesAndPrecisions) {
     }
 }
 
+TEST_F(CliTest, CompareDirectoryComparesEveryLoadableSceneAndFailsForTheOthers) {
+    fs::create_directories(dir_ / "scenes");
+    std::ofstream(dir_ / "scenes" / "a-good.json") << kGoodScene;
+    std::ofstream(dir_ / "scenes" / "b-bad.json") << replaced(kGoodScene, "\"radius\": 10", "\"radius\": -3");
+    std::ofstream(dir_ / "scenes" / "c-good.json") << kGoodScene;
+    const RunResult run = hexray("compare scenes");
+    EXPECT_EQ(run.exitCode, 2) << run.out << run.err;
+    EXPECT_NE(run.out.find("| a-good | f32 | ✓ | 0 |"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("| c-good | f32 | ✓ | 0 |"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("| b-bad | – |"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("cannot load"), std::string::npos) << run.out;
+    EXPECT_NE(run.err.find("b-bad.json: nodes[0].geometry.radius: must be > 0"), std::string::npos) << run.err;
+    EXPECT_NE(run.out.find("FAIL"), std::string::npos) << run.out;
+}
+
 TEST_F(CliTest, RenderInDoublePrecisionSaysSo) {
     const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o d.png --precision f64 --width 64 --height 48");
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -322,9 +337,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"UnknownKey", replaced(kGoodScene, "\"fov\": 90", "\"fvo\": 90"), "",
                  "bad.json: camera.fvo: unknown key"},
         BadInput{"MissingFile", "", "", "bad.json: cannot read scene file"},
-        BadInput{"WidthOverrideZero", kGoodScene, "--width 0", "--width: must be between 1 and 16384 (got 0)"},
+        BadInput{"WidthOverrideZero", kGoodScene, "--width 0", "--width: must be an integer between 1 and 16384 (got 0)"},
         BadInput{"HeightOverrideAbsurd", kGoodScene, "--height 99999999",
-                 "--height: must be between 1 and 16384 (got 99999999)"},
+                 "--height: must be an integer between 1 and 16384 (got 99999999)"},
         BadInput{"UnknownBackend", kGoodScene, "--backend quantum", "--backend"}),
     [](const auto& info) { return std::string(info.param.name); });
 

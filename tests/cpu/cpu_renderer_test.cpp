@@ -1,10 +1,12 @@
 // The CPU reference end to end: tiny scenes whose pixels can be worked out by hand.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -38,6 +40,28 @@ Scene groundScene() {
     scene.lights.push_back(PointLight{{-1, 12, 9}, Color(1.0), 169.0});
     scene.shaders.push_back(LambertShader{{0.5, 1.0, 0.25}});
     scene.nodes.push_back(Node{Plane{0.0}, 0});
+    return scene;
+}
+
+// 37x23, two checkered nodes, a Lambert sphere and two lights: no two rows alike.
+Scene variedScene() {
+    Scene scene;
+    scene.image.width = 37;
+    scene.image.height = 23;
+    scene.camera.position = {3, 40, -90};
+    scene.camera.yawDegrees = 10;
+    scene.camera.pitchDegrees = -20;
+    scene.camera.rollDegrees = 5;
+    scene.background = {0.05, 0.1, 0.2};
+    scene.ambient = Color(0.15);
+    scene.lights.push_back(PointLight{{30, 100, -70}, Color(1.0), 10000.0});
+    scene.lights.push_back(PointLight{{-50, 30, 0}, {0.5, 0.2, 0.1}, 3000.0});
+    scene.shaders.push_back(CheckerShader{{0, 0, 0.8}, {0.2, 0.3, 0.6}, 20.0});
+    scene.shaders.push_back(CheckerShader{{0.8, 0, 0}, {0.6, 0.4, 0.1}, 9.0});
+    scene.shaders.push_back(LambertShader{{0.7, 0.7, 0.7}});
+    scene.nodes.push_back(Node{Plane{15.0}, 0});
+    scene.nodes.push_back(Node{Sphere{{-10, 60, 0}, 30}, 1});
+    scene.nodes.push_back(Node{Sphere{{40, 25, 10}, 10}, 2});
     return scene;
 }
 
@@ -119,24 +143,7 @@ TEST(RenderOnCpu, ConstantSphereFillingTheViewIsItsColourEverywhere) {
 }
 
 TEST(RenderOnCpu, ThreadCountsGiveIdenticalImages) {
-    Scene scene;
-    scene.image.width = 37;
-    scene.image.height = 23;
-    scene.camera.position = {3, 40, -90};
-    scene.camera.yawDegrees = 10;
-    scene.camera.pitchDegrees = -20;
-    scene.camera.rollDegrees = 5;
-    scene.background = {0.05, 0.1, 0.2};
-    scene.ambient = Color(0.15);
-    scene.lights.push_back(PointLight{{30, 100, -70}, Color(1.0), 10000.0});
-    scene.lights.push_back(PointLight{{-50, 30, 0}, {0.5, 0.2, 0.1}, 3000.0});
-    scene.shaders.push_back(CheckerShader{{0, 0, 0.8}, {0.2, 0.3, 0.6}, 20.0});
-    scene.shaders.push_back(CheckerShader{{0.8, 0, 0}, {0.6, 0.4, 0.1}, 9.0});
-    scene.shaders.push_back(LambertShader{{0.7, 0.7, 0.7}});
-    scene.nodes.push_back(Node{Plane{15.0}, 0});
-    scene.nodes.push_back(Node{Sphere{{-10, 60, 0}, 30}, 1});
-    scene.nodes.push_back(Node{Sphere{{40, 25, 10}, 10}, 2});
-
+    const Scene scene = variedScene();
     const CpuRender single = renderOnCpu(scene, 1);
     std::set<std::tuple<float, float, float>> distinct;
     for (const glm::vec3& p : single.image.pixels) {
@@ -152,6 +159,49 @@ TEST(RenderOnCpu, ThreadCountsGiveIdenticalImages) {
         EXPECT_TRUE(render.classes == single.classes) << threads << " threads";
         EXPECT_TRUE(render.margins == single.margins) << threads << " threads";
     }
+}
+
+TEST(CpuBandRenderer, BandsOfAnyHeightAreTheWholeRendersRows) {
+    const Scene scene = variedScene();
+    const CpuRender whole = renderOnCpu(scene, 2, Acceleration::Auto, true);
+    const CpuBandRenderer renderer(scene, 2, Acceleration::Auto, true);
+    const std::size_t width = scene.image.width;
+    for (const std::uint32_t bandRows : {1u, 5u, 23u}) {
+        CpuRender band;  // reused, as the commands do
+        for (std::uint32_t first = 0; first < scene.image.height; first += bandRows) {
+            const std::uint32_t rows = std::min(bandRows, scene.image.height - first);
+            renderer.render(first, rows, band);
+            ASSERT_EQ(band.image.height, rows);
+            const auto part = [&](const auto& values) {
+                const auto begin = values.begin() + std::ptrdiff_t(first * width);
+                return std::vector(begin, begin + std::ptrdiff_t(rows * width));
+            };
+            EXPECT_TRUE(band.image.pixels == part(whole.image.pixels)) << bandRows << " rows, from " << first;
+            EXPECT_TRUE(band.classes == part(whole.classes)) << bandRows << " rows, from " << first;
+            EXPECT_TRUE(band.margins == part(whole.margins)) << bandRows << " rows, from " << first;
+            EXPECT_TRUE(band.depth == part(whole.depth)) << bandRows << " rows, from " << first;
+            EXPECT_TRUE(band.normals == part(whole.normals)) << bandRows << " rows, from " << first;
+        }
+    }
+}
+
+TEST(CpuBandRenderer, ThreadsAreCappedAtTheImageHeightAndTheMaximum) {
+    Scene scene = variedScene();
+    EXPECT_EQ(CpuBandRenderer(scene, 4000000000u).threadCount(), 23u);
+    EXPECT_EQ(CpuBandRenderer(scene, 3).threadCount(), 3u);
+    scene.image.height = 5000;
+    EXPECT_EQ(CpuBandRenderer(scene, 4000000000u).threadCount(), kMaxCpuThreads);
+}
+
+TEST(CpuBandRenderer, RowsPerBandGrowWithTheBytesAndShrinkWithTheWidth) {
+    const Scene scene = variedScene();
+    const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float);
+    const CpuBandRenderer renderer(scene, 1);
+    EXPECT_EQ(renderer.rowsPerBand(37 * pixelBytes * 5), 5u);
+    EXPECT_EQ(renderer.rowsPerBand(1), 1u);                  // at least one row
+    EXPECT_EQ(renderer.rowsPerBand(std::size_t(1) << 40), 23u);  // at most the image
+    // AOVs take room too: fewer rows in the same bytes.
+    EXPECT_LT(CpuBandRenderer(scene, 1, Acceleration::Auto, true).rowsPerBand(37 * pixelBytes * 5), 5u);
 }
 
 TEST(RenderOnCpu, EmptyImage) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "io/output_error.h"
 #include "support/temporary_directory_test.h"
 
 namespace hexray {
@@ -62,8 +63,8 @@ TEST_F(PngFileTest, MissingDirectoryIsAnErrorNamingThePath) {
     const fs::path target = dir_ / "no-such-dir" / "g.png";
     try {
         writePng(target, gradient(2, 2));
-        FAIL() << "expected ImageIoError";
-    } catch (const ImageIoError& error) {
+        FAIL() << "expected OutputError";
+    } catch (const OutputError& error) {
         EXPECT_NE(std::string(error.what()).find(target.string()), std::string::npos) << error.what();
     }
     EXPECT_FALSE(fs::exists(target));
@@ -94,7 +95,7 @@ TEST_F(PngFileTest, AnUnfinishedWriterLeavesNothingAndKeepsTheOldFile) {
 TEST_F(PngFileTest, FinishingBeforeEveryRowIsInIsAnError) {
     PngRowWriter writer(dir_ / "short.png", 4, 4);
     writer.writeRows(gradient(4, 3).bytes);
-    EXPECT_THROW(writer.finish(), ImageIoError);
+    EXPECT_THROW(writer.finish(), OutputError);
 }
 
 TEST_F(PngFileTest, ReadingANonPngIsAnError) {

@@ -1,0 +1,36 @@
+#pragma once
+// Writes a float OpenEXR file (32-bit channels, ZIP-compressed scanlines, through OpenEXR) a band
+// of rows at a time, so an image need never be whole in memory. The file is an OutputFile
+// (io/output_file.h): it appears at its path only when finish() succeeds. It must be a regular
+// file: the format's offset table is written last, by seeking back.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace hexray {
+
+class ExrRowWriter {
+public:
+    // Throws OutputError when the file cannot be created.
+    ExrRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                 const std::vector<std::string>& channelNames);
+    ~ExrRowWriter();
+    ExrRowWriter(const ExrRowWriter&) = delete;
+    ExrRowWriter& operator=(const ExrRowWriter&) = delete;
+
+    // The next `rows` rows: one span of rows × width values per channel, in the order the
+    // channels were named. Throws OutputError on a write failure.
+    void writeRows(std::uint32_t rows, const std::vector<std::span<const float>>& channels);
+    // Throws OutputError unless every row was written and the file is in place.
+    void finish();
+
+private:
+    struct Encoder;
+    std::unique_ptr<Encoder> encoder_;
+};
+
+}  // namespace hexray
