@@ -111,8 +111,13 @@ ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputM
 }
 
 double placementScale(const Scene& scene) {
-    const double largest = estimateConditioning(scene).largestDistance;
-    return largest > 0 && std::isfinite(largest) ? std::exp2(std::round(std::log2(largest))) : 1.0;
+    // The power of two nearest the geometric middle of the scene's lengths: the squares of the
+    // smallest and the largest then stay equally far inside the number range, and an object far out
+    // of view moves the scale by the square root of its distance only (a power of two: no visible
+    // pixel changes, as long as the range fits; see float32RangeProblem).
+    const MagnitudeRange range = sceneMagnitudes(scene);
+    return range.smallest > 0 ? std::exp2(std::round(0.5 * (std::log2(range.smallest) + std::log2(range.largest))))
+                              : 1.0;
 }
 
 template <typename Real>
