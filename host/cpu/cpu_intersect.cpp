@@ -37,16 +37,35 @@ std::optional<Hit> intersectPlane(const Ray& ray, const Plane& plane) {
 
 namespace {
 
+// |f|^2 - r^2 with about one rounding: each square split exactly into its rounded value and error
+// (fma), the eight parts summed with Neumaier's compensation. dot(f, f) - r*r would err by
+// eps*(|f|^2 + r^2), which swamps the small power of an origin close to a large sphere.
+double powerOfPoint(const glm::dvec3& f, double r) {
+    const double squares[4] = {f.x * f.x, f.y * f.y, f.z * f.z, -(r * r)};
+    const double errors[4] = {std::fma(f.x, f.x, -squares[0]), std::fma(f.y, f.y, -squares[1]),
+                              std::fma(f.z, f.z, -squares[2]), -std::fma(r, r, squares[3])};
+    double sum = 0.0;
+    double compensation = 0.0;
+    for (const double* part : {squares, errors}) {
+        for (int i = 0; i < 4; ++i) {
+            const double next = sum + part[i];
+            compensation += std::abs(sum) >= std::abs(part[i]) ? (sum - next) + part[i] : (part[i] - next) + sum;
+            sum = next;
+        }
+    }
+    return sum + compensation;
+}
+
 // r^2 - |l|^2 = b'^2 - c', the quarter discriminant, in whichever of its two forms has the smaller
-// first-order rounding error bound. (r - |l|)(r + |l|) errs by about eps*r*(|b'| + r): small for a
+// first-order rounding error bound. (r - |l|)(r + |l|) errs by about 6 eps r (|b'| + r): small for a
 // small or distant sphere, where b'^2 and c' are both near |f|^2 and cancel. b'^2 - c' errs by
-// about eps*(|b'||f| + |f|^2 + r^2)/6 and is exact where c' is: it wins for a ray starting on or
-// near the sphere and for a large sphere seen from close by, where |l| is within rounding of r.
+// about 6 eps |b'||f| + 2 eps |c'| (c' from powerOfPoint): it wins for a ray starting on or near the
+// sphere and for a large sphere seen from close by, where |l| is within rounding of r.
 double quarterDiscriminant(double halfB, double lengthL, double lengthF, double power, double r) {
     const double fromLine = (r - lengthL) * (r + lengthL);
     const double fromPower = halfB * halfB - power;
     const double lineBound = 6.0 * r * (std::abs(halfB) + r);
-    const double powerBound = 6.0 * std::abs(halfB) * lengthF + lengthF * lengthF + r * r;
+    const double powerBound = 6.0 * std::abs(halfB) * lengthF + 2.0 * std::abs(power);
     return powerBound < lineBound ? fromPower : fromLine;
 }
 
@@ -61,7 +80,7 @@ std::optional<Hit> intersectSphere(const Ray& ray, const Sphere& sphere) {
     // From the centre to the ray's closest point. Subtracting as vectors keeps |l| accurate
     // when the sphere is small and far away; r^2 - (|f|^2 - b'^2) would cancel catastrophically.
     const glm::dvec3 l = f - halfB * d;
-    const double power = glm::dot(f, f) - r * r;  // c', the origin's power: > 0 outside the sphere
+    const double power = powerOfPoint(f, r);  // c', the origin's power: > 0 outside the sphere
     const double discriminant = quarterDiscriminant(halfB, glm::length(l), glm::length(f), power, r);
     if (discriminant < 0.0) {
         return std::nullopt;
