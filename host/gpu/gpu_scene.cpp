@@ -78,8 +78,8 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placer& pla
         const auto& sphere = std::get<Sphere>(node.geometry);
         packed.kinds.x = kGeometrySphere;
         packed.geometry = toReal4<Real>(placer.position(sphere.center), placer.length(sphere.radius));
-        packed.surface = toReal4<Real>(glm::dvec3(
-            eyePower(placer.position(placer.eye) - placer.position(sphere.center), placer.length(sphere.radius)), 0, 0));
+        const glm::dvec3 fromCenter = placer.position(placer.eye) - placer.position(sphere.center);
+        packed.surface = toReal4<Real>(glm::dvec3(eyePower(fromCenter, placer.length(sphere.radius)), 0, 0));
     }
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         packed.kinds.y = kShaderConstant;

@@ -51,7 +51,7 @@ MagnitudeRange sceneMagnitudes(const Scene& scene);
 inline constexpr double kFloat32MagnitudeRatio = 0x1p100;
 
 // Why float32 cannot hold the scene's lengths (their ratio exceeds kFloat32MagnitudeRatio), or
-// nothing. float64 holds every scene the loader accepts (scene.h: at most about 2^390).
+// nothing. float64 holds every scene the loader accepts (scene.h: ratios below about 2^700).
 std::optional<std::string> float32RangeProblem(const Scene& scene);
 
 // F32 when the conditioning ratio is within kFloat32ConditioningLimit and float32 holds the

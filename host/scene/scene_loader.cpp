@@ -319,7 +319,8 @@ private:
         const double magnitude = std::fabs(value);
         if ((mayBeZero && value == 0.0) || (magnitude >= min && magnitude <= max)) return value;
         fail(std::string("must be ") + (mayBeZero ? "0 or " : "") + "between " + formatNumber(min) + " and " +
-             formatNumber(max) + " in magnitude, the supported range of " + what + " (got " + formatNumber(value) + ")");
+             formatNumber(max) + " in magnitude, the supported range of " + what + " (got " + formatNumber(value) +
+             ")");
     }
 
     std::int64_t checkRange(std::int64_t value, std::int64_t min, std::int64_t max) const {

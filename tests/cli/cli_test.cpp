@@ -115,7 +115,8 @@ TEST_F(CliTest, RenderWarnsAndUsesF64WhenFloat32CannotHoldTheScene) {
               std::string::npos) << run.err;
     EXPECT_NE(run.err.find("a ratio beyond float32's 2^100); rendering in f64 instead"), std::string::npos) << run.err;
     EXPECT_NE(run.out.find("gpu f64"), std::string::npos) << run.out;
-    const RunResult lecture = hexray("render " + scene("lecture-demo.json") + " -o l.png --precision f32 --width 64 --height 48");
+    const RunResult lecture =
+        hexray("render " + scene("lecture-demo.json") + " -o l.png --precision f32 --width 64 --height 48");
     EXPECT_EQ(lecture.err.find("warning"), std::string::npos) << lecture.err;
 }
 

@@ -141,13 +141,14 @@ TEST_F(OracleSuiteTest, RayFromASphereReachesItsFarSideWithin8Ulps) {
     GpuRenderer renderer(context());
     for (const glm::dvec3 direction : {glm::dvec3(3.97, -3.04, 0), glm::dvec3(4, -3.5, 0)}) {
         const Scene scene = oracle::aimedScene(base, {3, 4, 0}, direction);
-        for (const auto& [precision, u] : {std::pair{Precision::F32, kFloat32Roundoff}, {Precision::F64, kFloat64Roundoff}}) {
+        for (const auto& [precision, u] :
+             {std::pair{Precision::F32, kFloat32Roundoff}, std::pair{Precision::F64, kFloat64Roundoff}}) {
             const GpuPixelTrace g = renderer.tracePixel(scene, precision, 0, 0, 0);
             const oracle::RayTruth truth = oracle::trace(scene, g.rayOrigin, g.rayDirection);
             ASSERT_EQ(g.node, 0u);
             const double ulps = std::abs(g.t - truth.t) / oracle::ulpAt(truth.scale, u);
-            std::printf("finding 1 %s: t %.10f, exactly %.10f: %.2f ulps\n", std::string(precisionName(precision)).c_str(),
-                        g.t, truth.t, ulps);
+            std::printf("finding 1 %s: t %.10f, exactly %.10f: %.2f ulps\n",
+                        std::string(precisionName(precision)).c_str(), g.t, truth.t, ulps);
             EXPECT_LE(ulps, oracle::kDistanceUlps) << precisionName(precision);
         }
     }

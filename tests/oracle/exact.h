@@ -14,7 +14,7 @@ public:
     static constexpr mpfr_prec_t kBits = 1024;
 
     Exact() : Exact(0.0) {}
-    Exact(double value) {  // NOLINT(google-explicit-constructor): doubles are exact here
+    Exact(double value) {  // implicit: every double is exact here
         mpfr_init2(value_, kBits);
         mpfr_set_d(value_, value, MPFR_RNDN);
     }

@@ -103,7 +103,8 @@ public:
         findings.nodes = {sphereNode({0, 0, 0}, 5.0)};
         add("origin on a sphere", "finding 1: (3.97, -3.04, 0)", findings, {3, 4, 0}, {3.97, -3.04, 0});
         add("origin on a sphere", "finding 1: (4, -3.5, 0)", findings, {3, 4, 0}, {4, -3.5, 0});
-        for (const glm::dvec3 center : {glm::dvec3(0, 0, 0), glm::dvec3(1000, -2000, 500), glm::dvec3(1e6, 1e6, -1e6)}) {
+        for (const glm::dvec3 center :
+             {glm::dvec3(0, 0, 0), glm::dvec3(1000, -2000, 500), glm::dvec3(1e6, 1e6, -1e6)}) {
             Scene scene = baseScene(center + glm::dvec3(0, 20, -20), 400.0);
             scene.nodes = {sphereNode(center, 5.0)};
             for (const glm::dvec3 onSurface : {glm::dvec3(3, 4, 0), glm::dvec3(0, 5, 0), glm::dvec3(0, 0, -5),

@@ -453,7 +453,8 @@ TEST(SceneLoaderRejects, LengthsBeyondTheSupportedRange) {
               "test.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 " + range + " (got 1e+308)");
     EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 9.99e-51)"),
               "test.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 " + range + " (got 9.99e-51)");
-    EXPECT_EQ(errorForChange(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})", R"({"type": "plane", "y": 1e308})"),
+    EXPECT_EQ(errorForChange(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})",
+                             R"({"type": "plane", "y": 1e308})"),
               "test.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 " + range + " (got 1e+308)");
     EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -1.0000001e50])"),
               "test.json: camera.position[2]: must be 0 or between 1e-50 and 1e+50 " + range + " (got -1.0000001e+50)");
