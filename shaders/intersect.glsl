@@ -17,6 +17,18 @@ real originPower(vec3r f, real radius) {
     return (distance - radius) * (distance + radius);
 }
 
+// r^2 - |l|^2 = b^2 - power (the quarter discriminant, l the centre's offset to the ray's closest
+// point), in whichever form has the smaller first-order rounding error: (r - |l|)(r + |l|) errs by
+// about 6u r(|b| + r), which suits small or distant spheres; b^2 - power by about 6u |b||f| + u|power|
+// (|f| <= |b| + |l|), which suits a ray starting on or near the sphere, and a large sphere seen
+// from close by, where |l| is within rounding of r. Both are computed and one selected: no branch.
+real sphereDiscriminant(real b, real lineDistance, real radius, real power) {
+    real fromLine = (radius - lineDistance) * (radius + lineDistance);
+    real fromPower = b * b - power;
+    bool powerIsTighter = 6.0 * abs(b) * (abs(b) + lineDistance) + abs(power) < 6.0 * radius * (abs(b) + radius);
+    return powerIsTighter ? fromPower : fromLine;
+}
+
 // Nearest t > 0 on the sphere, or NO_HIT (the far root when the ray starts inside).
 // `power` is originPower of the ray's origin.
 real intersectSphere(Ray ray, vec3r center, real radius, real power) {
@@ -35,12 +47,11 @@ real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     real far = (-b + root) / (2.0 * a);
     bool meets = discriminant >= 0.0;
 #else
-    // The discriminant from the centre's distance to the ray's line (Hearn-Baker) compares r
-    // with a quantity of its own size; the roots come from the stable pair q and c/q, so
-    // neither is a difference of nearly equal numbers.
+    // The discriminant in its more accurate form for this ray; the roots come from the stable
+    // pair q and c/q, so neither is a difference of nearly equal numbers.
     real b = dot(f, ray.direction);
     real lineDistance = length(f - b * ray.direction);
-    real discriminant = (radius - lineDistance) * (radius + lineDistance);
+    real discriminant = sphereDiscriminant(b, lineDistance, radius, power);
     real root = sqrt(max(discriminant, 0.0));
     real q = -b - (b >= 0.0 ? root : -root);
     real near = min(power / q, q);

@@ -3,6 +3,9 @@
 // Sum of ambient and every point light the surface sees, weighted by cos(theta) / r^2.
 // Sets the lit bit (see ClassBlock) of each light that contributes.
 vec3 incidentLight(Surface s, inout uint flags) {
+    // Terms are capped just below float's limit: a light nearly touching the point would give inf,
+    // and a zero colour channel times inf NaN. A term that large saturates the pixel anyway.
+    const float MAX_LIGHT_TERM = 3.0e38;
     vec3 sum = frame.ambient.rgb;
     for (uint i = 0u; i < lightCount(); ++i) {
         vec3r toLight = lights[i].position.xyz - s.position;
@@ -17,7 +20,7 @@ vec3 incidentLight(Surface s, inout uint flags) {
         bool shadowed = isOccluded(Ray(s.shadowOrigin, shadowPath / shadowLength), lights[i].position.xyz,
                                    facing ? shadowLength : 0.0);
         bool lit = facing && !shadowed;
-        vec3 contribution = lit ? lights[i].power.rgb * float(cosTheta / r2) : vec3(0.0);
+        vec3 contribution = lit ? lights[i].power.rgb * min(float(cosTheta / r2), MAX_LIGHT_TERM) : vec3(0.0);
         sum += contribution;
         uint status = r2 == 0.0 ? TRACE_LIGHT_AT_POINT
                     : !facing   ? TRACE_LIGHT_FACING_AWAY
@@ -28,7 +31,7 @@ vec3 incidentLight(Surface s, inout uint flags) {
             flags |= 2u << i;
         }
     }
-    return sum;
+    return min(sum, vec3(MAX_LIGHT_TERM));
 }
 
 // 0 or 1 for a number holding an integer; exact at any magnitude (x/2 and floor are exact).

@@ -51,7 +51,7 @@ Surface sphereSurfaceAt(Ray ray, Hit hit, Node node) {
     real b = dot(f, ray.direction);
     vec3r l = f - b * ray.direction;
     real lineDistance = length(l);
-    real halfChord = sqrt(max((radius - lineDistance) * (radius + lineDistance), 0.0));
+    real halfChord = sqrt(max(sphereDiscriminant(b, lineDistance, radius, node.surface.x), 0.0));
     // Camera rays take the near root from outside, the far one from inside (or on) the sphere:
     // decided by the sign of the eye's power, not by comparing t with -b, which rounding
     // cannot tell apart when the half-chord is below an ulp of the distance.

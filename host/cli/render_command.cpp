@@ -60,11 +60,17 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
                         std::optional<StagedAovs>& aovs) {
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
+    Precision precision = options.precision;
+    if (const auto problem = float32RangeProblem(scene); problem && precision == Precision::F32) {
+        std::fprintf(stderr, "hexray: warning: float32 cannot hold this scene (%s); rendering in f64 instead\n",
+                     problem->c_str());
+        precision = Precision::F64;
+    }
     Progress progress(scene.image.height);
     // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
     // sits whole in memory.
     const GpuRenderResult result = renderer.renderEncodedRows(
-        scene, options.precision, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
+        scene, precision, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
             writer.writeRows(rgbRows);
             progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
         });

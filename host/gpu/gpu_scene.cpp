@@ -30,6 +30,31 @@ struct Placer {
     double length(double world) const { return world / scale; }
 };
 
+// The eye's power with respect to a sphere, |f|^2 - r^2 for f = eye - centre, to about one rounding
+// of the result: each square split exactly into two doubles (fma), the eight parts summed with
+// their rounding errors carried (TwoSum). Plain double would lose the small power of an eye close
+// to a large sphere (or on one) to cancellation against |f|^2.
+double eyePower(const glm::dvec3& f, double radius) {
+    double sum = 0.0;
+    double carried = 0.0;
+    const auto add = [&](double x) {
+        const double total = sum + x;
+        const double part = total - sum;
+        carried += (sum - (total - part)) + (x - part);
+        sum = total;
+    };
+    const auto addSquare = [&](double x, double sign) {
+        const double square = x * x;
+        add(sign * square);
+        add(sign * std::fma(x, x, -square));
+    };
+    addSquare(f.x, 1.0);
+    addSquare(f.y, 1.0);
+    addSquare(f.z, 1.0);
+    addSquare(radius, -1.0);
+    return sum + carried;
+}
+
 // The eye's checker cell on a plane (in world units), split into a whole part (only its
 // parity matters) and a fractional part, so the shader adds only small numbers to it.
 template <typename Real>
@@ -53,10 +78,8 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placer& pla
         const auto& sphere = std::get<Sphere>(node.geometry);
         packed.kinds.x = kGeometrySphere;
         packed.geometry = toReal4<Real>(placer.position(sphere.center), placer.length(sphere.radius));
-        // (D - r)(D + r) in double: exact enough even when D - r is tiny next to D.
-        const double eyeDistance = glm::length(placer.position(placer.eye) - placer.position(sphere.center));
-        const double radius = placer.length(sphere.radius);
-        packed.surface = toReal4<Real>(glm::dvec3((eyeDistance - radius) * (eyeDistance + radius), 0, 0));
+        const glm::dvec3 fromCenter = placer.position(placer.eye) - placer.position(sphere.center);
+        packed.surface = toReal4<Real>(glm::dvec3(eyePower(fromCenter, placer.length(sphere.radius)), 0, 0));
     }
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         packed.kinds.y = kShaderConstant;
@@ -111,8 +134,13 @@ ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputM
 }
 
 double placementScale(const Scene& scene) {
-    const double largest = estimateConditioning(scene).largestDistance;
-    return largest > 0 && std::isfinite(largest) ? std::exp2(std::round(std::log2(largest))) : 1.0;
+    // The power of two nearest the geometric middle of the scene's lengths: the squares of the
+    // smallest and the largest then stay equally far inside the number range, and an object far out
+    // of view moves the scale by the square root of its distance only (a power of two: no visible
+    // pixel changes, as long as the range fits; see float32RangeProblem).
+    const MagnitudeRange range = sceneMagnitudes(scene);
+    return range.smallest > 0 ? std::exp2(std::round(0.5 * (std::log2(range.smallest) + std::log2(range.largest))))
+                              : 1.0;
 }
 
 template <typename Real>

@@ -17,9 +17,10 @@ struct GpuScene {
 };
 
 enum class Placement {
-    // Subtract the eye in double and divide every length by a power of two near the scene's
-    // size before rounding to Real: far-off scenes lose no precision, and very large or very
-    // small scenes neither overflow nor underflow. Both are exact for a power of two.
+    // Subtract the eye in double and divide every length by a power of two near the geometric
+    // middle of the scene's lengths (placementScale) before rounding to Real: far-off scenes lose
+    // no precision, and very large or very small scenes neither overflow nor underflow. Both are
+    // exact for a power of two.
     CameraRelative,
     // World coordinates as given, rounded to Real: the textbook upload, for f32-naive.
     World,
