@@ -40,6 +40,25 @@ HARD
     sed -n 's/^hard \([a-z0-9-]*\) \(f32-naive\|f32\|f64\): \([0-9]*\) violations.*/\1 \2 \3/p' |
     awk '{v[$1" "$2]=$3; s[$1]=1} END {for (k in s) printf "| %s | %s | %s | %s |\n", k, v[k" f32-naive"], v[k" f32"], v[k" f64"]}' |
     sort
+  cat <<ORACLE
+
+## Exact oracle: both renderers on generated hard rays
+
+Each of 605 generated hard rays (\`tests/oracle/hard_rays.cpp\`) is a one-pixel scene, traced by the
+shader (f32, f64; **gpu auto** = the one \`auto\` picks for that ray's scene) and explained by the CPU
+reference, and judged against the exact oracle (MPFR, \`tests/oracle/\`) on the direction that
+renderer followed, at its own precision (README, "Exact oracle"). **decisions** = well-conditioned
+decisions right / judged (which node, checker parity, each light's status; at least 64 units of
+roundoff from flipping); **distances** = distances judged (one unit of roundoff moves them by at
+most 2 ulps of the hit's scale S); **max ulps** = the largest distance error in ulps of S (the
+bound is 8); **values** / **max units** = normals, cos θ and r² judged, and the largest error in
+their own units (the bound is 8). Regenerate this table alone with
+\`build/tests/hexray_gpu_tests --gtest_filter='OracleSuiteTest.*' | sed -n 's/^oracle-row: //p'\`.
+
+| family | renderer | rays | decisions | distances | max ulps | values | max units |
+|---|---|---:|---:|---:|---:|---:|---:|
+ORACLE
+  ./build/tests/hexray_gpu_tests --gtest_filter='OracleSuiteTest.*' 2>/dev/null | sed -n 's/^oracle-row: //p'
   cat <<COST
 
 ## Cost of float64

@@ -17,7 +17,8 @@ bool isOddCell(vec2r cell, real eyeParity) {
 // `checker`: .x square size, .yz the eye's fractional cell position (from the host, in double),
 // .w the parity of the eye's whole cells; `position` camera-relative.
 bool isOddPlaneCell(vec4r checker, vec3r position) {
-    return isOddCell(floor(checker.yz + position.xz / checker.x), checker.w);
+    // A product with the reciprocal, which the driver folds to a constant for a generated kernel.
+    return isOddCell(floor(checker.yz + position.xz * (1.0 / checker.x)), checker.w);
 }
 
 // GLSL has atan in float only, so the f64 variant computes the angles in float too. Latitude is

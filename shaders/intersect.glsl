@@ -26,17 +26,28 @@ real originPower(vec3r f, real radius) {
     return (distance - radius) * (distance + radius);
 }
 
+// r^2 - |l|^2 = b^2 - power (the quarter discriminant, l the centre's offset to the ray's closest
+// point), in whichever form has the smaller first-order rounding error: (r - |l|)(r + |l|) errs by
+// about 6u r(|b| + r), which suits small or distant spheres; b^2 - power by about 6u |b||f| + u|power|
+// (|f| <= |b| + |l|), which suits a ray starting on or near the sphere, and a large sphere seen
+// from close by, where |l| is within rounding of r. Both are computed and one selected: no branch.
+real sphereDiscriminant(real b, real lineDistance, real radius, real power) {
+    real fromLine = (radius - lineDistance) * (radius + lineDistance);
+    real fromPower = b * b - power;
+    bool powerIsTighter = 6.0 * abs(b) * (abs(b) + lineDistance) + abs(power) < 6.0 * radius * (abs(b) + radius);
+    return powerIsTighter ? fromPower : fromLine;
+}
+
 // Nearest t > 0 on the sphere, or NO_HIT (the far root when the ray starts inside). `power` is
 // originPower of the ray's origin. Straight-line code (no early returns): lavapipe runs every
 // path anyway, and a return from inside a branch costs it extra bookkeeping.
 real sphereDistance(Ray ray, vec3r center, real radius, real power) {
     vec3r f = ray.origin - center;
-    // The discriminant from the centre's distance to the ray's line (Hearn-Baker) compares r
-    // with a quantity of its own size; the roots come from the stable pair q and c/q, so
-    // neither is a difference of nearly equal numbers.
+    // The discriminant in its more accurate form for this ray; the roots come from the stable
+    // pair q and c/q, so neither is a difference of nearly equal numbers.
     real b = dot(f, ray.direction);
     real lineDistance = length(f - b * ray.direction);
-    real discriminant = (radius - lineDistance) * (radius + lineDistance);
+    real discriminant = sphereDiscriminant(b, lineDistance, radius, power);
     real root = sqrt(max(discriminant, 0.0));
     real q = -b - (b >= 0.0 ? root : -root);
     real near = min(power / q, q);
@@ -46,12 +57,15 @@ real sphereDistance(Ray ray, vec3r center, real radius, real power) {
     return (meets && t > 0.0) ? t : NO_HIT;
 }
 
-// The fast form, b^2 - power with the power from the host: accurate while the origin is
-// neither far from the sphere against its radius (b^2 and the power would cancel) nor close
-// to its surface from outside (the near root would); see render_plan.h.
-real sphereDistanceFast(Ray ray, vec3r center, real power) {
-    real b = dot(ray.origin - center, ray.direction);
-    real discriminant = b * b - power;
+// The fast form for a ray whose origin is well away from the sphere's surface (outside by a
+// quarter of the radius, or inside within half of it; see render_plan.cpp): the Hearn-Baker
+// discriminant r^2 - |l|^2, whose error is that of l itself (a difference of vectors, never of
+// squares of the distance), and the root itself, which then is a sum of terms that do not cancel.
+real sphereDistanceFast(Ray ray, vec3r center, real radius) {
+    vec3r f = ray.origin - center;
+    real b = dot(f, ray.direction);
+    vec3r l = f - b * ray.direction;
+    real discriminant = radius * radius - dot(l, l);
     real root = sqrt(max(discriminant, 0.0));
     real near = -b - root;
     real t = near > 0.0 ? near : root - b;
@@ -80,7 +94,7 @@ real sphereDistanceTextbook(Ray ray, vec3r center, real radius) {
 bool sphereCrossesSegment(vec3r f, real radius, real power, vec3r direction, real segmentLength) {
     real b = dot(f, direction);
     real lineDistance = length(f - b * direction);
-    real discriminant = (radius - lineDistance) * (radius + lineDistance);
+    real discriminant = sphereDiscriminant(b, lineDistance, radius, power);
     real root = sqrt(max(discriminant, 0.0));
     real q = -b - (b >= 0.0 ? root : -root);
     real first = power / q;
@@ -88,15 +102,21 @@ bool sphereCrossesSegment(vec3r f, real radius, real power, vec3r direction, rea
     return discriminant >= 0.0 && q != 0.0 && crossesAt;
 }
 
-// The same in the fast form (see sphereDistanceFast).
-bool sphereCrossesSegmentFast(vec3r f, real power, vec3r direction, real segmentLength) {
+// The same from an origin well away from the surface and at most a few tens of radii away (see
+// render_plan.cpp), in the cheapest form: b^2 - power, with the power from the host in double. From
+// outside, both roots lie on one side of the origin and the segment meets the sphere when the near
+// one lies inside it; from inside, the far root is the only one ahead.
+bool sphereCrossesSegmentFromOutside(vec3r f, real power, vec3r direction, real segmentLength) {
     real b = dot(f, direction);
     real discriminant = b * b - power;
-    real root = sqrt(max(discriminant, 0.0));
-    real near = -b - root;
-    real far = root - b;
-    bool crossesAt = (near > 0.0 && near < segmentLength) || (far > 0.0 && far < segmentLength);
-    return discriminant >= 0.0 && crossesAt;
+    real near = -b - sqrt(max(discriminant, 0.0));
+    return discriminant >= 0.0 && near > 0.0 && near < segmentLength;
+}
+
+bool sphereCrossesSegmentFromInside(vec3r f, real power, vec3r direction, real segmentLength) {
+    real b = dot(f, direction);
+    real far = sqrt(b * b - power) - b;  // power < 0: the discriminant is positive
+    return far < segmentLength;
 }
 
 // A plane blocks a segment exactly when its ends lie strictly on opposite sides: no division,

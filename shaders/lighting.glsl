@@ -35,10 +35,15 @@ LightPath lightPath(Surface s, vec3r lightPosition) {
     return path;
 }
 
+// Light terms and their sum are capped just below float's limit: a light nearly touching the
+// point would give inf, and a zero colour channel times inf NaN. A term that large saturates the
+// pixel anyway.
+const float MAX_LIGHT_TERM = 3.0e38;
+
 // Light `index`'s part of the irradiance; sets its lit bit in `flags` and records it in a trace.
 vec3 lightTerm(uint index, vec4 power, LightPath path, bool shadowed, inout uint flags) {
     bool lit = path.facing && !shadowed;
-    vec3 contribution = lit ? power.rgb * float(path.cosTheta / path.r2) : vec3(0.0);
+    vec3 contribution = lit ? power.rgb * min(float(path.cosTheta / path.r2), MAX_LIGHT_TERM) : vec3(0.0);
     uint status = path.r2 == 0.0 ? TRACE_LIGHT_AT_POINT
                 : !path.facing   ? TRACE_LIGHT_FACING_AWAY
                 : shadowed       ? TRACE_LIGHT_SHADOWED

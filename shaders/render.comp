@@ -52,7 +52,7 @@ Surface hitSurface(Ray ray, Hit hit) {
 #ifdef HEXRAY_TEXTBOOK
     return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
-    Surface sphere = sphereSurface(ray, geometry, nodes[hit.node].surface.x > 0.0);
+    Surface sphere = sphereSurface(ray, geometry, nodes[hit.node].surface.x);
     // Every node is tested for every shadow ray, the sphere itself included.
     sphere.shadowOrigin = shadowOriginOffSphere(sphere, geometry);
     return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
@@ -80,7 +80,7 @@ vec3 shade(Ray ray, Hit hit, out uint flags) {
         bool shadowed = isOccluded(path.shadowRay, lights[i].position.xyz, path.shadowLength);
         irradiance += lightTerm(i, lights[i].power, path, shadowed, flags);
     }
-    return albedo * irradiance;
+    return albedo * min(irradiance, vec3(MAX_LIGHT_TERM));
 }
 
 #include "kernel_main.glsl"

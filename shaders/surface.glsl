@@ -3,6 +3,7 @@
 #ifndef HEXRAY_SURFACE_GLSL
 #define HEXRAY_SURFACE_GLSL
 
+#include "intersect.glsl"
 #include "precision.glsl"
 #include "ray.glsl"
 
@@ -72,15 +73,17 @@ vec3r shadowOriginOffSphere(Surface s, vec4r sphere) {
 // The normal from the intersection's own small quantities: with l the centre's offset to the
 // ray's closest point and h the half-chord, the hit is c + l -+ h d (near / far root).
 // o + t d - c would subtract numbers as large as the distance, and at 1e7 radii away that
-// leaves the normal quantised. `nearRoot`: camera rays take the near root from outside, the far
-// one from inside (or on) the sphere, decided by the sign of the eye's power, not by comparing t
-// with -b, which rounding cannot tell apart when the half-chord is below an ulp of the distance.
-Surface sphereSurface(Ray ray, vec4r sphere, bool nearRoot) {
+// leaves the normal quantised. Camera rays (`eyePower` is the eye's) take the near root from
+// outside, the far one from inside (or on) the sphere, decided by the sign of the eye's power, not
+// by comparing t with -b, which rounding cannot tell apart when the half-chord is below an ulp of
+// the distance.
+Surface sphereSurface(Ray ray, vec4r sphere, real eyePower) {
     vec3r f = ray.origin - sphere.xyz;
     real b = dot(f, ray.direction);
     vec3r l = f - b * ray.direction;
     real lineDistance = length(l);
-    real halfChord = sqrt(max((sphere.w - lineDistance) * (sphere.w + lineDistance), 0.0));
+    real halfChord = sqrt(max(sphereDiscriminant(b, lineDistance, sphere.w, eyePower), 0.0));
+    bool nearRoot = eyePower > 0.0;
     vec3r outward = normalize(nearRoot ? l - halfChord * ray.direction : l + halfChord * ray.direction);
     return reprojectedSphereSurface(ray, sphere, outward);
 }

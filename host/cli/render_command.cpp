@@ -80,6 +80,9 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
     // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
     // sits whole in memory.
     const RenderPlan plan = renderer.plan(scene, {options.precision});
+    for (const std::string& warning : plan.warnings) {
+        std::fprintf(stderr, "hexray: warning: %s\n", warning.c_str());
+    }
     const GpuRenderResult result = renderer.renderEncodedRows(
         scene, plan, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
             writer.writeRows(rgbRows);

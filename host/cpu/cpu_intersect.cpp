@@ -35,6 +35,42 @@ std::optional<Hit> intersectPlane(const Ray& ray, const Plane& plane) {
     return hit;
 }
 
+namespace {
+
+// |f|^2 - r^2 with about one rounding: each square split exactly into its rounded value and error
+// (fma), the eight parts summed with Neumaier's compensation. dot(f, f) - r*r would err by
+// eps*(|f|^2 + r^2), which swamps the small power of an origin close to a large sphere.
+double powerOfPoint(const glm::dvec3& f, double r) {
+    const double squares[4] = {f.x * f.x, f.y * f.y, f.z * f.z, -(r * r)};
+    const double errors[4] = {std::fma(f.x, f.x, -squares[0]), std::fma(f.y, f.y, -squares[1]),
+                              std::fma(f.z, f.z, -squares[2]), -std::fma(r, r, squares[3])};
+    double sum = 0.0;
+    double compensation = 0.0;
+    for (const double* part : {squares, errors}) {
+        for (int i = 0; i < 4; ++i) {
+            const double next = sum + part[i];
+            compensation += std::abs(sum) >= std::abs(part[i]) ? (sum - next) + part[i] : (part[i] - next) + sum;
+            sum = next;
+        }
+    }
+    return sum + compensation;
+}
+
+// r^2 - |l|^2 = b'^2 - c', the quarter discriminant, in whichever of its two forms has the smaller
+// first-order rounding error bound. (r - |l|)(r + |l|) errs by about 6 eps r (|b'| + r): small for a
+// small or distant sphere, where b'^2 and c' are both near |f|^2 and cancel. b'^2 - c' errs by
+// about 6 eps |b'||f| + 2 eps |c'| (c' from powerOfPoint): it wins for a ray starting on or near the
+// sphere and for a large sphere seen from close by, where |l| is within rounding of r.
+double quarterDiscriminant(double halfB, double lengthL, double lengthF, double power, double r) {
+    const double fromLine = (r - lengthL) * (r + lengthL);
+    const double fromPower = halfB * halfB - power;
+    const double lineBound = 6.0 * r * (std::abs(halfB) + r);
+    const double powerBound = 6.0 * std::abs(halfB) * lengthF + 2.0 * std::abs(power);
+    return powerBound < lineBound ? fromPower : fromLine;
+}
+
+}  // namespace
+
 std::optional<Hit> intersectSphere(const Ray& ray, const Sphere& sphere) {
     const glm::dvec3& d = ray.direction;
     const double r = sphere.radius;
@@ -44,27 +80,23 @@ std::optional<Hit> intersectSphere(const Ray& ray, const Sphere& sphere) {
     // From the centre to the ray's closest point. Subtracting as vectors keeps |l| accurate
     // when the sphere is small and far away; r^2 - (|f|^2 - b'^2) would cancel catastrophically.
     const glm::dvec3 l = f - halfB * d;
-    const double lengthL = glm::length(l);
-    // (r - |l|)(r + |l|) is a little more precise than r^2 - |l|^2.
-    const double discriminant = (r - lengthL) * (r + lengthL);
+    const double power = powerOfPoint(f, r);  // c', the origin's power: > 0 outside the sphere
+    const double discriminant = quarterDiscriminant(halfB, glm::length(l), glm::length(f), power, r);
     if (discriminant < 0.0) {
         return std::nullopt;
     }
 
     // Both terms of q have the same sign, so q is never a difference of near-equal numbers;
     // the other root comes from the product of roots (c'/a with a = 1).
-    const double q = -halfB - std::copysign(std::sqrt(discriminant), halfB);
+    const double halfChord = std::sqrt(discriminant);
+    const double q = -halfB - std::copysign(halfChord, halfB);
     if (q == 0.0) {
         // Only when b' = 0 and the discriminant is 0: a ray starting on the sphere, tangent
         // to it. Both roots are 0, and 0 is not a hit.
         return std::nullopt;
     }
-    const double c = glm::dot(f, f) - r * r;
-    double tNear = c / q;
-    double tFar = q;
-    if (tNear > tFar) {
-        std::swap(tNear, tFar);
-    }
+    const double tNear = std::min(power / q, q);
+    const double tFar = std::max(power / q, q);
 
     double t = 0.0;
     if (tNear > 0.0) {
@@ -80,11 +112,14 @@ std::optional<Hit> intersectSphere(const Ray& ray, const Sphere& sphere) {
 
     Hit hit;
     hit.t = t;
-    // Reproject onto the sphere: o + t*d carries the rounding error of t times |d|, which
-    // would leave the point off the surface (acne); the direction from the centre is accurate.
-    const glm::dvec3 outward = glm::normalize(ray.origin + t * d - sphere.center);
+    // The hit relative to the centre is l -+ halfChord * d (near / far root): built from these
+    // small terms, not from o + t*d - c, which cancels to rounding noise when the sphere is small
+    // next to its distance (a radius of 1e-20 one unit away would give 0/0). The point is then
+    // put on the sphere along that direction, and the normal is the unit direction itself.
+    const bool nearRoot = t == tNear;
+    const glm::dvec3 outward = glm::normalize(l + (nearRoot ? -halfChord : halfChord) * d);
     hit.point = sphere.center + r * outward;
-    hit.geometricNormal = (hit.point - sphere.center) / r;
+    hit.geometricNormal = outward;
     const bool rayLeavesThroughSurface = glm::dot(hit.geometricNormal, d) > 0.0;
     hit.facingNormal = rayLeavesThroughSurface ? -hit.geometricNormal : hit.geometricNormal;
     return hit;

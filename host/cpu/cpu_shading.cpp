@@ -5,6 +5,7 @@
 #include <cmath>
 #include <variant>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -129,8 +130,11 @@ Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit
         LightTerm term{decideLight(scene, geometry, hit, light, bvh), Color(0.0)};
         const LightDecision& decision = term.decision;
         if (decision.reach == LightReach::Lit) {
-            term.contribution = light.color * (light.intensity * decision.cosTheta / decision.distanceSquared);
-            total += term.contribution;
+            // Capped at the largest double: a light nearly touching the point would give inf, and a
+            // zero albedo channel times inf NaN. A term that large saturates the pixel anyway.
+            const double irradiance = std::min(light.intensity * decision.cosTheta / decision.distanceSquared, DBL_MAX);
+            term.contribution = glm::min(light.color * irradiance, Color(DBL_MAX));
+            total = glm::min(total + term.contribution, Color(DBL_MAX));
             if (litBits) {
                 *litBits |= PixelClass::litBit(std::uint32_t(i));
             }

@@ -21,6 +21,31 @@ glm::vec4 toColor(const Color& c) {
     return glm::vec4(glm::dvec4(c, 0.0));
 }
 
+// The eye's power with respect to a sphere, |f|^2 - r^2 for f = eye - centre, to about one rounding
+// of the result: each square split exactly into two doubles (fma), the eight parts summed with
+// their rounding errors carried (TwoSum). Plain double would lose the small power of an eye close
+// to a large sphere (or on one) to cancellation against |f|^2.
+double eyePower(const glm::dvec3& f, double radius) {
+    double sum = 0.0;
+    double carried = 0.0;
+    const auto add = [&](double x) {
+        const double total = sum + x;
+        const double part = total - sum;
+        carried += (sum - (total - part)) + (x - part);
+        sum = total;
+    };
+    const auto addSquare = [&](double x, double sign) {
+        const double square = x * x;
+        add(sign * square);
+        add(sign * std::fma(x, x, -square));
+    };
+    addSquare(f.x, 1.0);
+    addSquare(f.y, 1.0);
+    addSquare(f.z, 1.0);
+    addSquare(radius, -1.0);
+    return sum + carried;
+}
+
 // The eye's checker cell on a plane (in world units), split into a whole part (only its
 // parity matters) and a fractional part, so the shader adds only small numbers to it.
 template <typename Real>
@@ -44,10 +69,8 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& 
         const auto& sphere = std::get<Sphere>(node.geometry);
         packed.kinds.x = GEOMETRY_SPHERE;
         packed.geometry = toReal4<Real>(placement.position(sphere.center), placement.length(sphere.radius));
-        // (D - r)(D + r) in double: exact enough even when D - r is tiny next to D.
-        const double eyeDistance = glm::length(placement.position(eye) - placement.position(sphere.center));
-        const double radius = placement.length(sphere.radius);
-        packed.surface = toReal4<Real>(glm::dvec3((eyeDistance - radius) * (eyeDistance + radius), 0, 0));
+        const glm::dvec3 fromCenter = placement.position(eye) - placement.position(sphere.center);
+        packed.surface = toReal4<Real>(glm::dvec3(eyePower(fromCenter, placement.length(sphere.radius)), 0, 0));
     }
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         packed.kinds.y = SHADER_CONSTANT;

@@ -152,7 +152,7 @@ private:
         }
         const std::string power = value(i, "EYE_POWER");
         switch (n.sphereTest) {
-            case SphereTest::Fast: return "sphereDistanceFast(ray, " + g + ".xyz, " + power + ")";
+            case SphereTest::Fast: return "sphereDistanceFast(ray, " + g + ".xyz, " + g + ".w)";
             case SphereTest::Textbook: return "sphereDistanceTextbook(ray, " + g + ".xyz, " + g + ".w)";
             case SphereTest::Robust: break;
         }
@@ -208,7 +208,7 @@ private:
         if (const NodeSet r = spheres(set, SphereTest::Robust)) {
             select("vec4r", "robustSphere", r, "GEOMETRY");
             select("real", "eyePower", r, "EYE_POWER");
-            choose(r, "sphereSurface(ray, robustSphere, eyePower > 0.0)");
+            choose(r, "sphereSurface(ray, robustSphere, eyePower)");
         }
         if (const NodeSet t = spheres(set, SphereTest::Textbook)) {
             select("vec4r", "textbookSphere", t, "GEOMETRY");
@@ -249,7 +249,8 @@ private:
         const std::string power = lightValue(light, "NODE" + std::to_string(test.node) + "_POWER");
         const std::string towardSurface = "-path.shadowRay.direction, path.shadowLength)";
         if (test.sphereTest == SphereTest::Fast) {
-            return "sphereCrossesSegmentFast(" + f + ", " + power + ", " + towardSurface;
+            return std::string(test.lightOutside ? "sphereCrossesSegmentFromOutside(" : "sphereCrossesSegmentFromInside(") +
+                   f + ", " + power + ", " + towardSurface;
         }
         return "sphereCrossesSegment(" + f + ", " + g + ".w, " + power + ", " + towardSurface;
     }
@@ -308,7 +309,7 @@ private:
         for (std::uint32_t light = 0; light < code_.shadowTests.size(); ++light) {
             lightBlock(light);
         }
-        out_ << "    return albedo * irradiance;\n}\n\n";
+        out_ << "    return albedo * min(irradiance, vec3(MAX_LIGHT_TERM));\n}\n\n";
     }
 
     const SceneCode& code_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -69,8 +70,49 @@ Conditioning estimateConditioning(const Scene& scene) {
     return conditioning;
 }
 
+MagnitudeRange sceneMagnitudes(const Scene& scene) {
+    const glm::dvec3 eye = scene.camera.position;
+    MagnitudeRange range{std::numeric_limits<double>::infinity(), 0.0};
+    const auto add = [&range](double length) {
+        if (length > 0) {
+            range.smallest = std::min(range.smallest, length);
+            range.largest = std::max(range.largest, length);
+        }
+    };
+    for (const Node& node : scene.nodes) {
+        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+            const double centerDistance = glm::length(sphere->center - eye);
+            add(sphere->radius);
+            add(std::abs(centerDistance - sphere->radius));
+            add(centerDistance + sphere->radius);
+        } else {
+            add(std::abs(std::get<Plane>(node.geometry).height - eye.y));
+            if (const auto* checker = std::get_if<CheckerShader>(&scene.shaders[node.shaderIndex])) {
+                add(checker->size);
+            }
+        }
+    }
+    for (const PointLight& light : scene.lights) {
+        add(glm::length(light.position - eye));
+        add(std::sqrt(light.intensity * std::max({light.color.r, light.color.g, light.color.b})));
+    }
+    return range.largest > 0 ? range : MagnitudeRange{};
+}
+
+std::optional<std::string> float32RangeProblem(const Scene& scene) {
+    const MagnitudeRange range = sceneMagnitudes(scene);
+    if (range.ratio() <= kFloat32MagnitudeRatio) {
+        return std::nullopt;
+    }
+    char reason[160];
+    std::snprintf(reason, sizeof reason, "its lengths span %.3g to %.3g, a ratio beyond float32's 2^100",
+                  range.smallest, range.largest);
+    return reason;
+}
+
 Precision choosePrecision(const Scene& scene, bool deviceHasFloat64) {
-    const bool float32Suffices = estimateConditioning(scene).ratio() <= kFloat32ConditioningLimit;
+    const bool float32Suffices =
+        estimateConditioning(scene).ratio() <= kFloat32ConditioningLimit && !float32RangeProblem(scene);
     return float32Suffices || !deviceHasFloat64 ? Precision::F32 : Precision::F64;
 }
 

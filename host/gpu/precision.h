@@ -34,8 +34,28 @@ Conditioning estimateConditioning(const Scene& scene);
 // or of a checker square) allows a ratio of about 1.7e4; 1e4 keeps a margin.
 inline constexpr double kFloat32ConditioningLimit = 1e4;
 
-// F32 when the conditioning ratio is within kFloat32ConditioningLimit, else F64 (or F32 when
-// the device has no float64, which the caller reports).
+// The lengths the shader's arithmetic meets after the camera-relative rebase (sphere radii, the
+// eye's distances to each sphere's near and far side, to each plane and light, plane checker
+// squares, and for each light the length sqrt(intensity * brightest colour component), whose square
+// is its uploaded power), the smallest and the largest nonzero one.
+struct MagnitudeRange {
+    double smallest = 0;  // 0 when the scene has no nonzero length
+    double largest = 0;
+    double ratio() const { return smallest > 0 ? largest / smallest : 1.0; }
+};
+
+MagnitudeRange sceneMagnitudes(const Scene& scene);
+
+// Placed around the geometric middle of the range (gpu_scene.h), every length within 2^50 of it
+// keeps its square, and a product of a few such, a normal float32 (2^-126 to 2^128).
+inline constexpr double kFloat32MagnitudeRatio = 0x1p100;
+
+// Why float32 cannot hold the scene's lengths (their ratio exceeds kFloat32MagnitudeRatio), or
+// nothing. float64 holds every scene the loader accepts (scene.h: ratios below about 2^700).
+std::optional<std::string> float32RangeProblem(const Scene& scene);
+
+// F32 when the conditioning ratio is within kFloat32ConditioningLimit and float32 holds the
+// scene's lengths, else F64 (or F32 when the device has no float64, which the caller reports).
 Precision choosePrecision(const Scene& scene, bool deviceHasFloat64);
 
 }  // namespace hexray

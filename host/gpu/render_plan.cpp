@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -15,28 +16,28 @@ namespace hexray {
 namespace {
 
 // ---------------------------------------------------------------- tunables
-// The fast sphere test (b^2 - power; for camera rays the normal from o + t d) is used for rays
-// from an origin shared by every pixel (the eye, or a light for shadow rays) at a distance d from
-// the centre of a sphere of radius r with
-//   kFastMinOutside * r <= d <= kFastMaxOutside * r   (outside), or   d <= kFastMaxInside * r.
-// Far out, b^2 and the power cancel: the discriminant's error grows like d^2 / r, and at 32 r
-// it is still a hundredth of the band compare calls ambiguous (2^-17 of the distances). Close to
-// the surface the near root cancels, and a camera (or light) on the sphere must see its power of
-// exactly 0 as a root at 0, which only the robust root pair does. Inside, with d <= r / 2, the far root
-// -b + sqrt(b^2 - power) is a sum of terms that do not cancel.
+// The robust sphere test (the stable root pair, the normal from the chord) is needed only for rays
+// from an origin close to the sphere's surface, where the near root cancels and a camera or light
+// on the sphere must see its power of exactly 0 as a root at 0. The fast form serves an origin at
+// distance d from the centre of a sphere of radius r when d >= kFastMinOutside * r or
+// d <= kFastMaxInside * r: for a camera ray the Hearn-Baker discriminant with the plain roots and
+// the normal from the hit point; for a shadow ray from a light, which decides only blocked or
+// not, b^2 - power when also d <= kFastMaxShadowOutside * r (the discriminant's error grows like
+// d^2 / r; at 32 r it is still a hundredth of the band compare calls ambiguous, 2^-17 of the
+// distances), else the robust test.
 constexpr double kFastMinOutside = 1.25;
-constexpr double kFastMaxOutside = 32.0;
 constexpr double kFastMaxInside = 0.5;
+constexpr double kFastMaxShadowOutside = 32.0;
 
 // How a ray from `origin`, the same for every pixel (the eye, or a light), meets the sphere.
-SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formulation formulation) {
+SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formulation formulation, double maxOutside) {
     if (formulation == Formulation::Textbook) {
         return SphereTest::Textbook;
     }
     const double distance = glm::length(sphere.center - origin);
     const double r = sphere.radius;
-    const bool farEnough = distance >= kFastMinOutside * r && distance <= kFastMaxOutside * r;
-    return farEnough || distance <= kFastMaxInside * r ? SphereTest::Fast : SphereTest::Robust;
+    const bool outside = distance >= kFastMinOutside * r && distance <= maxOutside * r;
+    return outside || distance <= kFastMaxInside * r ? SphereTest::Fast : SphereTest::Robust;
 }
 
 // The shadow tests a light needs. A plane blocks a segment only when its ends lie strictly on
@@ -55,7 +56,9 @@ std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& lig
                 tests.push_back({i, SphereTest::Robust});
             }
         } else {
-            tests.push_back({i, sphereTestFor(std::get<Sphere>(scene.nodes[i].geometry), light.position, formulation)});
+            const Sphere& sphere = std::get<Sphere>(scene.nodes[i].geometry);
+            tests.push_back({i, sphereTestFor(sphere, light.position, formulation, kFastMaxShadowOutside),
+                             glm::length(light.position - sphere.center) > sphere.radius});
         }
     }
     return tests;
@@ -77,7 +80,8 @@ SceneCode sceneCodeFor(const Scene& scene, const RenderPlan& plan) {
         nodeCode.shader = shaderKind(scene.shaders[node.shaderIndex]);
         if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
             nodeCode.geometry = gpu::GEOMETRY_SPHERE;
-            nodeCode.sphereTest = sphereTestFor(*sphere, eye, plan.formulation);
+            nodeCode.sphereTest =
+                sphereTestFor(*sphere, eye, plan.formulation, std::numeric_limits<double>::infinity());
             nodeCode.cameraOutside =
                 plan.formulation == Formulation::Robust && glm::length(sphere->center - eye) > sphere->radius;
         } else {
@@ -112,9 +116,16 @@ SceneLayout chooseLayout(const Scene& scene, Acceleration acceleration, const De
 
 }  // namespace
 
-Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device) {
+Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device,
+                           std::vector<std::string>* warnings) {
     if (requested == Precision::Auto) {
         return choosePrecision(scene, device.float64);
+    }
+    if (const auto problem = float32RangeProblem(scene); problem && requested == Precision::F32 && device.float64) {
+        if (warnings) {
+            warnings->push_back("float32 cannot hold this scene (" + *problem + "); rendering in f64 instead");
+        }
+        return Precision::F64;
     }
     if (requested == Precision::F64 && !device.float64) {
         throw VulkanError(VulkanFailure::NoFloat64,
@@ -129,8 +140,13 @@ bool isSmallScene(const Scene& scene) {
 }
 
 double placementScale(const Scene& scene) {
-    const double largest = estimateConditioning(scene).largestDistance;
-    return largest > 0 && std::isfinite(largest) ? std::exp2(std::round(std::log2(largest))) : 1.0;
+    // The power of two nearest the geometric middle of the scene's lengths: the squares of the
+    // smallest and the largest then stay equally far inside the number range, and an object far out
+    // of view moves the scale by the square root of its distance only (a power of two: no visible
+    // pixel changes, as long as the range fits; see float32RangeProblem).
+    const MagnitudeRange range = sceneMagnitudes(scene);
+    return range.smallest > 0 ? std::exp2(std::round(0.5 * (std::log2(range.smallest) + std::log2(range.largest))))
+                              : 1.0;
 }
 
 Placement placementFor(const Scene& scene, Formulation formulation) {
@@ -142,7 +158,7 @@ Placement placementFor(const Scene& scene, Formulation formulation) {
 
 RenderPlan planRender(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device) {
     RenderPlan plan;
-    plan.precision = resolvePrecision(scene, request.precision, device);
+    plan.precision = resolvePrecision(scene, request.precision, device, &plan.warnings);
     plan.width = plan.precision == Precision::F64 ? FloatWidth::F64 : FloatWidth::F32;
     plan.formulation = plan.precision == Precision::F32Naive ? Formulation::Textbook : Formulation::Robust;
     plan.placement = placementFor(scene, plan.formulation);

@@ -28,9 +28,10 @@ enum class Formulation { Textbook, Robust };
 
 // Where world coordinates go before they are rounded to the shader's floats.
 struct Placement {
-    // Camera-relative: subtract the eye in double and divide every length by `scale` (a power of
-    // two, so both steps are exact): far-off scenes lose no precision, and very large or very
-    // small ones neither overflow nor underflow. Otherwise world coordinates as given.
+    // Camera-relative: subtract the eye in double and divide every length by `scale`, a power of
+    // two near the geometric middle of the scene's lengths (placementScale), so both steps are
+    // exact: far-off scenes lose no precision, and very large or very small ones neither overflow
+    // nor underflow. Otherwise world coordinates as given.
     bool cameraRelative = true;
     glm::dvec3 origin{0.0};  // the world point placed at 0: the eye, or 0
     double scale = 1.0;
@@ -69,6 +70,7 @@ struct NodeCode {
 struct ShadowTest {
     std::uint32_t node = 0;
     SphereTest sphereTest = SphereTest::Robust;  // spheres only
+    bool lightOutside = true;                    // spheres: the light lies outside the sphere
 };
 
 // A kernel written for one scene's structure (host/gpu/kernel_generator.h): the node tests
@@ -115,14 +117,17 @@ struct RenderPlan {
     SceneLayout layout = SceneLayout::Uniform;
     std::shared_ptr<const Bvh> bvh;  // StorageBvh only: the tree the kernel walks
     Kernel kernel;
+    std::vector<std::string> warnings;  // what `render` tells the user: a precision overruled
 };
 
 // Decides everything about how the GPU renders `scene`. Throws VulkanError (NoFloat64) for
 // Precision::F64 on a device without float64.
 RenderPlan planRender(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device);
 
-// The precision planRender chooses (never Auto); throws like it.
-Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device);
+// The precision planRender chooses (never Auto); throws like it. f32 asked for a scene whose
+// lengths float32 cannot hold (float32RangeProblem) becomes f64, with a warning in `warnings`.
+Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device,
+                           std::vector<std::string>* warnings = nullptr);
 
 // The placement a precision uses for a scene: camera-relative and rescaled, or world
 // coordinates as given (f32-naive).

@@ -31,6 +31,19 @@ inline constexpr std::uint32_t kMaxImageDimension = 16384;
 inline constexpr std::uint32_t kMaxSamplesPerPixel = 1024;
 inline constexpr std::uint64_t kMaxImageSamples = std::uint64_t{1} << 32;  // width x height x spp
 
+// The supported range, checked at load time: every length (a coordinate, plane height, radius or
+// checker size) is 0 or has a magnitude in [kMinSceneLength, kMaxSceneLength] (radii and checker
+// sizes are never 0); a light's intensity (an irradiance at distance 1, so a length squared) is 0 or
+// in [kMinIntensity, kMaxIntensity]; colour components are at most kMaxColorComponent.
+// Within it no difference, square or product of two lengths over- or underflows a double, and the
+// scene's dynamic range fits the GPU's float64 (and float32 when it is below 2^100, see
+// host/gpu/precision.h).
+inline constexpr double kMinSceneLength = 1e-50;
+inline constexpr double kMaxSceneLength = 1e50;
+inline constexpr double kMinIntensity = 1e-100;
+inline constexpr double kMaxIntensity = 1e100;
+inline constexpr double kMaxColorComponent = 1e10;
+
 struct CameraSettings {
     glm::dvec3 position{0.0};
     double yawDegrees = 0.0;    // + turns the view toward -X

@@ -235,6 +235,25 @@ public:
         fail("unknown value " + quoted(name) + " (allowed: " + joined(names) + ")");
     }
 
+    // A length (a coordinate, height, radius or size) within the supported range (scene.h).
+    double length(bool mayBeZero = true) const {
+        const double value = number(mayBeZero ? Bounds{} : kPositive);
+        return checkSupported(value, mayBeZero, kMinSceneLength, kMaxSceneLength, "lengths");
+    }
+
+    // A light's intensity: an irradiance at distance 1, so the square of a length.
+    double intensity() const {
+        const double value = number(kNonNegative);
+        return checkSupported(value, true, kMinIntensity, kMaxIntensity, "intensities");
+    }
+
+    // A point: three lengths.
+    glm::dvec3 position() const {
+        vec3();  // the shape and finiteness first, with their own messages
+        const std::vector<JsonReader> xyz = elements();
+        return {xyz[0].length(), xyz[1].length(), xyz[2].length()};
+    }
+
     glm::dvec3 vec3() const {
         if (!value_.is_array() || value_.size() != 3) failType("an array of 3 numbers [x, y, z]");
         const std::vector<JsonReader> xyz = elements();
@@ -256,6 +275,11 @@ public:
                     JsonReader(component, source_, elementPath(path_, i))
                         .fail("colour component must be a finite number >= 0 (got " + describe(component) +
                               "); a colour is " + kForms);
+                }
+                if (component.get<double>() > kMaxColorComponent) {
+                    JsonReader(component, source_, elementPath(path_, i))
+                        .fail("colour component must be at most " + formatNumber(kMaxColorComponent) +
+                              ", the supported range (got " + describe(component) + ")");
                 }
                 result[int(i)] = component.get<double>();
             }
@@ -289,6 +313,14 @@ private:
 
     [[noreturn]] void failType(const std::string& expected) const {
         fail("expected " + expected + " (got " + describe(value_) + ")");
+    }
+
+    double checkSupported(double value, bool mayBeZero, double min, double max, const std::string& what) const {
+        const double magnitude = std::fabs(value);
+        if ((mayBeZero && value == 0.0) || (magnitude >= min && magnitude <= max)) return value;
+        fail(std::string("must be ") + (mayBeZero ? "0 or " : "") + "between " + formatNumber(min) + " and " +
+             formatNumber(max) + " in magnitude, the supported range of " + what + " (got " + formatNumber(value) +
+             ")");
     }
 
     std::int64_t checkRange(std::int64_t value, std::int64_t min, std::int64_t max) const {
@@ -348,7 +380,7 @@ ImageSettings readImage(const JsonReader& image) {
 CameraSettings readCamera(const JsonReader& camera) {
     camera.rejectUnknownKeys({"position", "yaw", "pitch", "roll", "fov", "aspect"});
     CameraSettings settings;  // its defaults are the format's defaults
-    settings.position = camera.at("position").vec3();
+    settings.position = camera.at("position").position();
     settings.yawDegrees = camera.numberOr("yaw", settings.yawDegrees);
     settings.pitchDegrees = camera.numberOr("pitch", settings.pitchDegrees);
     settings.rollDegrees = camera.numberOr("roll", settings.rollDegrees);
@@ -360,9 +392,9 @@ CameraSettings readCamera(const JsonReader& camera) {
 PointLight readLight(const JsonReader& light) {
     light.rejectUnknownKeys({"position", "color", "intensity"});
     PointLight result;
-    result.position = light.at("position").vec3();
+    result.position = light.at("position").position();
     result.color = light.colourOr("color", result.color);
-    result.intensity = light.at("intensity").number(kNonNegative);
+    result.intensity = light.at("intensity").intensity();
     return result;
 }
 
@@ -371,7 +403,7 @@ Shader readShader(const JsonReader& shader) {
     if (type == ShaderType::Checker) {
         shader.rejectUnknownKeys({"type", "color1", "color2", "size"});
         return CheckerShader{shader.at("color1").colour(), shader.at("color2").colour(),
-                             shader.at("size").number(kPositive)};
+                             shader.at("size").length(false)};
     }
     shader.rejectUnknownKeys({"type", "color"});
     const Color color = shader.at("color").colour();
@@ -383,10 +415,10 @@ Geometry readGeometry(const JsonReader& geometry) {
     const GeometryType type = geometry.at("type").choice(kGeometryTypes);
     if (type == GeometryType::Plane) {
         geometry.rejectUnknownKeys({"type", "y"});
-        return Plane{geometry.at("y").number()};
+        return Plane{geometry.at("y").length()};
     }
     geometry.rejectUnknownKeys({"type", "center", "radius"});
-    return Sphere{geometry.at("center").vec3(), geometry.at("radius").number(kPositive)};
+    return Sphere{geometry.at("center").position(), geometry.at("radius").length(false)};
 }
 
 std::uint32_t readShaderReference(const JsonReader& reference, const std::vector<std::string>& shaderNames) {

@@ -118,6 +118,23 @@ TEST_F(CliTest, RenderInDoublePrecisionSaysSo) {
     EXPECT_NE(run.out.find("gpu f64"), std::string::npos) << run.out;
 }
 
+// A scene whose lengths span more than float32 can hold (a ratio beyond 2^100: a 1e-30 sphere
+// beside the lecture's): --precision f32 says so and renders in f64 instead, never silently wrong.
+TEST_F(CliTest, RenderWarnsAndUsesF64WhenFloat32CannotHoldTheScene) {
+    writeScene("wide.json", replaced(kGoodScene, R"("radius": 10}, "shader": "ball"})",
+                                     R"("radius": 10}, "shader": "ball"},
+                {"geometry": {"type": "sphere", "center": [5, 50, 0], "radius": 1e-30}, "shader": "ball"})"));
+    const RunResult run = hexray("render wide.json -o w.png --precision f32 --backend gpu");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("hexray: warning: float32 cannot hold this scene (its lengths span 1e-30 to"),
+              std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("a ratio beyond float32's 2^100); rendering in f64 instead"), std::string::npos) << run.err;
+    EXPECT_NE(run.out.find("gpu f64"), std::string::npos) << run.out;
+    const RunResult lecture =
+        hexray("render " + scene("lecture-demo.json") + " -o l.png --precision f32 --width 64 --height 48");
+    EXPECT_EQ(lecture.err.find("warning"), std::string::npos) << lecture.err;
+}
+
 TEST_F(CliTest, PrecisionWithTheCpuBackendIsRejected) {
     const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o d.png --backend cpu --precision f64");
     EXPECT_EQ(run.exitCode, 2);
@@ -329,6 +346,14 @@ INSTANTIATE_TEST_SUITE_P(
                  "bad.json: nodes[0].geometry.radius: must be > 0"},
         BadInput{"NegativeRadius", replaced(kGoodScene, "\"radius\": 10", "\"radius\": -3"), "",
                  "bad.json: nodes[0].geometry.radius: must be > 0"},
+        BadInput{"PlaneBeyondTheSupportedRange",
+                 replaced(kGoodScene, R"({"type": "sphere", "center": [-10, 60, 0], "radius": 10})",
+                          R"({"type": "plane", "y": 1e308})"),
+                 "", "bad.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 in magnitude, the supported "
+                 "range of lengths (got 1e+308)"},
+        BadInput{"RadiusBeyondTheSupportedRange", replaced(kGoodScene, "\"radius\": 10", "\"radius\": 1e308"), "",
+                 "bad.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 in magnitude, the supported "
+                 "range of lengths (got 1e+308)"},
         BadInput{"FovZero", replaced(kGoodScene, "\"fov\": 90", "\"fov\": 0"), "", "bad.json: camera.fov"},
         BadInput{"Fov180", replaced(kGoodScene, "\"fov\": 90", "\"fov\": 180"), "", "bad.json: camera.fov"},
         BadInput{"WidthZero", replaced(kGoodScene, "\"width\": 32", "\"width\": 0"), "", "bad.json: image.width"},

@@ -17,7 +17,17 @@ namespace invariant_detail {
 
 inline bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-inline bool validColour(const Color& c) { return finite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0; }
+inline bool validColour(const Color& c) {
+    return finite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0 && c.r <= kMaxColorComponent &&
+           c.g <= kMaxColorComponent && c.b <= kMaxColorComponent;
+}
+// The supported range of lengths (scene.h): 0 or a magnitude within [kMinSceneLength, kMaxSceneLength].
+inline bool supportedLength(double x) {
+    return x == 0.0 || (std::fabs(x) >= kMinSceneLength && std::fabs(x) <= kMaxSceneLength);
+}
+inline bool supportedPoint(const glm::dvec3& p) {
+    return supportedLength(p.x) && supportedLength(p.y) && supportedLength(p.z);
+}
 
 }  // namespace invariant_detail
 
@@ -36,6 +46,7 @@ inline std::optional<std::string> sceneInvariantViolation(const Scene& scene) {
 
     const CameraSettings& camera = scene.camera;
     if (!finite(camera.position)) return "camera.position not finite";
+    if (!supportedPoint(camera.position)) return "camera.position outside the supported range";
     if (!std::isfinite(camera.yawDegrees) || !std::isfinite(camera.pitchDegrees) ||
         !std::isfinite(camera.rollDegrees)) {
         return "camera angle not finite";
@@ -50,6 +61,10 @@ inline std::optional<std::string> sceneInvariantViolation(const Scene& scene) {
 
     for (const PointLight& light : scene.lights) {
         if (!finite(light.position)) return "light position not finite";
+        if (!supportedPoint(light.position)) return "light position outside the supported range";
+        if (light.intensity != 0.0 && !(light.intensity >= kMinIntensity && light.intensity <= kMaxIntensity)) {
+            return "light intensity outside the supported range";
+        }
         if (!validColour(light.color)) return "light colour invalid";
         if (!(std::isfinite(light.intensity) && light.intensity >= 0.0)) return "light intensity not finite and >= 0";
     }
@@ -65,6 +80,7 @@ inline std::optional<std::string> sceneInvariantViolation(const Scene& scene) {
         if (const auto* s = std::get_if<CheckerShader>(&shader)) {
             if (!validColour(s->color1) || !validColour(s->color2)) return "checker colour invalid";
             if (!(std::isfinite(s->size) && s->size > 0.0)) return "checker size not finite and > 0";
+            if (!supportedLength(s->size)) return "checker size outside the supported range";
         }
     }
 
@@ -73,9 +89,15 @@ inline std::optional<std::string> sceneInvariantViolation(const Scene& scene) {
         if (const auto* plane = std::get_if<Plane>(&node.geometry); plane && !std::isfinite(plane->height)) {
             return "plane height not finite";
         }
+        if (const auto* plane = std::get_if<Plane>(&node.geometry); plane && !supportedLength(plane->height)) {
+            return "plane height outside the supported range";
+        }
         if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
             if (!finite(sphere->center)) return "sphere centre not finite";
             if (!(std::isfinite(sphere->radius) && sphere->radius > 0.0)) return "sphere radius not finite and > 0";
+            if (!supportedPoint(sphere->center) || !supportedLength(sphere->radius)) {
+                return "sphere outside the supported range";
+            }
         }
         if (node.shaderIndex >= scene.shaders.size()) return "node shader index out of range";
     }

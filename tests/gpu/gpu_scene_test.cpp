@@ -24,17 +24,18 @@ gpu::GpuScene<float> packRelative(const Scene& scene) {
 
 TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
     const Scene scene = checkerPlaneAndBall({1, 60, -120});
-    // Farthest: the sphere, |(-11, 0, 120)| + 30 = 150.5, so lengths are divided by 2^7.
-    ASSERT_EQ(placementScale(scene), 128.0);
+    // Lengths from the checker's 20 to the sphere's far side |(-11, 0, 120)| + 30 = 150.5: their
+    // geometric middle, 54.9, rounds to 2^6.
+    ASSERT_EQ(placementScale(scene), 64.0);
     const gpu::GpuScene<float> packed = packRelative(scene);
     EXPECT_EQ(packed.frame.origin, glm::vec4(0));
     EXPECT_EQ(packed.nodes[0].kinds.x, gpu::GEOMETRY_PLANE);
-    EXPECT_EQ(packed.nodes[0].geometry.x, (15.0f - 60.0f) / 128);
+    EXPECT_EQ(packed.nodes[0].geometry.x, (15.0f - 60.0f) / 64);
     EXPECT_EQ(packed.nodes[1].kinds.x, gpu::GEOMETRY_SPHERE);
-    EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30) / 128.0f);
-    EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0) / 128.0f);
-    // 1/r^2 falloff in units 128 times larger: the power is 128^2 times smaller.
-    EXPECT_EQ(packed.lights[0].power, glm::vec4(5000, 10000, 10000, 0) / (128.0f * 128.0f));
+    EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30) / 64.0f);
+    EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0) / 64.0f);
+    // 1/r^2 falloff in units 64 times larger: the power is 64^2 times smaller.
+    EXPECT_EQ(packed.lights[0].power, glm::vec4(5000, 10000, 10000, 0) / (64.0f * 64.0f));
     EXPECT_EQ(packed.frame.nodeCount, 2u);
     EXPECT_EQ(packed.frame.lightCount, 1u);
 }

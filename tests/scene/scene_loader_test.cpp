@@ -427,6 +427,53 @@ TEST(SceneLoaderRejects, NonFiniteNumbers) {
               "test.json: ambient[2]: must be a finite number (got 2e400)");
 }
 
+// ---------------------------------------------------------------- the supported range (scene.h)
+
+TEST(SceneLoader, AcceptsLengthsAtTheEdgesOfTheSupportedRange) {
+    const Scene scene = parseScene(validSceneWith(R"("center": [0, 0, 0], "radius": 1)",
+                                                  R"("center": [1e50, -1e50, 1e-50], "radius": 1e-50)"),
+                                   "test.json");
+    const Sphere& sphere = std::get<Sphere>(scene.nodes[0].geometry);
+    EXPECT_EQ(sphere.center, glm::dvec3(1e50, -1e50, 1e-50));
+    EXPECT_EQ(sphere.radius, 1e-50);
+    EXPECT_EQ(parseScene(validSceneWith(R"("radius": 1)", R"("radius": 1e50)"), "t").nodes.size(), 1u);
+    EXPECT_EQ(parseScene(validSceneWith(R"("intensity": 100)", R"("intensity": 1e100)"), "t").lights[0].intensity,
+              1e100);
+    EXPECT_EQ(parseScene(validSceneWith(R"("intensity": 100)", R"("intensity": 1e-100)"), "t").lights[0].intensity,
+              1e-100);
+    EXPECT_EQ(parseScene(validSceneWith(R"("intensity": 100)", R"("intensity": 0)"), "t").lights[0].intensity, 0.0);
+    EXPECT_EQ(parseScene(validSceneWith(R"([1, 0, 0])", R"([1e10, 0, 0])"), "t").shaders.size(), 1u);
+}
+
+// Issue 12, finding 4: a plane at y = 1e308 and a radius of 1e308 were accepted, and rendered
+// wrong on both backends with exit 0.
+TEST(SceneLoaderRejects, LengthsBeyondTheSupportedRange) {
+    const std::string range = "in magnitude, the supported range of lengths";
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 1e308)"),
+              "test.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 " + range + " (got 1e+308)");
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 9.99e-51)"),
+              "test.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 " + range + " (got 9.99e-51)");
+    EXPECT_EQ(errorForChange(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})",
+                             R"({"type": "plane", "y": 1e308})"),
+              "test.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 " + range + " (got 1e+308)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -1.0000001e50])"),
+              "test.json: camera.position[2]: must be 0 or between 1e-50 and 1e+50 " + range + " (got -1.0000001e+50)");
+    EXPECT_EQ(errorForChange(R"("center": [0, 0, 0])", R"("center": [0, 1e-300, 0])"),
+              "test.json: nodes[0].geometry.center[1]: must be 0 or between 1e-50 and 1e+50 " + range +
+                  " (got 1e-300)");
+    EXPECT_EQ(errorForChange(R"("position": [0, 10, 0])", R"("position": [3.5e58, 10, 0])"),
+              "test.json: lights[0].position[0]: must be 0 or between 1e-50 and 1e+50 " + range + " (got 3.5e+58)");
+    EXPECT_EQ(errorForChange(R"({"type": "lambert", "color": [1, 0, 0]})",
+                             R"({"type": "checker", "color1": [1, 0, 0], "color2": "#000000", "size": 2e50})"),
+              "test.json: shaders.red.size: must be between 1e-50 and 1e+50 " + range + " (got 2e+50)");
+    EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("intensity": 1e101)"),
+              "test.json: lights[0].intensity: must be 0 or between 1e-100 and 1e+100 in magnitude, the supported "
+              "range of intensities (got 1e+101)");
+    EXPECT_EQ(errorForChange(R"([1, 0, 0])", R"([1, 2e10, 0])"),
+              "test.json: shaders.red.color[1]: colour component must be at most 10000000000, the supported range "
+              "(got number 20000000000)");
+}
+
 // ---------------------------------------------------------------- colours
 
 TEST(SceneLoaderRejects, BadHexColours) {
