@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
+  glslang-dev spirv-tools  # glslang as a library: generated kernels are compiled at run time
   libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
   clang-14 libclang-rt-14-dev  # the scene-loader fuzzer: clang with libFuzzer and its sanitizers

@@ -1,10 +1,18 @@
 // Tracing through the host-built BVH over the spheres (host/accel/bvh.h, packed by
-// host/gpu/gpu_scene.cpp), in the HEXRAY_BVH variant (storage-buffer scenes). Planes are
-// unbounded, so they stay out of the tree and are tested first.
-#ifdef HEXRAY_BVH
+// host/gpu/gpu_scene.cpp), in render.comp's HEXRAY_BVH variant (storage-buffer scenes). Planes
+// are unbounded, so they stay out of the tree and are tested first.
+#ifndef HEXRAY_BVH_GLSL
+#define HEXRAY_BVH_GLSL
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
+
+#include "node_tests.glsl"
+#include "render_outputs.glsl"
+#include "precision.glsl"
+#include "ray.glsl"
+#include "scene_data.glsl"
+#include "shader_interface.h"
 
 struct BvhNode {
     vec3r boundsMin;
@@ -12,20 +20,19 @@ struct BvhNode {
     vec3r boundsMax;
     uint count;               // leaf: number of spheres; interior: 0 (its first child is the next node)
 };
-layout(std430, set = 0, binding = 6) readonly buffer BvhBlock {
+layout(std430, set = 0, binding = BVH_BINDING) readonly buffer BvhBlock {
     BvhNode bvhNodes[];
 };
 // Scene node indices: frame.planeCount planes, then the spheres in leaf order.
-layout(std430, set = 0, binding = 7) readonly buffer PrimitiveBlock {
+layout(std430, set = 0, binding = PRIMITIVE_BINDING) readonly buffer PrimitiveBlock {
     uint primitiveNodes[];
 };
 
-const uint BVH_STACK_SIZE = 64u;  // kBvhStackSize: the host uploads no deeper tree
 // One traversal stack per subgroup, in workgroup memory: a private array indexed at run time
 // is lowered by lavapipe into code whose cost grows with the array's length. Every invocation
 // of a subgroup writes the same entries, and reads only what it wrote itself. Sized for
 // subgroups of one invocation, the worst case.
-shared uint bvhStack[gl_WorkGroupSize.x * gl_WorkGroupSize.y * BVH_STACK_SIZE];
+shared uint bvhStack[WORKGROUP_SIZE * WORKGROUP_SIZE * BVH_STACK_SIZE];
 // The slab test's own rounding can shrink a box's exit distance by a few units of roundoff
 // (Ize, "Robust BVH ray traversal"); stretching it by this factor keeps grazing rays inside.
 const real BOX_EXIT_STRETCH = 1.0 + 8.0 * UNIT_ROUNDOFF;
@@ -46,11 +53,6 @@ bool entersBox(uint index, Ray ray, vec3r inverse, real limit, out real entry) {
     entry = max(max(near.x, near.y), max(near.z, 0.0));
     real exit = min(min(far.x, far.y), far.z) * BOX_EXIT_STRETCH;
     return entry <= min(exit, limit);
-}
-
-real sphereDistance(Ray ray, uint node, real power) {
-    vec4r geometry = nodes[node].geometry;
-    return intersectSphere(ray, geometry.xyz, geometry.w, power);
 }
 
 // Walks the tree nearest child first, one subgroup (lavapipe: 8 neighbouring pixels) at a
@@ -77,7 +79,7 @@ bool traverseBvh(Ray ray, bool anyHit, bool powerFromHost, inout Hit hit) {
                     real power = powerFromHost
                                      ? nodes[node].surface.x
                                      : originPower(ray.origin - nodes[node].geometry.xyz, nodes[node].geometry.w);
-                    real t = sphereDistance(ray, node, power);
+                    real t = sphereNodeDistance(ray, node, power);
                     // On an exact tie the lower node index keeps the hit, as the course specifies
                     // ("the earlier node"), whatever order the tree visits them in. A shadow ray's
                     // limit is the light: only what is strictly nearer blocks it.
@@ -130,7 +132,7 @@ Hit findNearestHitInBvh(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
     for (uint k = 0u; k < frame.planeCount; ++k) {
         uint node = primitiveNodes[k];
-        real t = intersectPlane(ray, nodes[node].geometry.x);
+        real t = planeNodeDistance(ray, node);
         if (t < hit.t) {  // planes come in scene order: strict < keeps the earlier on a tie
             hit = Hit(t, node);
         }
@@ -149,4 +151,4 @@ bool isOccludedInBvh(Ray ray, vec3r target, real distance) {
     return traverseBvh(ray, true, false, blocker);
 }
 
-#endif
+#endif  // HEXRAY_BVH_GLSL

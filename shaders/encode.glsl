@@ -1,5 +1,9 @@
 // The 8-bit output, as host/image/image_io.cpp's encodeChannel computes it: clamp to [0, 1],
 // the sRGB transfer function unless the scene asks for linear output, round to nearest.
+#ifndef HEXRAY_ENCODE_GLSL
+#define HEXRAY_ENCODE_GLSL
+
+#include "render_outputs.glsl"
 
 uint encode8(vec3 linear) {
     vec3 c = clamp(linear, 0.0, 1.0);
@@ -9,3 +13,5 @@ uint encode8(vec3 linear) {
     uvec3 level = uvec3(floor(c * 255.0 + 0.5));
     return level.r | (level.g << 8) | (level.b << 16) | 0xff000000u;
 }
+
+#endif  // HEXRAY_ENCODE_GLSL

@@ -1,12 +1,17 @@
 // Inspection outputs (host/gpu/gpu_layout.h, "Inspection"): per-pixel AOVs for `render --aov`,
-// and a trace of one pixel for `hexray pixel`. Included before shading.glsl, whose hooks call
-// traceSurface and traceLight; both compile away unless OUTPUT_MODE asks for a trace.
+// and a trace of one pixel for `hexray pixel`. traceSurface and traceLight are called while
+// shading; both compile away unless OUTPUT_MODE asks for a trace.
+#ifndef HEXRAY_INSPECT_HOOKS_GLSL
+#define HEXRAY_INSPECT_HOOKS_GLSL
 
-const uint OUTPUT_LINEAR_CLASSES_AND_AOV = 3u;
-const uint OUTPUT_TRACE = 4u;
+#include "precision.glsl"
+#include "render_outputs.glsl"
+#include "scene_data.glsl"
+#include "shader_interface.h"
+#include "surface.glsl"
 
 // .xyz shading normal, .w hit t (shader units); zero for the background.
-layout(std430, set = 0, binding = 8) writeonly buffer AovBlock {
+layout(std430, set = 0, binding = AOV_BINDING) writeonly buffer AovBlock {
     vec4 aovs[];
 };
 
@@ -26,18 +31,13 @@ struct TraceHeader {
 struct TraceEntry {
     vec4r values;  // node: .x t; light: cos theta, r^2, shadow ray length
     vec4 color;    // light: contribution
-    uvec4 status;  // node: .x geometry kind; light: .x TraceLightStatus
+    uvec4 status;  // node: .x geometry kind; light: .x a TRACE_LIGHT_ status
 };
 
-layout(std430, set = 0, binding = 9) buffer TraceBlock {
+layout(std430, set = 0, binding = TRACE_BINDING) buffer TraceBlock {
     TraceHeader header;
-    TraceEntry entries[];  // nodeCount() candidates, then lightCount() lights
+    TraceEntry entries[];  // frame.nodeCount candidates, then frame.lightCount lights
 } trace;
-
-const uint TRACE_LIGHT_LIT = 1u;
-const uint TRACE_LIGHT_FACING_AWAY = 2u;
-const uint TRACE_LIGHT_SHADOWED = 3u;
-const uint TRACE_LIGHT_AT_POINT = 4u;
 
 // True only while the traced sample is being shaded.
 bool traceActive = false;
@@ -57,9 +57,11 @@ void traceSurface(Surface s, vec3 albedo) {
 
 void traceLight(uint light, uint status, real cosTheta, real r2, real shadowLength, vec3 contribution) {
     if (tracing()) {
-        uint entry = nodeCount() + light;
+        uint entry = frame.nodeCount + light;
         trace.entries[entry].values = vec4r(cosTheta, r2, shadowLength, 0.0);
         trace.entries[entry].color = vec4(contribution, 0.0);
         trace.entries[entry].status = uvec4(status, 0u, 0u, 0u);
     }
 }
+
+#endif  // HEXRAY_INSPECT_HOOKS_GLSL

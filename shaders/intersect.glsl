@@ -1,13 +1,22 @@
-// Ray/plane and ray/sphere intersection.
+// Ray/plane and ray/sphere intersection: the robust forms, the textbook ones (f32-naive), and a
+// fast form for spheres whose conditioning does not need the robust one (host/gpu/render_plan.h
+// decides which node gets which).
+#ifndef HEXRAY_INTERSECT_GLSL
+#define HEXRAY_INTERSECT_GLSL
+
+#include "precision.glsl"
+#include "ray.glsl"
 
 // The plane y = height. A ray parallel to it (d.y = +-0) misses; so does any non-finite t.
-real intersectPlane(Ray ray, real height) {
+real planeDistance(Ray ray, real height) {
     real t = (height - ray.origin.y) / ray.direction.y;
-#ifdef HEXRAY_NAIVE
-    return t > 0.0 ? t : NO_HIT;  // textbook: +-inf and NaN slip through
-#else
     return (ray.direction.y != 0.0 && t > 0.0 && !isinf(t)) ? t : NO_HIT;  // NaN fails t > 0
-#endif
+}
+
+// The textbook plane test: +-inf and NaN slip through.
+real planeDistanceTextbook(Ray ray, real height) {
+    real t = (height - ray.origin.y) / ray.direction.y;
+    return t > 0.0 ? t : NO_HIT;
 }
 
 // The power of a point with respect to a sphere, |f|^2 - r^2 for f = point - centre, as a
@@ -29,24 +38,11 @@ real sphereDiscriminant(real b, real lineDistance, real radius, real power) {
     return powerIsTighter ? fromPower : fromLine;
 }
 
-// Nearest t > 0 on the sphere, or NO_HIT (the far root when the ray starts inside).
-// `power` is originPower of the ray's origin.
-real intersectSphere(Ray ray, vec3r center, real radius, real power) {
+// Nearest t > 0 on the sphere, or NO_HIT (the far root when the ray starts inside). `power` is
+// originPower of the ray's origin. Straight-line code (no early returns): lavapipe runs every
+// path anyway, and a return from inside a branch costs it extra bookkeeping.
+real sphereDistance(Ray ray, vec3r center, real radius, real power) {
     vec3r f = ray.origin - center;
-    // Straight-line code (no early returns): lavapipe runs every path anyway, and a return
-    // from inside a branch costs it extra bookkeeping.
-#ifdef HEXRAY_NAIVE
-    // Textbook b^2 - 4ac: both terms are about |f|^2 and cancel for small or distant spheres;
-    // (-b - sqrt)/2a cancels for rays starting near the surface.
-    real a = dot(ray.direction, ray.direction);
-    real b = 2.0 * dot(f, ray.direction);
-    real c = dot(f, f) - radius * radius;
-    real discriminant = b * b - 4.0 * a * c;
-    real root = sqrt(max(discriminant, 0.0));
-    real near = (-b - root) / (2.0 * a);
-    real far = (-b + root) / (2.0 * a);
-    bool meets = discriminant >= 0.0;
-#else
     // The discriminant in its more accurate form for this ray; the roots come from the stable
     // pair q and c/q, so neither is a difference of nearly equal numbers.
     real b = dot(f, ray.direction);
@@ -57,9 +53,70 @@ real intersectSphere(Ray ray, vec3r center, real radius, real power) {
     real near = min(power / q, q);
     real far = max(power / q, q);
     bool meets = discriminant >= 0.0 && q != 0.0;  // q = 0: tangent at the origin itself
-#endif
     real t = near > 0.0 ? near : far;
     return (meets && t > 0.0) ? t : NO_HIT;
+}
+
+// The fast form for a ray whose origin is well away from the sphere's surface (outside by a
+// quarter of the radius, or inside within half of it; see render_plan.cpp): the Hearn-Baker
+// discriminant r^2 - |l|^2, whose error is that of l itself (a difference of vectors, never of
+// squares of the distance), and the root itself, which then is a sum of terms that do not cancel.
+real sphereDistanceFast(Ray ray, vec3r center, real radius) {
+    vec3r f = ray.origin - center;
+    real b = dot(f, ray.direction);
+    vec3r l = f - b * ray.direction;
+    real discriminant = radius * radius - dot(l, l);
+    real root = sqrt(max(discriminant, 0.0));
+    real near = -b - root;
+    real t = near > 0.0 ? near : root - b;
+    return (discriminant >= 0.0 && t > 0.0) ? t : NO_HIT;
+}
+
+// Textbook b^2 - 4ac (f32-naive): both terms are about |f|^2 and cancel for small or distant
+// spheres; (-b - sqrt)/2a cancels for rays starting near the surface.
+real sphereDistanceTextbook(Ray ray, vec3r center, real radius) {
+    vec3r f = ray.origin - center;
+    real a = dot(ray.direction, ray.direction);
+    real b = 2.0 * dot(f, ray.direction);
+    real c = dot(f, f) - radius * radius;
+    real discriminant = b * b - 4.0 * a * c;
+    real root = sqrt(max(discriminant, 0.0));
+    real near = (-b - root) / (2.0 * a);
+    real far = (-b + root) / (2.0 * a);
+    real t = near > 0.0 ? near : far;
+    return (discriminant >= 0.0 && t > 0.0) ? t : NO_HIT;
+}
+
+// Whether the sphere's surface crosses the segment from a ray's origin to `segmentLength` along
+// its unit `direction`, strictly inside it. `f` is the origin minus the centre and `power` the
+// origin's power |f|^2 - r^2, both the same for every pixel when the origin is a light. Robust:
+// the discriminant and roots as in sphereDistance.
+bool sphereCrossesSegment(vec3r f, real radius, real power, vec3r direction, real segmentLength) {
+    real b = dot(f, direction);
+    real lineDistance = length(f - b * direction);
+    real discriminant = sphereDiscriminant(b, lineDistance, radius, power);
+    real root = sqrt(max(discriminant, 0.0));
+    real q = -b - (b >= 0.0 ? root : -root);
+    real first = power / q;
+    bool crossesAt = (first > 0.0 && first < segmentLength) || (q > 0.0 && q < segmentLength);
+    return discriminant >= 0.0 && q != 0.0 && crossesAt;
+}
+
+// The same from an origin well away from the surface and at most a few tens of radii away (see
+// render_plan.cpp), in the cheapest form: b^2 - power, with the power from the host in double. From
+// outside, both roots lie on one side of the origin and the segment meets the sphere when the near
+// one lies inside it; from inside, the far root is the only one ahead.
+bool sphereCrossesSegmentFromOutside(vec3r f, real power, vec3r direction, real segmentLength) {
+    real b = dot(f, direction);
+    real discriminant = b * b - power;
+    real near = -b - sqrt(max(discriminant, 0.0));
+    return discriminant >= 0.0 && near > 0.0 && near < segmentLength;
+}
+
+bool sphereCrossesSegmentFromInside(vec3r f, real power, vec3r direction, real segmentLength) {
+    real b = dot(f, direction);
+    real far = sqrt(b * b - power) - b;  // power < 0: the discriminant is positive
+    return far < segmentLength;
 }
 
 // A plane blocks a segment exactly when its ends lie strictly on opposite sides: no division,
@@ -70,23 +127,4 @@ bool planeSeparates(real height, vec3r origin, vec3r target) {
     return (originSide < 0.0 && targetSide > 0.0) || (originSide > 0.0 && targetSide < 0.0);
 }
 
-// Distance along a camera ray to node i. Camera rays all start at the eye, whose power with
-// respect to each sphere the host computed.
-real cameraRayDistance(Ray ray, uint i) {
-    vec4r geometry = nodes[i].geometry;
-    return isPlane(i) ? intersectPlane(ray, geometry.x)
-                      : intersectSphere(ray, geometry.xyz, geometry.w, nodes[i].surface.x);
-}
-
-// Whether node i lies on the segment from the ray's origin to `target`, `distance` away.
-bool blocksSegment(Ray ray, uint i, vec3r target, real distance) {
-    vec4r geometry = nodes[i].geometry;
-    if (isPlane(i)) {
-#ifdef HEXRAY_NAIVE
-        return intersectPlane(ray, geometry.x) < distance;
-#else
-        return planeSeparates(geometry.x, ray.origin, target);
-#endif
-    }
-    return intersectSphere(ray, geometry.xyz, geometry.w, originPower(ray.origin - geometry.xyz, geometry.w)) < distance;
-}
+#endif  // HEXRAY_INTERSECT_GLSL

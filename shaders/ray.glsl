@@ -1,4 +1,9 @@
 // Rays and the hits along them.
+#ifndef HEXRAY_RAY_GLSL
+#define HEXRAY_RAY_GLSL
+
+#include "shader_interface.h"
+#include "precision.glsl"
 
 struct Ray {
     vec3r origin;
@@ -12,3 +17,5 @@ struct Hit {
     real t;
     uint node;
 };
+
+#endif  // HEXRAY_RAY_GLSL

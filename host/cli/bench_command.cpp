@@ -10,11 +10,11 @@
 #include <sstream>
 #include <thread>
 
+#include "bench/lecture_demo_ceiling.h"
 #include "cli/command_support.h"
 #include "compare/compare.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
-#include "gpu/lecture_demo_ceiling.h"
 #include "image/image_io.h"
 #include "io/output_file.h"
 #include "scene/random_spheres.h"
@@ -41,7 +41,7 @@ std::string formatSeconds(double seconds) {
     return text;
 }
 
-// GpuCeiling: the lecture demo scene's hand-written kernel (GpuRenderer::renderLectureDemoCeiling),
+// GpuCeiling: the lecture demo scene's hand-written kernel (bench/lecture_demo_ceiling.h),
 // the yardstick for the data-driven shader on the same device.
 enum class BenchBackend { Gpu, GpuCeiling, Cpu, Embree };
 
@@ -152,7 +152,9 @@ public:
                     measurement.classes = gpu_.render(scene, configuration.precision).classes;
                 }
                 return;
-            case BenchBackend::GpuCeiling: recordDevice(gpu_.renderLectureDemoCeiling(scene)); return;
+            case BenchBackend::GpuCeiling:
+                recordDevice(gpu_.render(scene, lectureDemoCeilingPlan(gpu_, scene), GpuOutput::Encoded8));
+                return;
             case BenchBackend::Cpu: {
                 CpuRender render = renderOnCpu(scene);
                 measurement.renderMilliseconds.push_back(millisecondsSince(start));

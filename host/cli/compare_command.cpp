@@ -211,7 +211,7 @@ BandedComparison compareInBands(GpuRenderer& renderer, const Scene& scene, Preci
     double cpuMilliseconds = 0;
     const Encoding encoding = scene.image.encoding;
     const GpuRenderResult gpu = renderer.renderLinearRows(
-        scene, requested, aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses,
+        scene, renderer.plan(scene, {requested}), aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses,
         [&](std::uint32_t firstRow, const GpuRenderResult& band) {
             const auto start = std::chrono::steady_clock::now();
             reference.render(firstRow, band.image.height, cpu);

@@ -60,22 +60,22 @@ bool levelsDiffer(const glm::dvec3& a, const glm::dvec3& b, Encoding encoding) {
 
 const char* lightStatus(std::uint32_t status) {
     switch (status) {
-        case gpu::kTraceLightLit: return "lit";
-        case gpu::kTraceLightFacingAway: return "facing away";
-        case gpu::kTraceLightShadowed: return "shadowed";
-        case gpu::kTraceLightAtPoint: return "at the point";
+        case gpu::TRACE_LIGHT_LIT: return "lit";
+        case gpu::TRACE_LIGHT_FACING_AWAY: return "facing away";
+        case gpu::TRACE_LIGHT_SHADOWED: return "shadowed";
+        case gpu::TRACE_LIGHT_AT_POINT: return "at the point";
         default: return "not evaluated";
     }
 }
 
 std::uint32_t statusOf(LightReach reach) {
     switch (reach) {
-        case LightReach::Lit: return gpu::kTraceLightLit;
-        case LightReach::FacingAway: return gpu::kTraceLightFacingAway;
-        case LightReach::Shadowed: return gpu::kTraceLightShadowed;
-        case LightReach::AtPoint: return gpu::kTraceLightAtPoint;
+        case LightReach::Lit: return gpu::TRACE_LIGHT_LIT;
+        case LightReach::FacingAway: return gpu::TRACE_LIGHT_FACING_AWAY;
+        case LightReach::Shadowed: return gpu::TRACE_LIGHT_SHADOWED;
+        case LightReach::AtPoint: return gpu::TRACE_LIGHT_AT_POINT;
     }
-    return gpu::kTraceLightNotEvaluated;
+    return gpu::TRACE_LIGHT_NOT_EVALUATED;
 }
 
 const char* kindName(const Geometry& geometry) {
@@ -232,8 +232,8 @@ int runPixel(const PixelOptions& options) {
                 const LightTerm cl =
                     i < c.lights.size() ? c.lights[i] : LightTerm{{LightReach::AtPoint, 0, 0}, Color(0)};
                 const std::uint32_t cpuStatus = i < c.lights.size() ? statusOf(cl.decision.reach) : 0;
-                const bool gpuEvaluated = gl.status != gpu::kTraceLightNotEvaluated;
-                const bool cpuEvaluated = cpuStatus != gpu::kTraceLightNotEvaluated;
+                const bool gpuEvaluated = gl.status != gpu::TRACE_LIGHT_NOT_EVALUATED;
+                const bool cpuEvaluated = cpuStatus != gpu::TRACE_LIGHT_NOT_EVALUATED;
                 table.row(format("light %zu", i), lightStatus(gl.status), lightStatus(cpuStatus), gl.status != cpuStatus);
                 if (!gpuEvaluated && !cpuEvaluated) {
                     continue;

@@ -12,28 +12,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+#include "shader_interface.h"  // the constants both sides agree on
+
 namespace hexray::gpu {
-
-// Local size of render.comp in x and y, passed as specialization constants 0 and 1.
-inline constexpr std::uint32_t kWorkgroupSize = 8;
-
-// Descriptor bindings of set 0.
-inline constexpr std::uint32_t kFrameBinding = 0;
-inline constexpr std::uint32_t kNodeBinding = 1;
-inline constexpr std::uint32_t kLightBinding = 2;
-inline constexpr std::uint32_t kPixelBinding = 3;
-inline constexpr std::uint32_t kClassBinding = 4;
-inline constexpr std::uint32_t kEncodedBinding = 5;
-// Scenes traced through a BVH (the storage-buffer layout): its nodes, and the scene nodes it
-// refers to.
-inline constexpr std::uint32_t kBvhBinding = 6;
-inline constexpr std::uint32_t kPrimitiveBinding = 7;
-// The inspection outputs (shaders/inspect*.glsl); 6 and 7 are left to the scene's BVH.
-inline constexpr std::uint32_t kAovBinding = 8;
-inline constexpr std::uint32_t kTraceBinding = 9;
-
-enum GeometryKind : std::uint32_t { kGeometryPlane = 0, kGeometrySphere = 1 };
-enum ShaderKind : std::uint32_t { kShaderConstant = 0, kShaderLambert = 1, kShaderChecker = 2 };
 
 template <typename Real>
 struct alignas(4 * sizeof(Real)) RealVec4 : glm::vec<4, Real> {
@@ -60,7 +41,7 @@ struct GpuFrame {
 // A node carries its own copy of its shader's parameters: one fetch per candidate, no indirection.
 template <typename Real>
 struct GpuNode {
-    glm::uvec4 kinds;         // .x GeometryKind, .y ShaderKind
+    glm::uvec4 kinds;         // .x GEOMETRY_*, .y SHADER_*
     RealVec4<Real> geometry;  // plane: .x = height; sphere: .xyz = centre, .w = radius
     // Sphere: .x = |eye - centre|^2 - r^2, the eye's power with respect to the sphere, which
     // every camera ray needs and float cannot form when the eye is close to a large sphere.
@@ -90,10 +71,6 @@ struct alignas(4 * sizeof(Real)) GpuBvhNode {
     std::uint32_t count;  // leaf: number of spheres (> 0); interior: 0
 };
 
-// The shader's traversal stack: a BVH deeper than this is not uploaded (the scene is then
-// traced without one).
-inline constexpr std::uint32_t kBvhStackSize = 64;
-
 // Which rows of the image one dispatch covers (large images render in bands): push constants.
 struct GpuBand {
     std::uint32_t firstRow;
@@ -109,33 +86,15 @@ using GpuPixelClass = glm::uvec2;
 // One encoded output pixel: RGBA8, R in the lowest byte.
 using GpuEncodedPixel = std::uint32_t;
 
-// A small scene (at most kSmallSceneCapacity nodes and as many lights) is uploaded in uniform
-// buffers of that many entries and gets a fully specialized pipeline; a larger one uses
-// storage buffers and the data-driven loops (shaders/scene_data.glsl, specialization.glsl).
-inline constexpr std::size_t kSmallSceneCapacity = 32;
+// The specialization constants every kernel takes (shaders/render_outputs.glsl), in id order.
+struct Specialization {
+    std::uint32_t outputMode = OUTPUT_LINEAR_AND_CLASSES;  // OUTPUT_MODE_ID
+    std::uint32_t samplesPerPixel = 1;                      // SAMPLES_PER_PIXEL_ID
 
-// Specialization constants 2 to 8 of render.comp (shaders/specialization.glsl), in id order:
-// what the pipeline is built for. A small scene gets loops the compiler unrolls and no
-// branches for kinds it does not use.
-inline constexpr std::uint32_t kDynamic = 0xffffffffu;
-inline constexpr std::uint32_t kOutputLinearAndClasses = 0;  // pixels and classes buffers
-inline constexpr std::uint32_t kOutput8BitLinear = 1;        // the encoded buffer
-inline constexpr std::uint32_t kOutput8BitSrgb = 2;
-inline constexpr std::uint32_t kOutputLinearClassesAndAov = 3;  // pixels, classes and the AOV buffer
-inline constexpr std::uint32_t kOutputTrace = 4;  // one pixel explained into the trace buffer
-
-struct ShaderSpecialization {
-    std::uint32_t nodeCount = kDynamic;  // kDynamic: read from the frame, kinds from the nodes
-    std::uint32_t lightCount = kDynamic;
-    std::uint32_t sphereNodes = 0;    // bit i: node i is a sphere (else a plane)
-    std::uint32_t constantNodes = 0;  // bit i: node i is constant-shaded
-    std::uint32_t checkerNodes = 0;   // bit i: node i is checker-shaded
-    std::uint32_t outputMode = kOutputLinearAndClasses;
-    std::uint32_t samplesPerPixel = 1;
-
-    auto operator<=>(const ShaderSpecialization&) const = default;
+    auto operator<=>(const Specialization&) const = default;
 };
-static_assert(sizeof(ShaderSpecialization) == 7 * sizeof(std::uint32_t));
+static_assert(offsetof(Specialization, outputMode) == OUTPUT_MODE_ID * sizeof(std::uint32_t));
+static_assert(offsetof(Specialization, samplesPerPixel) == SAMPLES_PER_PIXEL_ID * sizeof(std::uint32_t));
 
 // --- std430 offsets, float variant
 static_assert(offsetof(GpuFrame<float>, origin) == 0);
@@ -200,15 +159,6 @@ static_assert(sizeof(GpuBvhNode<double>) == 64);
 // Both 0 for the background; the node and lit lights are in the classes buffer.
 using GpuAovPixel = glm::vec4;
 
-// How the shader treated one light at the traced sample (GpuTraceEntry::status.x).
-enum TraceLightStatus : std::uint32_t {
-    kTraceLightNotEvaluated = 0,  // background or a constant shader: lights do not apply
-    kTraceLightLit = 1,
-    kTraceLightFacingAway = 2,    // cos theta <= 0
-    kTraceLightShadowed = 3,
-    kTraceLightAtPoint = 4,       // r^2 = 0
-};
-
 // The trace buffer's fixed part. The host writes `request`; the shader fills the rest for that
 // pixel and sample, in its own units (see GpuAovPixel).
 template <typename Real>
@@ -227,7 +177,7 @@ struct GpuTraceHeader {
 
 // Then one entry per node (the candidates: values.x = t, or REAL_MAX for a miss) and one per
 // light (values = cos theta, r^2, shadow ray length; color.rgb = contribution; status.x a
-// TraceLightStatus).
+// TRACE_LIGHT_* status).
 template <typename Real>
 struct GpuTraceEntry {
     RealVec4<Real> values;

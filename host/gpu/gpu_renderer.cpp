@@ -14,24 +14,9 @@
 
 #include "gpu/gpu_layout.h"
 #include "gpu/gpu_scene.h"
-#include "gpu/lecture_demo_ceiling.h"
+#include "gpu/scene_constants.h"
 #include "util/milliseconds_since.h"
 #include "vulkan/host_visible_buffer.h"
-
-namespace {
-// SPIR-V generated from shaders/render.comp at build time, one array per precision variant
-// and scene storage.
-#include "kRenderF32BvhSpv.h"
-#include "kRenderF32NaiveBvhSpv.h"
-#include "kRenderF32NaiveStorageSpv.h"
-#include "kRenderF32NaiveUniformSpv.h"
-#include "kRenderF32StorageSpv.h"
-#include "kRenderF32UniformSpv.h"
-#include "kRenderF64BvhSpv.h"
-#include "kRenderF64StorageSpv.h"
-#include "kRenderF64UniformSpv.h"
-#include "kLectureDemoCeilingSpv.h"
-}  // namespace
 
 namespace hexray {
 namespace {
@@ -39,44 +24,19 @@ namespace {
 using gpu::GpuBand;
 using gpu::GpuPixel;
 using gpu::GpuPixelClass;
-using gpu::kWorkgroupSize;
+using gpu::WORKGROUP_SIZE;
 
-// Set 0's bindings: the storage-buffer layout adds the BVH's two.
-constexpr std::array<std::uint32_t, 10> kAllBindings = {
-    gpu::kFrameBinding,   gpu::kNodeBinding,    gpu::kLightBinding, gpu::kPixelBinding, gpu::kClassBinding,
-    gpu::kEncodedBinding, gpu::kAovBinding,     gpu::kTraceBinding, gpu::kBvhBinding,   gpu::kPrimitiveBinding};
-
-std::span<const std::uint32_t> bindingsOf(bool smallScene) {
-    return std::span(kAllBindings).first(smallScene ? 8 : 10);
+// The frame, nodes and lights come in uniform buffers for a small scene; every other binding,
+// and all of them for a larger scene, are storage buffers.
+vk::DescriptorType descriptorType(std::uint32_t binding, bool uniformScene) {
+    const bool sceneData = binding == gpu::FRAME_BINDING || binding == gpu::NODE_BINDING || binding == gpu::LIGHT_BINDING;
+    return uniformScene && sceneData ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer;
 }
 
-using Spirv = std::span<const std::uint32_t>;
-
-using gpu::SceneLayout;
-
-Spirv spirvFor(Precision precision, SceneLayout layout) {
-    const auto pick = [layout](Spirv uniform, Spirv storage, Spirv bvh) {
-        return layout == SceneLayout::Uniform ? uniform : layout == SceneLayout::Storage ? storage : bvh;
-    };
-    switch (precision) {
-        case Precision::F32Naive:
-            return pick(kRenderF32NaiveUniformSpv, kRenderF32NaiveStorageSpv, kRenderF32NaiveBvhSpv);
-        case Precision::F64: return pick(kRenderF64UniformSpv, kRenderF64StorageSpv, kRenderF64BvhSpv);
-        default: return pick(kRenderF32UniformSpv, kRenderF32StorageSpv, kRenderF32BvhSpv);
-    }
-}
-
-// The frame, nodes and lights (bindings 0 to 2) come in uniform buffers for a small scene;
-// the pixels and classes are always storage buffers.
-vk::DescriptorType descriptorType(std::uint32_t binding, bool smallScene) {
-    return smallScene && binding <= gpu::kLightBinding ? vk::DescriptorType::eUniformBuffer
-                                                       : vk::DescriptorType::eStorageBuffer;
-}
-
-vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device, bool smallScene) {
+vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device, bool uniformScene) {
     std::vector<vk::DescriptorSetLayoutBinding> bindings;
-    for (std::uint32_t binding : bindingsOf(smallScene)) {
-        bindings.emplace_back(binding, descriptorType(binding, smallScene), 1, vk::ShaderStageFlagBits::eCompute);
+    for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
+        bindings.emplace_back(binding, descriptorType(binding, uniformScene), 1, vk::ShaderStageFlagBits::eCompute);
     }
     return vk::raii::DescriptorSetLayout(device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
 }
@@ -88,23 +48,34 @@ vk::raii::PipelineLayout createPipelineLayout(const vk::raii::Device& device,
     return vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo({}, layouts, band));
 }
 
-// Specialization constants in id order: 0 and 1 the local size, 2 to 8 the scene's.
+// The specialization constants: every kernel's (gpu::Specialization), then, for a generated kernel,
+// the scene's values, one id per component (scene_constants.h), packed without padding.
 struct SpecializationData {
-    std::uint32_t localSizeX = kWorkgroupSize;
-    std::uint32_t localSizeY = kWorkgroupSize;
-    gpu::ShaderSpecialization scene;
+    std::vector<std::byte> bytes;
+    std::vector<vk::SpecializationMapEntry> entries;
 };
 
-vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii::PipelineLayout& layout,
-                                  Spirv spirv, const gpu::ShaderSpecialization& scene) {
-    const vk::raii::ShaderModule module(device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
-    const SpecializationData data{kWorkgroupSize, kWorkgroupSize, scene};
-    constexpr std::uint32_t kConstants = sizeof(SpecializationData) / sizeof(std::uint32_t);
-    std::array<vk::SpecializationMapEntry, kConstants> entries;
-    for (std::uint32_t id = 0; id < kConstants; ++id) {
-        entries[id] = vk::SpecializationMapEntry(id, id * sizeof(std::uint32_t), sizeof(std::uint32_t));
+SpecializationData specializationData(const gpu::Specialization& common, std::span<const std::byte> sceneValues,
+                                      std::span<const std::uint32_t> sceneSizes) {
+    SpecializationData data;
+    const auto* raw = reinterpret_cast<const std::byte*>(&common);
+    data.bytes.assign(raw, raw + sizeof common);
+    for (std::uint32_t id = 0; id < gpu::FIRST_SCENE_CONSTANT_ID; ++id) {
+        data.entries.emplace_back(id, id * sizeof(std::uint32_t), sizeof(std::uint32_t));
     }
-    const vk::SpecializationInfo specialization(entries, vk::ArrayProxyNoTemporaries<const SpecializationData>(data));
+    std::uint32_t offset = sizeof common;
+    for (std::uint32_t i = 0; i < sceneSizes.size(); ++i) {
+        data.entries.emplace_back(gpu::FIRST_SCENE_CONSTANT_ID + i, offset, sceneSizes[i]);
+        offset += sceneSizes[i];
+    }
+    data.bytes.insert(data.bytes.end(), sceneValues.begin(), sceneValues.end());
+    return data;
+}
+
+vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii::PipelineLayout& layout,
+                                  std::span<const std::uint32_t> spirv, const SpecializationData& data) {
+    const vk::raii::ShaderModule module(device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
+    const vk::SpecializationInfo specialization(data.entries, vk::ArrayProxyNoTemporaries<const std::byte>(data.bytes));
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main",
                                                   &specialization);
     return vk::raii::Pipeline(device, nullptr, vk::ComputePipelineCreateInfo({}, stage, *layout));
@@ -117,6 +88,9 @@ struct PackedScene {
     std::vector<std::byte> lights;
     std::vector<std::byte> bvhNodes;    // empty: no BVH
     std::vector<std::byte> primitives;
+    // A generated kernel's specialization constants: their values, and each component's size.
+    std::vector<std::byte> constants;
+    std::vector<std::uint32_t> constantSizes;
 };
 
 template <typename T>
@@ -125,22 +99,27 @@ std::vector<std::byte> bytesOf(std::span<T> values) {
     return {bytes.begin(), bytes.end()};
 }
 
-// `bvh` (when given) is uploaded only if the shader's stack can walk it.
 template <typename Real>
-PackedScene packBytes(const Scene& scene, gpu::Placement placement, SceneLayout layout, const Bvh* bvh) {
-    gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, placement);
+PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
+    gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, plan.placement);
     PackedScene bytes;
-    if (bvh) {
-        const gpu::GpuBvh<Real> tree = gpu::packBvh<Real>(scene, *bvh, packed);
-        if (!tree.nodes.empty() && tree.depth <= gpu::kBvhStackSize) {
-            bytes.bvhNodes = bytesOf(std::span(tree.nodes));
-            bytes.primitives = bytesOf(std::span(tree.primitives));
-        }
+    if (plan.bvh) {
+        const gpu::GpuBvh<Real> tree = gpu::packBvh<Real>(scene, *plan.bvh, packed);
+        bytes.bvhNodes = bytesOf(std::span(tree.nodes));
+        bytes.primitives = bytesOf(std::span(tree.primitives));
     }
-    if (layout == SceneLayout::Uniform) {
-        // A uniform block declares all kSmallSceneCapacity entries: the buffers must hold them.
-        packed.nodes.resize(gpu::kSmallSceneCapacity);
-        packed.lights.resize(gpu::kSmallSceneCapacity);
+    if (plan.layout == SceneLayout::Uniform) {
+        // A uniform block declares all SMALL_SCENE_CAPACITY entries: the buffers must hold them.
+        packed.nodes.resize(gpu::SMALL_SCENE_CAPACITY);
+        packed.lights.resize(gpu::SMALL_SCENE_CAPACITY);
+    }
+    if (plan.kernel.code) {
+        const std::vector<SceneConstant> constants = sceneConstants(*plan.kernel.code);
+        bytes.constants = sceneConstantValues(constants, packed);
+        for (const SceneConstant& constant : constants) {
+            const std::uint32_t size = constant.real ? sizeof(Real) : sizeof(float);
+            bytes.constantSizes.insert(bytes.constantSizes.end(), constant.components, size);
+        }
     }
     bytes.frame = bytesOf(std::span(&packed.frame, 1));
     bytes.nodes = bytesOf(std::span(packed.nodes));
@@ -148,16 +127,12 @@ PackedScene packBytes(const Scene& scene, gpu::Placement placement, SceneLayout 
     return bytes;
 }
 
-PackedScene packFor(const Scene& scene, Precision precision, SceneLayout layout, const Bvh* bvh) {
-    switch (precision) {
-        case Precision::F64: return packBytes<double>(scene, gpu::Placement::CameraRelative, layout, bvh);
-        case Precision::F32Naive: return packBytes<float>(scene, gpu::Placement::World, layout, bvh);
-        default: return packBytes<float>(scene, gpu::Placement::CameraRelative, layout, bvh);
-    }
+PackedScene packFor(const Scene& scene, const RenderPlan& plan) {
+    return plan.width == FloatWidth::F64 ? packBytes<double>(scene, plan) : packBytes<float>(scene, plan);
 }
 
 std::uint32_t groupsFor(std::uint32_t count) {
-    return (count + kWorkgroupSize - 1) / kWorkgroupSize;
+    return (count + WORKGROUP_SIZE - 1) / WORKGROUP_SIZE;
 }
 
 // How long one dispatch of `samples` rays may take before the device counts as hung. A real
@@ -185,9 +160,10 @@ struct LeakIfAbandoned {
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes)
+GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes, KernelCache kernelCache)
     : context_(context),
       maxBandBytes_(maxBandBytes),
+      kernels_(std::move(kernelCache)),
       uniformScene_{createSetLayout(context.device(), true), nullptr},
       storageScene_{createSetLayout(context.device(), false), nullptr},
       commandPool_(context.device(),
@@ -218,39 +194,49 @@ GpuRenderer::~GpuRenderer() {
     }
 }
 
-Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
-    const bool hasFloat64 = context_.selected().hasFloat64;
-    if (requested == Precision::Auto) {
-        return choosePrecision(scene, hasFloat64);
-    }
-    if (requested == Precision::F64 && !hasFloat64) {
-        throw VulkanError(VulkanFailure::NoFloat64,
-                          "--precision f64 needs shaderFloat64, which " + context_.selected().name + " does not have",
-                          "use --precision f32");
-    }
-    return requested;
+DeviceAbilities GpuRenderer::abilities() const {
+    const DeviceInfo& device = context_.selected();
+    return DeviceAbilities{device.name, device.hasFloat64, device.hasSubgroupVote};
 }
 
-const vk::raii::Pipeline& GpuRenderer::pipeline(const PipelineKey& key) {
+RenderPlan GpuRenderer::plan(const Scene& scene, const PlanRequest& request) const {
+    return planRender(scene, request, abilities());
+}
+
+Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
+    return resolvePrecision(scene, requested, abilities());
+}
+
+const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> spirv, SceneLayout layout,
+                                                const gpu::Specialization& specialization,
+                                                std::span<const std::byte> sceneValues,
+                                                std::span<const std::uint32_t> sceneSizes) {
+    const bool uniform = layout == SceneLayout::Uniform;
+    const PipelineKey key{spirv.data(), uniform, specialization, {sceneValues.begin(), sceneValues.end()}};
     auto found = pipelines_.find(key);
     if (found == pipelines_.end()) {
-        const auto& [kernel, precision, layout, specialization] = key;
-        const Spirv spirv = kernel == Kernel::LectureDemoCeiling ? Spirv(kLectureDemoCeilingSpv)
-                                                                 : spirvFor(precision, layout);
-        found = pipelines_
-                    .emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv,
-                                                 specialization))
-                    .first;
+        const SpecializationData data = specializationData(specialization, sceneValues, sceneSizes);
+        found =
+            pipelines_.emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data)).first;
     }
     return found->second;
 }
 
-GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, GpuOutput output,
-                                    Acceleration acceleration) {
-    if (output == GpuOutput::Encoded8) {
-        return renderEncoded(scene, resolve(scene, requested), Kernel::Renderer);
-    }
+GpuRenderResult GpuRenderer::render(const Scene& scene, const RenderPlan& plan, GpuOutput output) {
     GpuRenderResult result;
+    const auto keep = [&](const GpuRenderResult& streamed) {
+        result.precision = streamed.precision;
+        result.timing = streamed.timing;
+        result.usedBvh = streamed.usedBvh;
+    };
+    if (output == GpuOutput::Encoded8) {
+        result.encoded = Rgb8Image{scene.image.width, scene.image.height, {}};
+        result.encoded.bytes.reserve(std::size_t(scene.image.width) * scene.image.height * 3);
+        keep(renderEncodedRows(scene, plan, [&](std::uint32_t, auto rgbRows) {
+            result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
+        }));
+        return result;
+    }
     const bool aov = output == GpuOutput::LinearClassesAndAov;
     const std::size_t pixels = std::size_t(scene.image.width) * scene.image.height;
     result.image = Image(scene.image.width, scene.image.height);
@@ -258,32 +244,24 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, Precision requested, Gpu
     result.depth.reserve(aov ? pixels : 0);
     result.normals.reserve(aov ? pixels : 0);
     const auto append = [](auto& whole, const auto& band) { whole.insert(whole.end(), band.begin(), band.end()); };
-    const GpuRenderResult streamed = renderLinearRows(
-        scene, requested, output,
-        [&](std::uint32_t firstRow, const GpuRenderResult& band) {
-            std::copy(band.image.pixels.begin(), band.image.pixels.end(),
-                      result.image.pixels.begin() + std::ptrdiff_t(firstRow) * scene.image.width);
-            append(result.classes, band.classes);
-            append(result.depth, band.depth);
-            append(result.normals, band.normals);
-        },
-        acceleration);
-    result.precision = streamed.precision;
-    result.timing = streamed.timing;
-    result.usedBvh = streamed.usedBvh;
+    keep(renderLinearRows(scene, plan, output, [&](std::uint32_t firstRow, const GpuRenderResult& band) {
+        std::copy(band.image.pixels.begin(), band.image.pixels.end(),
+                  result.image.pixels.begin() + std::ptrdiff_t(firstRow) * scene.image.width);
+        append(result.classes, band.classes);
+        append(result.depth, band.depth);
+        append(result.normals, band.normals);
+    }));
     return result;
 }
 
-GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, Precision requested, GpuOutput output,
-                                              const BandConsumer& consume, Acceleration acceleration) {
+GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
+                                              const BandConsumer& consume) {
     GpuRenderResult result;
-    result.precision = resolve(scene, requested);
     const std::uint32_t width = scene.image.width;
     const bool aov = output == GpuOutput::LinearClassesAndAov;
-    // The shader's t is in the placement's units.
-    const double scale = result.precision == Precision::F32Naive ? 1.0 : gpu::placementScale(scene);
+    const double scale = plan.placement.scale;  // the shader's t is in the placement's units
     GpuRenderResult rows;  // reused from band to band
-    renderBands(scene, result.precision, output, acceleration, Kernel::Renderer, result, [&](const Band& band) {
+    renderBands(scene, plan, output, result, [&](const Band& band) {
         const std::size_t count = std::size_t(band.rows) * width;
         rows.image.width = width;
         rows.image.height = band.rows;
@@ -305,36 +283,10 @@ GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, Precision requ
     return result;
 }
 
-GpuRenderResult GpuRenderer::renderLectureDemoCeiling(const Scene& scene) {
-    if (!isLectureDemoScene(scene)) {
-        throw std::invalid_argument("the lecture demo's hand-written kernel renders only that scene");
-    }
-    return renderEncoded(scene, Precision::F32, Kernel::LectureDemoCeiling);
-}
-
-GpuRenderResult GpuRenderer::renderEncoded(const Scene& scene, Precision precision, Kernel kernel) {
+GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume) {
     GpuRenderResult result;
-    result.precision = precision;
-    result.encoded = Rgb8Image{scene.image.width, scene.image.height, {}};
-    result.encoded.bytes.reserve(std::size_t(scene.image.width) * scene.image.height * 3);
-    const GpuRenderResult streamed = encodedRows(scene, precision, kernel, [&](std::uint32_t, auto rgbRows) {
-        result.encoded.bytes.insert(result.encoded.bytes.end(), rgbRows.begin(), rgbRows.end());
-    });
-    result.timing = streamed.timing;
-    result.usedBvh = streamed.usedBvh;
-    return result;
-}
-
-GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, Precision requested, const RowConsumer& consume) {
-    return encodedRows(scene, resolve(scene, requested), Kernel::Renderer, consume);
-}
-
-GpuRenderResult GpuRenderer::encodedRows(const Scene& scene, Precision precision, Kernel kernel,
-                                         const RowConsumer& consume) {
-    GpuRenderResult result;
-    result.precision = precision;
     std::vector<std::uint8_t> rgb;
-    renderBands(scene, precision, GpuOutput::Encoded8, Acceleration::Auto, kernel, result, [&](const Band& band) {
+    renderBands(scene, plan, GpuOutput::Encoded8, result, [&](const Band& band) {
         const std::size_t count = std::size_t(band.rows) * scene.image.width;
         rgb.resize(count * 3);
         for (std::size_t i = 0; i < count; ++i) {
@@ -348,21 +300,21 @@ GpuRenderResult GpuRenderer::encodedRows(const Scene& scene, Precision precision
 namespace {
 
 template <typename Real>
-GpuPixelTrace unpackTrace(const Scene& scene, const std::byte* bytes, bool cameraRelative, double scale) {
+GpuPixelTrace unpackTrace(const Scene& scene, const std::byte* bytes, const Placement& placement) {
     gpu::GpuTraceHeader<Real> header;
     std::memcpy(&header, bytes, sizeof header);
     if (header.result.x != 1) {
         throw std::runtime_error("internal error: the trace dispatch wrote nothing");
     }
-    const glm::dvec3 eye = cameraRelative ? makePixelSheet(scene.camera, sheetAspect(scene)).origin : glm::dvec3(0);
-    const auto world = [&](const gpu::RealVec4<Real>& p) { return eye + scale * glm::dvec3(p); };
+    const double scale = placement.scale;
+    const auto world = [&](const gpu::RealVec4<Real>& p) { return placement.origin + scale * glm::dvec3(p); };
     // The shader's NO_HIT is REAL_MAX: 1e300 in f64, FLT_MAX in f32.
     const double miss = std::is_same_v<Real, double> ? 1e299 : 1e38;
     const auto distance = [&](Real t) {
         return double(t) >= miss ? std::numeric_limits<double>::infinity() : double(t) * scale;
     };
     GpuPixelTrace trace;
-    trace.cameraRelative = cameraRelative;
+    trace.cameraRelative = placement.cameraRelative;
     trace.scale = scale;
     trace.rayOrigin = world(header.rayOrigin);
     trace.rayDirection = glm::dvec3(header.rayDirection);
@@ -401,54 +353,53 @@ std::vector<std::byte> traceRequest(const Scene& scene, std::uint32_t x, std::ui
     return bytes;
 }
 
+std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) {
+    if (tracing) return gpu::OUTPUT_TRACE;
+    switch (output) {
+        case GpuOutput::LinearAndClasses: return gpu::OUTPUT_LINEAR_AND_CLASSES;
+        case GpuOutput::LinearClassesAndAov: return gpu::OUTPUT_LINEAR_CLASSES_AND_AOV;
+        case GpuOutput::Encoded8: break;
+    }
+    return scene.image.encoding == Encoding::Srgb ? gpu::OUTPUT_8BIT_SRGB : gpu::OUTPUT_8BIT_LINEAR;
+}
+
 }  // namespace
 
-GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, Precision requested, std::uint32_t x, std::uint32_t y,
+GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,
                                       std::uint32_t sample) {
-    const Precision precision = resolve(scene, requested);
-    const bool f64 = precision == Precision::F64;
-    const bool cameraRelative = precision != Precision::F32Naive;
-    const double scale = cameraRelative ? gpu::placementScale(scene) : 1.0;
+    const bool f64 = plan.width == FloatWidth::F64;
     const std::vector<std::byte> request =
         f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
     GpuPixelTrace trace;
     GpuRenderResult bands;
     const auto unpack = [&](const Band& band) {
-        trace = f64 ? unpackTrace<double>(scene, band.trace, cameraRelative, scale)
-                    : unpackTrace<float>(scene, band.trace, cameraRelative, scale);
+        trace = f64 ? unpackTrace<double>(scene, band.trace, plan.placement)
+                    : unpackTrace<float>(scene, band.trace, plan.placement);
     };
-    renderBands(scene, precision, GpuOutput::LinearAndClasses, Acceleration::Auto, Kernel::Renderer, bands, unpack,
-                request);
-    trace.precision = precision;
+    renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, request);
+    trace.precision = plan.precision;
     trace.usedBvh = bands.usedBvh;
     return trace;
 }
 
-void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
-                              Kernel kernel, GpuRenderResult& result,
+void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
                               const std::function<void(const Band&)>& consume,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
     const bool linear = output != GpuOutput::Encoded8 && !tracing;
-    const std::uint32_t outputMode = tracing                                    ? gpu::kOutputTrace
-                                     : aov                                      ? gpu::kOutputLinearClassesAndAov
-                                     : linear                                   ? gpu::kOutputLinearAndClasses
-                                     : scene.image.encoding == Encoding::Srgb ? gpu::kOutput8BitSrgb
-                                                                              : gpu::kOutput8BitLinear;
-    SceneLayout layout = gpu::chooseSceneLayout(scene, acceleration, context_.selected().hasSubgroupVote);
-    const std::optional<Bvh> bvh = layout == SceneLayout::StorageBvh ? std::optional(buildBvh(scene)) : std::nullopt;
-    const PackedScene packed = packFor(scene, precision, layout, bvh ? &*bvh : nullptr);
-    if (layout == SceneLayout::StorageBvh && packed.bvhNodes.empty()) {
-        layout = SceneLayout::Storage;  // no spheres, or a tree deeper than the shader's stack
-    }
-    const bool smallScene = layout == SceneLayout::Uniform;
-    const gpu::ShaderSpecialization specialization = gpu::specializationFor(scene, outputMode);
+    const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
+    const PackedScene packed = packFor(scene, plan);
+    const bool uniformScene = plan.layout == SceneLayout::Uniform;
+    result.precision = plan.precision;
+    result.usedBvh = plan.layout == SceneLayout::StorageBvh;
 
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
-    const vk::raii::Pipeline& computePipeline = pipeline({kernel, precision, layout, specialization});
-    const SceneBindings& sceneBindings = bindings(layout);
+    const std::span<const std::uint32_t> spirv = kernels_.spirv(plan.kernel, &result.timing.kernel);
+    const vk::raii::Pipeline& computePipeline =
+        pipeline(spirv, plan.layout, specialization, packed.constants, packed.constantSizes);
+    const SceneBindings& sceneBindings = bindings(plan.layout);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
 
@@ -460,7 +411,7 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     const std::size_t bandPixels = std::size_t(rowsPerBand) * width;
 
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
-    const vk::BufferUsageFlags sceneUsage = smallScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
+    const vk::BufferUsageFlags sceneUsage = uniformScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
     HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), sceneUsage);
     HostVisibleBuffer nodeBuffer(device, physicalDevice, packed.nodes.size(), sceneUsage);
     HostVisibleBuffer lightBuffer(device, physicalDevice, packed.lights.size(), sceneUsage);
@@ -482,23 +433,22 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     bvhBuffer.upload(std::span(packed.bvhNodes));
     primitiveBuffer.upload(std::span(packed.primitives));
 
-    const std::span<const std::uint32_t> setBindings = bindingsOf(smallScene);
     const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, std::uint32_t(setBindings.size())),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, std::uint32_t(setBindings.size()))};
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, gpu::BINDING_COUNT),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, gpu::BINDING_COUNT)};
     vk::raii::DescriptorPool pool(
         device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
     const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
-    const std::array<const HostVisibleBuffer*, kAllBindings.size()> buffers = {
+    // In binding order (shader_interface.h).
+    const std::array<const HostVisibleBuffer*, gpu::BINDING_COUNT> buffers = {
         &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
-        &encodedBuffer, &aovBuffer, &traceBuffer, &bvhBuffer, &primitiveBuffer};
-    for (std::size_t i = 0; i < setBindings.size(); ++i) {
-        const vk::DescriptorBufferInfo info(*buffers[i]->buffer(), 0, buffers[i]->size());
+        &encodedBuffer, &bvhBuffer, &primitiveBuffer, &aovBuffer, &traceBuffer};
+    for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
+        const vk::DescriptorBufferInfo info(*buffers[binding]->buffer(), 0, buffers[binding]->size());
         device.updateDescriptorSets(
-            vk::WriteDescriptorSet(*set, setBindings[i], 0, descriptorType(setBindings[i], smallScene), nullptr, info),
-            nullptr);
+            vk::WriteDescriptorSet(*set, binding, 0, descriptorType(binding, uniformScene), nullptr, info), nullptr);
     }
 
     vk::raii::CommandBuffers commandBuffers(
@@ -541,7 +491,7 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
         commands.end();
 
         const auto start = std::chrono::steady_clock::now();
-        const std::uint64_t samples = std::uint64_t(groupsX) * groupsY * kWorkgroupSize * kWorkgroupSize *
+        const std::uint64_t samples = std::uint64_t(groupsX) * groupsY * WORKGROUP_SIZE * WORKGROUP_SIZE *
                                       scene.image.samplesPerPixel;
         context_.submitAndWait(commands, done, dispatchTimeout(scene, samples));  // throws VulkanError
         device.resetFences(*done);
@@ -555,7 +505,6 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
         return double((ticks[1] - ticks[0]) & timestampMask_) * nanosecondsPerTick_ * 1e-6;
     };
 
-    result.usedBvh = layout == SceneLayout::StorageBvh;
     GpuTiming& timing = result.timing;
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
     if (tracing) {
@@ -566,7 +515,7 @@ void GpuRenderer::renderBands(const Scene& scene, Precision precision, GpuOutput
     }
     // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
     // dispatch) is not counted as render time.
-    timing.firstDispatchMilliseconds = runDispatch(GpuBand{0, std::min(rowsPerBand, kWorkgroupSize)}, 1, 1, false);
+    timing.firstDispatchMilliseconds = runDispatch(GpuBand{0, std::min(rowsPerBand, WORKGROUP_SIZE)}, 1, 1, false);
 
     for (std::uint32_t firstRow = 0; firstRow < height; firstRow += rowsPerBand) {
         const std::uint32_t rows = std::min(rowsPerBand, height - firstRow);

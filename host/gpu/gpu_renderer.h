@@ -1,5 +1,6 @@
 #pragma once
-// Renders a scene with the compute shader in shaders/render.comp.
+// Renders a scene with a compute kernel, as a RenderPlan (render_plan.h) says: a kernel
+// generated for the scene, or the data-driven shaders/render.comp.
 
 #include <functional>
 #include <map>
@@ -9,8 +10,9 @@
 
 #include "accel/bvh.h"
 #include "gpu/gpu_layout.h"
-#include "gpu/gpu_scene.h"
+#include "gpu/kernel_compiler.h"
 #include "gpu/precision.h"
+#include "gpu/render_plan.h"
 #include "image/image.h"
 #include "image/image_io.h"
 #include "image/pixel_class.h"
@@ -21,8 +23,9 @@ namespace hexray {
 
 struct GpuTiming {
     double renderMilliseconds = 0;         // all bands, measured after the warm-up dispatch
-    double firstDispatchMilliseconds = 0;  // the warm-up: includes the driver's shader compile
+    double firstDispatchMilliseconds = 0;  // the warm-up: includes the driver's compile (lavapipe's JIT)
     bool fromTimestamps = false;           // false: host wall time (no timestamp support)
+    KernelBuild kernel;                    // generating and compiling the kernel (when not yet built)
 };
 
 // What render() produces: linear RGB and what each pixel shows, for comparisons; or only the
@@ -33,7 +36,7 @@ enum class GpuOutput { LinearAndClasses, Encoded8, LinearClassesAndAov };
 
 // One light at a traced sample, as the shader saw it.
 struct GpuTraceLight {
-    std::uint32_t status = gpu::kTraceLightNotEvaluated;  // gpu::TraceLightStatus
+    std::uint32_t status = gpu::TRACE_LIGHT_NOT_EVALUATED;  // gpu::TRACE_LIGHT_*
     double cosTheta = 0;
     double distanceSquared = 0;  // world units²
     double shadowLength = 0;     // world units
@@ -41,12 +44,12 @@ struct GpuTraceLight {
 };
 
 // One pixel explained by the shader itself (OUTPUT_TRACE). Everything is converted back to
-// world units: the camera-relative placement's eye is added back and lengths multiplied by its
-// scale (see gpu_scene.h), in double, from the shader's f32 or f64 values.
+// world units: the placement's eye is added back and lengths multiplied by its scale, in
+// double, from the shader's f32 or f64 values.
 struct GpuPixelTrace {
     Precision precision = Precision::F32;
     bool cameraRelative = true;
-    double scale = 1.0;              // the placement's power of two (1 for f32-naive)
+    double scale = 1.0;              // the placement's power of two (1 for world placement)
     glm::dvec3 rayOrigin{0};
     glm::dvec3 rayDirection{0};
     std::vector<double> candidates;  // per node: t in world units, +inf for a miss
@@ -71,64 +74,66 @@ struct GpuRenderResult {
     // (+inf for the background) and the shading normal (0 for the background).
     std::vector<float> depth;
     std::vector<glm::vec3> normals;
-    Precision precision = Precision::F32;  // the variant that rendered (never Auto)
+    Precision precision = Precision::F32;  // the plan's (never Auto)
     GpuTiming timing;
     bool usedBvh = false;  // the spheres were traced through a BVH
 };
 
-// Owns the pipelines for one device: one per precision variant and scene specialization,
-// each built on first use. render() may be called for any number of scenes.
+// Owns the pipelines for one device, each built on first use, and the kernel compiler. render()
+// may be called for any number of scenes and plans.
 class GpuRenderer {
 public:
     // Images whose pixels exceed `maxBandBytes` (or the device's storage-buffer limit, if
     // smaller) render in several bands of rows.
     static constexpr std::uint64_t kDefaultMaxBandBytes = std::uint64_t{256} << 20;
 
-    explicit GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes = kDefaultMaxBandBytes);
+    explicit GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes = kDefaultMaxBandBytes,
+                         KernelCache kernelCache = KernelCache(KernelCache::defaultDirectory()));
     ~GpuRenderer();
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
-    // Precision::Auto picks per scene (choosePrecision). Throws VulkanError for F64 on a
-    // device without shaderFloat64.
-    // Acceleration::Auto traces scenes too large for the uniform-buffer layout through a BVH
-    // when bvhPays(scene); every choice gives the same image.
-    GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto,
-                           GpuOutput output = GpuOutput::LinearAndClasses,
-                           Acceleration acceleration = Acceleration::Auto);
+    // The plan for `scene` on this device (planRender). Throws VulkanError for F64 on a device
+    // without shaderFloat64.
+    RenderPlan plan(const Scene& scene, const PlanRequest& request = {}) const;
+
+    GpuRenderResult render(const Scene& scene, const RenderPlan& plan, GpuOutput output);
 
     // The 8-bit image a band of rows at a time, each handed to `consume` (first row, and the
     // rows' RGB bytes) as soon as it is read back: the whole image is never in memory.
     using RowConsumer = std::function<void(std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows)>;
-    GpuRenderResult renderEncodedRows(const Scene& scene, Precision precision, const RowConsumer& consume);
+    GpuRenderResult renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume);
 
     // render()'s LinearAndClasses or LinearClassesAndAov output a band of rows at a time: each
     // band is handed to `consume` (its first row, and a result whose image, classes, depth and
     // normals hold just the band's rows) as soon as it is read back. The returned result has the
     // precision, timing and usedBvh, and no pixels.
     using BandConsumer = std::function<void(std::uint32_t firstRow, const GpuRenderResult& band)>;
-    GpuRenderResult renderLinearRows(const Scene& scene, Precision precision, GpuOutput output,
-                                     const BandConsumer& consume, Acceleration acceleration = Acceleration::Auto);
+    GpuRenderResult renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
+                                     const BandConsumer& consume);
 
-    // Replays pixel (x, y) in the shader's trace mode and returns what it computed for sample
+    // Replays pixel (x, y) in the kernel's trace mode and returns what it computed for sample
     // `sample` (and the pixel's colour). The caller checks the ranges.
-    GpuPixelTrace tracePixel(const Scene& scene, Precision precision, std::uint32_t x, std::uint32_t y,
+    GpuPixelTrace tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,
                              std::uint32_t sample);
 
-    // The 8-bit image of the lecture demo scene from shaders/lecture_demo_ceiling.comp, a
-    // hand-written kernel with the scene's values as literals: lavapipe's ceiling for that
-    // scene, which `hexray bench` times beside render(). Throws std::invalid_argument unless
-    // isLectureDemoScene(scene).
-    GpuRenderResult renderLectureDemoCeiling(const Scene& scene);
+    // Shorthands that plan first.
+    GpuRenderResult render(const Scene& scene, Precision precision = Precision::Auto,
+                           GpuOutput output = GpuOutput::LinearAndClasses,
+                           Acceleration acceleration = Acceleration::Auto) {
+        return render(scene, plan(scene, {precision, acceleration}), output);
+    }
+    GpuPixelTrace tracePixel(const Scene& scene, Precision precision, std::uint32_t x, std::uint32_t y,
+                             std::uint32_t sample) {
+        return tracePixel(scene, plan(scene, {precision}), x, y, sample);
+    }
 
-    // The precision render() would use for `scene`.
+    // The precision a plan for `scene` would use (without building the rest of the plan).
     Precision resolve(const Scene& scene, Precision requested) const;
 
-private:
-    enum class Kernel { Renderer, LectureDemoCeiling };  // which compute shader runs
-    GpuRenderResult renderEncoded(const Scene& scene, Precision precision, Kernel kernel);
-    GpuRenderResult encodedRows(const Scene& scene, Precision precision, Kernel kernel, const RowConsumer& consume);
+    DeviceAbilities abilities() const;
 
+private:
     // One band of rows as the device left it; only the output's own buffer is meaningful.
     struct Band {
         std::uint32_t firstRow;
@@ -139,26 +144,29 @@ private:
         const gpu::GpuAovPixel* aovs;
         const std::byte* trace;
     };
-    // Sets `result`'s timing and usedBvh. With `traceRequest` non-empty, one trace dispatch
-    // instead (see tracePixel): the trace buffer starts as those bytes.
-    void renderBands(const Scene& scene, Precision precision, GpuOutput output, Acceleration acceleration,
-                     Kernel kernel, GpuRenderResult& result, const std::function<void(const Band&)>& consume,
-                     std::span<const std::byte> traceRequest = {});
+    // Sets `result`'s precision, timing and usedBvh. With `traceRequest` non-empty, one trace
+    // dispatch instead (see tracePixel): the trace buffer starts as those bytes.
+    void renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
+                     const std::function<void(const Band&)>& consume, std::span<const std::byte> traceRequest = {});
 
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
     struct SceneBindings {
         vk::raii::DescriptorSetLayout setLayout;
         vk::raii::PipelineLayout pipelineLayout;
     };
-    using PipelineKey = std::tuple<Kernel, Precision, gpu::SceneLayout, gpu::ShaderSpecialization>;
-
-    const SceneBindings& bindings(gpu::SceneLayout layout) const {
-        return layout == gpu::SceneLayout::Uniform ? uniformScene_ : storageScene_;
+    const SceneBindings& bindings(SceneLayout layout) const {
+        return layout == SceneLayout::Uniform ? uniformScene_ : storageScene_;
     }
-    const vk::raii::Pipeline& pipeline(const PipelineKey& key);
+    // Pipelines by kernel (its SPIR-V's address), layout and specialization (a generated
+    // kernel's scene values included).
+    using PipelineKey = std::tuple<const std::uint32_t*, bool, gpu::Specialization, std::vector<std::byte>>;
+    const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, SceneLayout layout,
+                                       const gpu::Specialization& specialization,
+                                       std::span<const std::byte> sceneValues, std::span<const std::uint32_t> sceneSizes);
 
     const VulkanContext& context_;
     std::uint64_t maxBandBytes_;
+    KernelCompiler kernels_;
     SceneBindings uniformScene_;  // small scenes: scene data in uniform buffers
     SceneBindings storageScene_;  // larger ones: in storage buffers, with or without a BVH
     std::map<PipelineKey, vk::raii::Pipeline> pipelines_;

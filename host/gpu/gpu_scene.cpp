@@ -21,15 +21,6 @@ glm::vec4 toColor(const Color& c) {
     return glm::vec4(glm::dvec4(c, 0.0));
 }
 
-// World positions and lengths as the shader sees them.
-struct Placer {
-    glm::dvec3 eye{0.0};
-    glm::dvec3 origin{0.0};
-    double scale = 1.0;
-    glm::dvec3 position(const glm::dvec3& world) const { return (world - origin) / scale; }
-    double length(double world) const { return world / scale; }
-};
-
 // The eye's power with respect to a sphere, |f|^2 - r^2 for f = eye - centre, to about one rounding
 // of the result: each square split exactly into two doubles (fma), the eight parts summed with
 // their rounding errors carried (TwoSum). Plain double would lose the small power of an eye close
@@ -68,32 +59,32 @@ RealVec4<Real> planeCheckerPhase(const glm::dvec3& origin, double size, double p
 }
 
 template <typename Real>
-GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placer& placer) {
+GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& placement, const glm::dvec3& eye) {
     GpuNode<Real> packed{};
     const auto* plane = std::get_if<Plane>(&node.geometry);
     if (plane) {
-        packed.kinds.x = kGeometryPlane;
-        packed.geometry = toReal4<Real>(glm::dvec3(placer.position(glm::dvec3(0.0, plane->height, 0.0)).y, 0, 0));
+        packed.kinds.x = GEOMETRY_PLANE;
+        packed.geometry = toReal4<Real>(glm::dvec3(placement.position(glm::dvec3(0.0, plane->height, 0.0)).y, 0, 0));
     } else {
         const auto& sphere = std::get<Sphere>(node.geometry);
-        packed.kinds.x = kGeometrySphere;
-        packed.geometry = toReal4<Real>(placer.position(sphere.center), placer.length(sphere.radius));
-        const glm::dvec3 fromCenter = placer.position(placer.eye) - placer.position(sphere.center);
-        packed.surface = toReal4<Real>(glm::dvec3(eyePower(fromCenter, placer.length(sphere.radius)), 0, 0));
+        packed.kinds.x = GEOMETRY_SPHERE;
+        packed.geometry = toReal4<Real>(placement.position(sphere.center), placement.length(sphere.radius));
+        const glm::dvec3 fromCenter = placement.position(eye) - placement.position(sphere.center);
+        packed.surface = toReal4<Real>(glm::dvec3(eyePower(fromCenter, placement.length(sphere.radius)), 0, 0));
     }
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
-        packed.kinds.y = kShaderConstant;
+        packed.kinds.y = SHADER_CONSTANT;
         packed.color1 = toColor(constant->color);
     } else if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
-        packed.kinds.y = kShaderLambert;
+        packed.kinds.y = SHADER_LAMBERT;
         packed.color1 = toColor(lambert->color);
     } else {
         const auto& checker = std::get<CheckerShader>(shader);
-        packed.kinds.y = kShaderChecker;
+        packed.kinds.y = SHADER_CHECKER;
         packed.color1 = toColor(checker.color1);
         packed.color2 = toColor(checker.color2);
         // Sphere checkers use angles, which neither move with the eye nor scale.
-        packed.checker = plane ? planeCheckerPhase<Real>(placer.origin, checker.size, placer.length(checker.size))
+        packed.checker = plane ? planeCheckerPhase<Real>(placement.origin, checker.size, placement.length(checker.size))
                                : toReal4<Real>(glm::dvec3(checker.size, 0, 0));
     }
     return packed;
@@ -101,59 +92,13 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placer& pla
 
 }  // namespace
 
-bool isSmallScene(const Scene& scene) {
-    return scene.nodes.size() <= kSmallSceneCapacity && scene.lights.size() <= kSmallSceneCapacity;
-}
-
-SceneLayout chooseSceneLayout(const Scene& scene, Acceleration acceleration, bool canTraverseBvh) {
-    const bool bvh = acceleration == Acceleration::Bvh ||
-                     (acceleration == Acceleration::Auto && !isSmallScene(scene) && bvhPays(scene));
-    if (bvh && canTraverseBvh) {
-        return SceneLayout::StorageBvh;
-    }
-    return isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
-}
-
-ShaderSpecialization specializationFor(const Scene& scene, std::uint32_t outputMode) {
-    ShaderSpecialization specialization;
-    specialization.outputMode = outputMode;
-    specialization.samplesPerPixel = scene.image.samplesPerPixel;
-    if (!isSmallScene(scene)) {
-        return specialization;
-    }
-    specialization.nodeCount = std::uint32_t(scene.nodes.size());
-    specialization.lightCount = std::uint32_t(scene.lights.size());
-    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
-        const std::uint32_t bit = 1u << i;
-        const Shader& shader = scene.shaders[scene.nodes[i].shaderIndex];
-        specialization.sphereNodes |= std::holds_alternative<Sphere>(scene.nodes[i].geometry) ? bit : 0;
-        specialization.constantNodes |= std::holds_alternative<ConstantShader>(shader) ? bit : 0;
-        specialization.checkerNodes |= std::holds_alternative<CheckerShader>(shader) ? bit : 0;
-    }
-    return specialization;
-}
-
-double placementScale(const Scene& scene) {
-    // The power of two nearest the geometric middle of the scene's lengths: the squares of the
-    // smallest and the largest then stay equally far inside the number range, and an object far out
-    // of view moves the scale by the square root of its distance only (a power of two: no visible
-    // pixel changes, as long as the range fits; see float32RangeProblem).
-    const MagnitudeRange range = sceneMagnitudes(scene);
-    return range.smallest > 0 ? std::exp2(std::round(0.5 * (std::log2(range.smallest) + std::log2(range.largest))))
-                              : 1.0;
-}
-
 template <typename Real>
-GpuScene<Real> packScene(const Scene& scene, Placement placement) {
+GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
-    Placer placer{sheet.origin};
-    if (placement == Placement::CameraRelative) {
-        placer = Placer{sheet.origin, sheet.origin, placementScale(scene)};
-    }
 
     GpuScene<Real> packed;
     GpuFrame<Real>& frame = packed.frame;
-    frame.origin = toReal4<Real>(placer.position(sheet.origin));
+    frame.origin = toReal4<Real>(placement.position(sheet.origin));
     // Directions: the sheet is at distance 1 whatever the scale.
     frame.sheetTopLeft = toReal4<Real>(sheet.topLeft);
     frame.sheetRight = toReal4<Real>(sheet.right);
@@ -167,19 +112,19 @@ GpuScene<Real> packScene(const Scene& scene, Placement placement) {
     frame.planeCount = std::uint32_t(scene.nodes.size() - countSpheres(scene));
 
     for (const Node& node : scene.nodes) {
-        packed.nodes.push_back(packNode<Real>(node, scene.shaders[node.shaderIndex], placer));
+        packed.nodes.push_back(packNode<Real>(node, scene.shaders[node.shaderIndex], placement, sheet.origin));
     }
     // Irradiance falls off as 1/r^2: lengths divided by s need intensities divided by s^2.
-    const double powerScale = 1.0 / (placer.scale * placer.scale);
+    const double powerScale = 1.0 / (placement.scale * placement.scale);
     for (const PointLight& light : scene.lights) {
-        packed.lights.push_back({toReal4<Real>(placer.position(light.position)),
+        packed.lights.push_back({toReal4<Real>(placement.position(light.position)),
                                  toColor(light.color * (light.intensity * powerScale))});
     }
     return packed;
 }
 
-template GpuScene<float> packScene<float>(const Scene&, Placement);
-template GpuScene<double> packScene<double>(const Scene&, Placement);
+template GpuScene<float> packScene<float>(const Scene&, const Placement&);
+template GpuScene<double> packScene<double>(const Scene&, const Placement&);
 
 namespace {
 
@@ -194,7 +139,7 @@ public:
         double extent = std::max({std::abs(packed.frame.origin.x), std::abs(packed.frame.origin.y),
                                   std::abs(packed.frame.origin.z)});
         for (const auto& node : packed.nodes) {
-            if (node.kinds.x == kGeometrySphere) {
+            if (node.kinds.x == GEOMETRY_SPHERE) {
                 extent = std::max(extent, maxAbs(node.geometry) + double(node.geometry.w));
             }
         }

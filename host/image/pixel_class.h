@@ -5,12 +5,14 @@
 
 #include <cstdint>
 
+#include "shader_interface.h"  // the encoding, shared with the shader
+
 namespace hexray {
 
 struct PixelClass {
-    static constexpr std::uint32_t kBackground = 0xffffffffu;
-    static constexpr std::uint32_t kOddCheckerBit = 1u;  // the hit is checker-shaded and in a color2 cell
-    static constexpr std::uint32_t kClassifiedLights = 31;  // lights 0..30 have a bit each
+    static constexpr std::uint32_t kBackground = gpu::BACKGROUND;
+    static constexpr std::uint32_t kOddCheckerBit = gpu::ODD_CHECKER_BIT;  // checker-shaded, in a color2 cell
+    static constexpr std::uint32_t kClassifiedLights = gpu::CLASSIFIED_LIGHTS;  // lights 0..30 have a bit each
 
     // Bit for "light `index` contributes to this pixel" (faces it and is not shadowed).
     static constexpr std::uint32_t litBit(std::uint32_t index) {

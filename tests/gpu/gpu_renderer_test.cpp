@@ -101,7 +101,7 @@ TEST_F(GpuRendererTest, LinearRowsComeInBandsThatAreTheWholeRendersRows) {
     std::vector<std::uint32_t> firstRows;
     GpuRenderResult joined;
     const GpuRenderResult result = banded.renderLinearRows(
-        scene, Precision::Auto, GpuOutput::LinearClassesAndAov, [&](std::uint32_t firstRow, const GpuRenderResult& band) {
+        scene, banded.plan(scene), GpuOutput::LinearClassesAndAov, [&](std::uint32_t firstRow, const GpuRenderResult& band) {
             firstRows.push_back(firstRow);
             EXPECT_EQ(band.image.width, 100u);
             EXPECT_EQ(band.image.height, std::min(7u, 75u - firstRow));
@@ -129,7 +129,7 @@ TEST_F(GpuRendererTest, ASceneTooLargeForUniformBuffersUsesTheDataDrivenShaderAn
     for (int i = 0; i < 34; ++i) {
         scene.lights.push_back(PointLight{{-100.0 + 6.0 * i, 150, -50}, Color(1), 300});
     }
-    ASSERT_FALSE(gpu::isSmallScene(scene));
+    ASSERT_FALSE(isSmallScene(scene));
     GpuRenderer renderer(context());
     const CpuRender cpu = renderOnCpu(scene);
     for (Precision precision : {Precision::F32, Precision::F64}) {

@@ -19,19 +19,19 @@ Scene checkerPlaneAndBall(const glm::dvec3& eye) {
 }
 
 gpu::GpuScene<float> packRelative(const Scene& scene) {
-    return gpu::packScene<float>(scene, gpu::Placement::CameraRelative);
+    return gpu::packScene<float>(scene, placementFor(scene, Formulation::Robust));
 }
 
 TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
     const Scene scene = checkerPlaneAndBall({1, 60, -120});
     // Lengths from the checker's 20 to the sphere's far side |(-11, 0, 120)| + 30 = 150.5: their
     // geometric middle, 54.9, rounds to 2^6.
-    ASSERT_EQ(gpu::placementScale(scene), 64.0);
+    ASSERT_EQ(placementScale(scene), 64.0);
     const gpu::GpuScene<float> packed = packRelative(scene);
     EXPECT_EQ(packed.frame.origin, glm::vec4(0));
-    EXPECT_EQ(packed.nodes[0].kinds.x, gpu::kGeometryPlane);
+    EXPECT_EQ(packed.nodes[0].kinds.x, gpu::GEOMETRY_PLANE);
     EXPECT_EQ(packed.nodes[0].geometry.x, (15.0f - 60.0f) / 64);
-    EXPECT_EQ(packed.nodes[1].kinds.x, gpu::kGeometrySphere);
+    EXPECT_EQ(packed.nodes[1].kinds.x, gpu::GEOMETRY_SPHERE);
     EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30) / 64.0f);
     EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0) / 64.0f);
     // 1/r^2 falloff in units 64 times larger: the power is 64^2 times smaller.
@@ -41,7 +41,8 @@ TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
 }
 
 TEST(PackScene, WorldPlacementUploadsTheSceneAsWritten) {
-    const gpu::GpuScene<float> packed = gpu::packScene<float>(checkerPlaneAndBall({1, 60, -120}), gpu::Placement::World);
+    const gpu::GpuScene<float> packed =
+        gpu::packScene<float>(checkerPlaneAndBall({1, 60, -120}), placementFor(Scene{}, Formulation::Textbook));
     EXPECT_EQ(packed.frame.origin, glm::vec4(1, 60, -120, 0));
     EXPECT_EQ(packed.nodes[0].geometry.x, 15.0f);
     EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-10, 60, 0, 30));
@@ -51,8 +52,8 @@ TEST(PackScene, WorldPlacementUploadsTheSceneAsWritten) {
 TEST(PackScene, DoubleLayoutKeepsWhatFloatWouldRound) {
     Scene scene = checkerPlaneAndBall({0, 0, 0});
     scene.nodes[1].geometry = Sphere{{0.1, 0, 100}, 1};
-    const double scale = gpu::placementScale(scene);
-    EXPECT_EQ(gpu::packScene<double>(scene, gpu::Placement::CameraRelative).nodes[1].geometry.x, 0.1 / scale);
+    const double scale = placementScale(scene);
+    EXPECT_EQ(gpu::packScene<double>(scene, placementFor(scene, Formulation::Robust)).nodes[1].geometry.x, 0.1 / scale);
 }
 
 TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
@@ -72,7 +73,7 @@ TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {
     // Eye x / 20 = -1.25: cell -2, fraction 0.75; z / 20 = 2.35: cell 2, fraction 0.35; parity 0.
     const Scene scene = checkerPlaneAndBall({-25, 60, 47});
     gpu::GpuScene<float> packed = packRelative(scene);
-    EXPECT_FLOAT_EQ(packed.nodes[0].checker.x, float(20.0 / gpu::placementScale(scene)));
+    EXPECT_FLOAT_EQ(packed.nodes[0].checker.x, float(20.0 / placementScale(scene)));
     EXPECT_NEAR(packed.nodes[0].checker.y, 0.75f, 1e-7f);
     EXPECT_NEAR(packed.nodes[0].checker.z, 0.35f, 1e-6f);
     EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);

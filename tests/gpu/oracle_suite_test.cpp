@@ -31,9 +31,9 @@ constexpr double kFloat64Roundoff = 0x1p-53;
 
 LightStatus gpuStatus(std::uint32_t status) {
     switch (status) {
-        case gpu::kTraceLightLit: return LightStatus::Lit;
-        case gpu::kTraceLightFacingAway: return LightStatus::FacingAway;
-        case gpu::kTraceLightShadowed: return LightStatus::Shadowed;
+        case gpu::TRACE_LIGHT_LIT: return LightStatus::Lit;
+        case gpu::TRACE_LIGHT_FACING_AWAY: return LightStatus::FacingAway;
+        case gpu::TRACE_LIGHT_SHADOWED: return LightStatus::Shadowed;
         default: return LightStatus::AtPoint;
     }
 }

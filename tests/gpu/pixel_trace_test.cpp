@@ -73,7 +73,7 @@ TEST_F(PixelTraceTest, LitFloorPixelMatchesTheClosedFormOnBothBackends) {
         EXPECT_EQ(g.flags & PixelClass::kOddCheckerBit, PixelClass::kOddCheckerBit);
         EXPECT_NEAR(g.albedo.g, 0.3f, 1e-7);
         ASSERT_EQ(g.lights.size(), 1u);
-        EXPECT_EQ(g.lights[0].status, gpu::kTraceLightLit);
+        EXPECT_EQ(g.lights[0].status, gpu::TRACE_LIGHT_LIT);
         EXPECT_EQ(c.lights[0].decision.reach, LightReach::Lit);
         EXPECT_NEAR(g.lights[0].cosTheta, cosTheta, 1e-6);
         EXPECT_NEAR(g.lights[0].distanceSquared, r2, 1e-5 * r2);
@@ -93,7 +93,7 @@ TEST_F(PixelTraceTest, ShadowCentreIsShadowedOnBothBackends) {
     const glm::dvec3 p = demo::kEye + *demo::planeT(d) * d;
     ASSERT_LT(demo::segmentClearance(p), 0.5 * demo::kSphereRadius);  // well inside the shadow
     EXPECT_EQ(g.node, 0u);
-    EXPECT_EQ(g.lights[0].status, gpu::kTraceLightShadowed);
+    EXPECT_EQ(g.lights[0].status, gpu::TRACE_LIGHT_SHADOWED);
     EXPECT_EQ(c.lights[0].decision.reach, LightReach::Shadowed);
     EXPECT_GT(g.lights[0].cosTheta, 0.0);
     EXPECT_EQ(g.lights[0].contribution, glm::vec3(0));
@@ -112,7 +112,7 @@ TEST_F(PixelTraceTest, LightBelowTheFloorFacesAwayOnBothBackends) {
         const CpuPixelExplanation c = explainPixel(scene, demo::kFloorX, demo::kFloorY, 0);
         EXPECT_EQ(g.node, 0u);
         ASSERT_EQ(g.lights.size(), 1u);
-        EXPECT_EQ(g.lights[0].status, gpu::kTraceLightFacingAway);
+        EXPECT_EQ(g.lights[0].status, gpu::TRACE_LIGHT_FACING_AWAY);
         EXPECT_EQ(c.lights[0].decision.reach, LightReach::FacingAway);
         EXPECT_LT(g.lights[0].cosTheta, 0.0);
         EXPECT_EQ(g.lights[0].shadowLength, 0.0);
@@ -140,7 +140,7 @@ TEST_F(PixelTraceTest, SpherePixelShowsBothCandidatesAndTheNearerWins) {
     for (int i = 0; i < 3; ++i) {
         EXPECT_NEAR(g.normal[i], outward[i], 1e-5);
     }
-    EXPECT_EQ(g.lights[0].status, gpu::kTraceLightLit);
+    EXPECT_EQ(g.lights[0].status, gpu::TRACE_LIGHT_LIT);
     expectAgreement(g, c);
 }
 
@@ -150,7 +150,7 @@ TEST_F(PixelTraceTest, BackgroundPixelHasNoHitAndNoLightTerms) {
     const GpuPixelTrace g = renderer.tracePixel(scene, Precision::F32, 0, 0, 0);
     EXPECT_EQ(g.node, PixelClass::kBackground);
     EXPECT_TRUE(std::isinf(g.candidates[0]) && std::isinf(g.candidates[1]));
-    EXPECT_EQ(g.lights[0].status, gpu::kTraceLightNotEvaluated);
+    EXPECT_EQ(g.lights[0].status, gpu::TRACE_LIGHT_NOT_EVALUATED);
     EXPECT_EQ(g.pixelColor, glm::vec3(0));
     expectAgreement(g, explainPixel(scene, 0, 0, 0));
 }

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gpu_scene.h"
+#include "gpu/render_plan.h"
 #include "gpu/precision.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
@@ -35,7 +35,7 @@ TEST(Precision, ConditioningOfTheLectureDemo) {
     EXPECT_EQ(c.smallestFeature, 10.0);
     EXPECT_EQ(choosePrecision(scene, true), Precision::F32);
     // Lengths from the radius 10 to the sphere's far side 130.4: 2^round(log2(sqrt(10 * 130.4))).
-    EXPECT_EQ(gpu::placementScale(scene), 32.0);
+    EXPECT_EQ(placementScale(scene), 32.0);
     EXPECT_EQ(sceneMagnitudes(scene).smallest, 10.0);
     EXPECT_NEAR(sceneMagnitudes(scene).largest, std::sqrt(100.0 + 14400.0) + 10.0, 1e-9);
     EXPECT_FALSE(float32RangeProblem(scene));
@@ -86,7 +86,7 @@ TEST(Precision, ScaleOfTheSceneDoesNotMatter) {
     EXPECT_NEAR(estimateConditioning(small).ratio(), 1001.0, 1e-9);
     EXPECT_EQ(choosePrecision(small, true), Precision::F32);
     // The geometric middle of the radius 1e-30 and the far side 1.001e-27.
-    EXPECT_EQ(gpu::placementScale(small), std::exp2(std::round(0.5 * std::log2(1e-30 * 1.001e-27))));
+    EXPECT_EQ(placementScale(small), std::exp2(std::round(0.5 * std::log2(1e-30 * 1.001e-27))));
 }
 
 // Issue 12, finding 4: the scale followed the farthest object, so one far out of view pushed
@@ -94,7 +94,7 @@ TEST(Precision, ScaleOfTheSceneDoesNotMatter) {
 TEST(Precision, AnObjectFarOutOfViewMovesTheScaleByTheSquareRootOfItsDistance) {
     Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
     scene.nodes.push_back(Node{Sphere{{1e22, 60, 0}, 1.0}, 1});
-    EXPECT_EQ(gpu::placementScale(scene), std::exp2(std::round(0.5 * std::log2(1e22 + 1.0))));
+    EXPECT_EQ(placementScale(scene), std::exp2(std::round(0.5 * std::log2(1e22 + 1.0))));
     EXPECT_FALSE(float32RangeProblem(scene));
     scene.nodes.back() = Node{Sphere{{3.5e38, 60, 0}, 1.0}, 1};
     ASSERT_TRUE(float32RangeProblem(scene));

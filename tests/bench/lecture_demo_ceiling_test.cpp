@@ -7,10 +7,10 @@
 
 #include "compare/compare.h"
 #include "gpu/gpu_renderer.h"
-#include "gpu/lecture_demo_ceiling.h"
+#include "bench/lecture_demo_ceiling.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
-#include "validated_vulkan.h"
+#include "gpu/validated_vulkan.h"
 
 namespace hexray {
 namespace {
@@ -55,7 +55,7 @@ TEST_F(LectureDemoCeilingTest, RendersTheDemoAsTheRendererDoes) {
     scene.image.width = 400;
     scene.image.height = 300;
     GpuRenderer renderer(context());
-    const GpuRenderResult ceiling = renderer.renderLectureDemoCeiling(scene);
+    const GpuRenderResult ceiling = renderer.render(scene, lectureDemoCeilingPlan(renderer, scene), GpuOutput::Encoded8);
     const GpuRenderResult rendered = renderer.render(scene, Precision::F32, GpuOutput::Encoded8);
     ASSERT_EQ(ceiling.encoded.bytes.size(), rendered.encoded.bytes.size());
     const ErrorMetrics error = compareEncoded(rendered.encoded, ceiling.encoded);
@@ -69,7 +69,7 @@ TEST_F(LectureDemoCeilingTest, RefusesAnyOtherScene) {
     Scene scene = demoScene();
     std::get<Sphere>(scene.nodes[1].geometry).radius = 11;
     GpuRenderer renderer(context());
-    EXPECT_THROW(renderer.renderLectureDemoCeiling(scene), std::invalid_argument);
+    EXPECT_THROW(lectureDemoCeilingPlan(renderer, scene), std::invalid_argument);
 }
 
 }  // namespace

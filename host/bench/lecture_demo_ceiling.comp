@@ -2,17 +2,15 @@
 // lavapipe's ceiling for the lecture demo scene (scenes/lecture-demo.json): a hand-written,
 // straight-line kernel with the scene's values as literals, in float, with the textbook
 // arithmetic (b^2 - c discriminant, shadow rays nudged off by 1e-3 t). It is not a renderer:
-// `hexray bench` times it beside render.comp, as the yardstick for how far specialising the
-// data-driven shader gets. Only the eye is hard-wired with the scene; the camera's sheet,
+// `hexray bench` times it beside the renderer, as the yardstick for the kernel hexray generates
+// for the scene. Only the eye is hard-wired with the scene; the camera's sheet,
 // image size, sampling offset and output encoding come from the host as for render.comp.
 #extension GL_GOOGLE_include_directive : require
+#define HEXRAY_UNIFORM_SCENE
 
-layout(local_size_x_id = 0, local_size_y_id = 1) in;
-
-#include "precision.glsl"
-#include "scene_data.glsl"
-#include "specialization.glsl"
 #include "encode.glsl"
+#include "render_outputs.glsl"
+#include "scene_data.glsl"
 
 const vec3 EYE = vec3(0.0, 60.0, -120.0);
 const vec3 BALL_CENTRE = vec3(-10.0, 60.0, 0.0);

@@ -1,6 +1,12 @@
-#include "gpu/lecture_demo_ceiling.h"
+#include "bench/lecture_demo_ceiling.h"
 
+#include <stdexcept>
 #include <variant>
+
+namespace {
+// SPIR-V compiled from host/bench/lecture_demo_ceiling.comp at build time.
+#include "kLectureDemoCeilingSpv.h"
+}  // namespace
 
 namespace hexray {
 
@@ -37,6 +43,16 @@ bool isLectureDemoScene(const Scene& scene) {
            sphere->radius == 10 &&
            isShader(scene, scene.nodes[0], CheckerShader{Color(0, 0, 0.8), Color(0.2, 0.3, 0.6), 20}) &&
            isShader(scene, scene.nodes[1], LambertShader{Color(0.8, 0, 0)});
+}
+
+RenderPlan lectureDemoCeilingPlan(const GpuRenderer& renderer, const Scene& scene) {
+    if (!isLectureDemoScene(scene)) {
+        throw std::invalid_argument("the lecture demo's hand-written kernel renders only that scene");
+    }
+    RenderPlan plan = renderer.plan(scene, {Precision::F32});
+    // Its blocks are the uniform layout's, which the demo scene (2 nodes) is planned with.
+    plan.kernel = Kernel{"lecture demo, hand-written", nullptr, kLectureDemoCeilingSpv};
+    return plan;
 }
 
 }  // namespace hexray

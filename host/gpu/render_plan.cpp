@@ -1,0 +1,184 @@
+#include "gpu/render_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "camera/camera.h"
+#include "gpu/prebuilt_kernels.h"
+#include "shader_interface.h"
+#include "vulkan/vulkan_context.h"
+
+namespace hexray {
+namespace {
+
+// ---------------------------------------------------------------- tunables
+// The robust sphere test (the stable root pair, the normal from the chord) is needed only for rays
+// from an origin close to the sphere's surface, where the near root cancels and a camera or light
+// on the sphere must see its power of exactly 0 as a root at 0. The fast form serves an origin at
+// distance d from the centre of a sphere of radius r when d >= kFastMinOutside * r or
+// d <= kFastMaxInside * r: for a camera ray the Hearn-Baker discriminant with the plain roots and
+// the normal from the hit point; for a shadow ray from a light, which decides only blocked or
+// not, b^2 - power when also d <= kFastMaxShadowOutside * r (the discriminant's error grows like
+// d^2 / r; at 32 r it is still a hundredth of the band compare calls ambiguous, 2^-17 of the
+// distances), else the robust test.
+constexpr double kFastMinOutside = 1.25;
+constexpr double kFastMaxInside = 0.5;
+constexpr double kFastMaxShadowOutside = 32.0;
+
+// How a ray from `origin`, the same for every pixel (the eye, or a light), meets the sphere.
+SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formulation formulation, double maxOutside) {
+    if (formulation == Formulation::Textbook) {
+        return SphereTest::Textbook;
+    }
+    const double distance = glm::length(sphere.center - origin);
+    const double r = sphere.radius;
+    const bool outside = distance >= kFastMinOutside * r && distance <= maxOutside * r;
+    return outside || distance <= kFastMaxInside * r ? SphereTest::Fast : SphereTest::Robust;
+}
+
+// The shadow tests a light needs. A plane blocks a segment only when its ends lie strictly on
+// opposite sides; every point the camera sees lies on the eye's side of a plane or on it (a camera
+// ray stops at the plane), so a plane with the eye and the light strictly on one side never blocks
+// that light. The textbook formulation tests every node, as a course would.
+std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& light, Formulation formulation) {
+    std::vector<ShadowTest> tests;
+    const double eyeY = scene.camera.position.y;
+    for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
+        if (const auto* plane = std::get_if<Plane>(&scene.nodes[i].geometry)) {
+            const double eyeSide = eyeY - plane->height;
+            const double lightSide = light.position.y - plane->height;
+            const bool sameSide = (eyeSide > 0 && lightSide > 0) || (eyeSide < 0 && lightSide < 0);
+            if (!sameSide || formulation == Formulation::Textbook) {
+                tests.push_back({i, SphereTest::Robust});
+            }
+        } else {
+            const Sphere& sphere = std::get<Sphere>(scene.nodes[i].geometry);
+            tests.push_back({i, sphereTestFor(sphere, light.position, formulation, kFastMaxShadowOutside),
+                             glm::length(light.position - sphere.center) > sphere.radius});
+        }
+    }
+    return tests;
+}
+
+std::uint32_t shaderKind(const Shader& shader) {
+    if (std::holds_alternative<ConstantShader>(shader)) return gpu::SHADER_CONSTANT;
+    if (std::holds_alternative<LambertShader>(shader)) return gpu::SHADER_LAMBERT;
+    return gpu::SHADER_CHECKER;
+}
+
+SceneCode sceneCodeFor(const Scene& scene, const RenderPlan& plan) {
+    SceneCode code;
+    code.width = plan.width;
+    code.formulation = plan.formulation;
+    const glm::dvec3 eye = scene.camera.position;
+    for (const Node& node : scene.nodes) {
+        NodeCode nodeCode;
+        nodeCode.shader = shaderKind(scene.shaders[node.shaderIndex]);
+        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+            nodeCode.geometry = gpu::GEOMETRY_SPHERE;
+            nodeCode.sphereTest =
+                sphereTestFor(*sphere, eye, plan.formulation, std::numeric_limits<double>::infinity());
+            nodeCode.cameraOutside =
+                plan.formulation == Formulation::Robust && glm::length(sphere->center - eye) > sphere->radius;
+        } else {
+            nodeCode.geometry = gpu::GEOMETRY_PLANE;
+        }
+        code.nodes.push_back(nodeCode);
+    }
+    for (const PointLight& light : scene.lights) {
+        code.shadowTests.push_back(shadowTestsFor(scene, light, plan.formulation));
+    }
+    code.eyeAtOrigin = plan.placement.cameraRelative;
+    return code;
+}
+
+// The depth of the BVH below node `index` (nodes on the longest path to a leaf).
+std::uint32_t bvhDepth(const Bvh& bvh, std::uint32_t index = 0) {
+    const BvhNode& node = bvh.nodes[index];
+    if (node.isLeaf()) {
+        return 1;
+    }
+    return 1 + std::max(bvhDepth(bvh, index + 1), bvhDepth(bvh, node.firstOrSecondChild));
+}
+
+SceneLayout chooseLayout(const Scene& scene, Acceleration acceleration, const DeviceAbilities& device) {
+    const bool wantsBvh = acceleration == Acceleration::Bvh ||
+                          (acceleration == Acceleration::Auto && !isSmallScene(scene) && bvhPays(scene));
+    if (wantsBvh && device.subgroupVote && countSpheres(scene) > 0) {
+        return SceneLayout::StorageBvh;
+    }
+    return isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
+}
+
+}  // namespace
+
+Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device,
+                           std::vector<std::string>* warnings) {
+    if (requested == Precision::Auto) {
+        return choosePrecision(scene, device.float64);
+    }
+    if (const auto problem = float32RangeProblem(scene); problem && requested == Precision::F32 && device.float64) {
+        if (warnings) {
+            warnings->push_back("float32 cannot hold this scene (" + *problem + "); rendering in f64 instead");
+        }
+        return Precision::F64;
+    }
+    if (requested == Precision::F64 && !device.float64) {
+        throw VulkanError(VulkanFailure::NoFloat64,
+                          "--precision f64 needs shaderFloat64, which " + device.name + " does not have",
+                          "use --precision f32");
+    }
+    return requested;
+}
+
+bool isSmallScene(const Scene& scene) {
+    return scene.nodes.size() <= gpu::SMALL_SCENE_CAPACITY && scene.lights.size() <= gpu::SMALL_SCENE_CAPACITY;
+}
+
+double placementScale(const Scene& scene) {
+    // The power of two nearest the geometric middle of the scene's lengths: the squares of the
+    // smallest and the largest then stay equally far inside the number range, and an object far out
+    // of view moves the scale by the square root of its distance only (a power of two: no visible
+    // pixel changes, as long as the range fits; see float32RangeProblem).
+    const MagnitudeRange range = sceneMagnitudes(scene);
+    return range.smallest > 0 ? std::exp2(std::round(0.5 * (std::log2(range.smallest) + std::log2(range.largest))))
+                              : 1.0;
+}
+
+Placement placementFor(const Scene& scene, Formulation formulation) {
+    if (formulation == Formulation::Textbook) {
+        return Placement{false, glm::dvec3(0.0), 1.0};
+    }
+    return Placement{true, makePixelSheet(scene.camera, sheetAspect(scene)).origin, placementScale(scene)};
+}
+
+RenderPlan planRender(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device) {
+    RenderPlan plan;
+    plan.precision = resolvePrecision(scene, request.precision, device, &plan.warnings);
+    plan.width = plan.precision == Precision::F64 ? FloatWidth::F64 : FloatWidth::F32;
+    plan.formulation = plan.precision == Precision::F32Naive ? Formulation::Textbook : Formulation::Robust;
+    plan.placement = placementFor(scene, plan.formulation);
+    plan.layout = chooseLayout(scene, request.acceleration, device);
+    if (plan.layout == SceneLayout::StorageBvh) {
+        auto bvh = std::make_shared<Bvh>(buildBvh(scene));
+        if (bvhDepth(*bvh) <= gpu::BVH_STACK_SIZE) {
+            plan.bvh = std::move(bvh);
+        } else {
+            plan.layout = isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
+        }
+    }
+    if (plan.layout == SceneLayout::Uniform) {
+        plan.kernel = Kernel{"generated for the scene", std::make_shared<const SceneCode>(sceneCodeFor(scene, plan)), {}};
+    } else {
+        const bool bvh = plan.layout == SceneLayout::StorageBvh;
+        plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, bvh), nullptr,
+                             dataDrivenKernel(plan.width, plan.formulation, bvh)};
+    }
+    return plan;
+}
+
+}  // namespace hexray

@@ -1,0 +1,31 @@
+#pragma once
+// A 64-bit FNV-1a hash: the same value on every run and build, for cache file names. Not a
+// guard against collisions on its own: the kernel cache stores the key text and compares it.
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace hexray {
+
+class StableHash {
+public:
+    void add(std::string_view bytes) {
+        for (const char c : bytes) {
+            value_ = (value_ ^ std::uint8_t(c)) * 0x100000001b3ull;
+        }
+        value_ = (value_ ^ 0xffu) * 0x100000001b3ull;  // a separator: "ab"+"c" differs from "a"+"bc"
+    }
+    std::uint64_t value() const { return value_; }
+    std::string hex() const {
+        char text[17];
+        std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value_));
+        return text;
+    }
+
+private:
+    std::uint64_t value_ = 0xcbf29ce484222325ull;
+};
+
+}  // namespace hexray

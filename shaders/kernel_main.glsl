@@ -1,0 +1,115 @@
+// The entry point every kernel shares: one invocation per pixel averages its samples, and
+// writes what OUTPUT_MODE asks for. A kernel defines, before including this file, how a ray
+// finds its nearest hit and how a hit is shaded: the data-driven loops of render.comp, or the
+// code hexray generates for one scene (host/gpu/kernel_generator.h).
+#ifndef HEXRAY_KERNEL_MAIN_GLSL
+#define HEXRAY_KERNEL_MAIN_GLSL
+
+#include "camera_ray.glsl"
+#include "encode.glsl"
+#include "inspect_hooks.glsl"
+#include "ray.glsl"
+#include "render_outputs.glsl"
+#include "scene_data.glsl"
+#include "surface.glsl"
+
+Hit findNearestHit(Ray ray);
+// The colour of a hit and its pixel-class flags (ODD_CHECKER_BIT, a bit per lit light).
+vec3 shade(Ray ray, Hit hit, out uint flags);
+// Where the hit is and which way it faces, for any node (inspection only).
+Surface hitSurface(Ray ray, Hit hit);
+// Node `node`'s distance along a camera ray, NO_HIT for a miss (inspection only).
+real candidateDistance(Ray ray, uint node);
+
+// What the AOV buffer holds for the pixel's first sample.
+void writeAov(uint index, Ray ray, Hit hit) {
+    if (hit.node == NO_NODE) {
+        aovs[index] = vec4(0.0);
+        return;
+    }
+    aovs[index] = vec4(vec3(hitSurface(ray, hit).normal), float(hit.t));
+}
+
+// One invocation replays the requested pixel as main() renders it, recording every node's
+// candidate t, the hit it chose, and, through the hooks called while shading, the surface and
+// each light's terms for the requested sample.
+void traceMain() {
+    if (gl_GlobalInvocationID.xy != uvec2(0u)) {
+        return;
+    }
+    uvec2 pixel = trace.header.request.xy;
+    uint tracedSample = trace.header.request.z;
+    vec3 sum = vec3(0.0);
+    for (uint sampleIndex = 0u; sampleIndex < SAMPLES_PER_PIXEL; ++sampleIndex) {
+        Ray ray = primaryRay(pixel, sampleIndex);
+        traceActive = sampleIndex == tracedSample;
+        Hit hit = findNearestHit(ray);
+        if (traceActive && hit.node != NO_NODE) {
+            // Constant shaders never build a Surface; lit ones overwrite this with their own.
+            traceSurface(hitSurface(ray, hit), nodes[hit.node].color1.rgb);
+        }
+        uint flags = 0u;
+        vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);
+        sum += color;
+        if (traceActive) {
+            trace.header.rayOrigin.xyz = ray.origin;
+            trace.header.rayDirection.xyz = ray.direction;
+            trace.header.hitPosition.w = hit.t;
+            trace.header.result.yz = uvec2(hit.node, flags);
+            trace.header.sampleColor = vec4(color, 1.0);
+            for (uint i = 0u; i < frame.nodeCount; ++i) {
+                trace.entries[i].values = vec4r(candidateDistance(ray, i), 0.0, 0.0, 0.0);
+                trace.entries[i].status = uvec4(nodes[i].kinds.x, 0u, 0u, 0u);
+            }
+        }
+    }
+    traceActive = false;
+    trace.header.pixelColor = vec4(sum / float(SAMPLES_PER_PIXEL), 1.0);
+    trace.header.result.x = 1u;
+}
+
+void main() {
+    if (OUTPUT_MODE == OUTPUT_TRACE) {
+        traceMain();
+        return;
+    }
+    uvec2 bandPixel = gl_GlobalInvocationID.xy;
+    if (bandPixel.x >= frame.imageSize.x || bandPixel.y >= band.rowCount) {
+        return;
+    }
+    // The pixel is classified by its first sample (as the CPU reference does).
+    uint node = NO_NODE;
+    uint flags = 0u;
+    Ray firstRay;
+    Hit firstHit;
+    vec3 sum = vec3(0.0);
+    for (uint sampleIndex = 0u; sampleIndex < SAMPLES_PER_PIXEL; ++sampleIndex) {
+        Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y), sampleIndex);
+        Hit hit = findNearestHit(ray);
+        uint sampleFlags = 0u;
+        // Shaded whatever the hit: lavapipe runs both sides of a branch anyway, and a select
+        // costs it less than the branch's bookkeeping.
+        vec3 shaded = shade(ray, hit, sampleFlags);
+        bool background = hit.node == NO_NODE;
+        sum += background ? frame.background.rgb : shaded;
+        if (sampleIndex == 0u) {
+            node = hit.node;
+            flags = background ? 0u : sampleFlags;
+            firstRay = ray;
+            firstHit = hit;
+        }
+    }
+    vec3 color = sum / float(SAMPLES_PER_PIXEL);
+    uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
+    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
+        pixels[index] = vec4(color, 1.0);
+        classes[index] = uvec2(node, flags);
+        if (OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
+            writeAov(index, firstRay, firstHit);
+        }
+    } else {
+        encodedPixels[index] = encode8(color);
+    }
+}
+
+#endif  // HEXRAY_KERNEL_MAIN_GLSL

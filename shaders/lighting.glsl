@@ -1,0 +1,58 @@
+// One point light seen from a surface: its direction, 1/r^2 falloff and Lambert's cosine, and
+// what the light then adds (the shadow test itself is the kernel's).
+#ifndef HEXRAY_LIGHTING_GLSL
+#define HEXRAY_LIGHTING_GLSL
+
+#include "inspect_hooks.glsl"
+#include "precision.glsl"
+#include "ray.glsl"
+#include "surface.glsl"
+
+struct LightPath {
+    real r2;            // squared distance from the surface point to the light
+    real cosTheta;      // 0 when the light is on the point
+    bool facing;        // the surface faces the light
+    Ray shadowRay;      // from the surface's shadow origin toward the light
+    real shadowLength;  // the shadow ray's distance to the light; 0 when not facing
+};
+
+LightPath lightPath(Surface s, vec3r lightPosition) {
+    LightPath path;
+    // From the shadow origin, which is the point itself or (off a sphere the shadow rays must not
+    // hit again) a few units of roundoff away: one square root serves cos theta, the shadow ray's
+    // direction and its length.
+    vec3r toLight = lightPosition - s.shadowOrigin;
+    path.r2 = dot(toLight, toLight);
+    real inverseDistance = inversesqrt(path.r2);
+    // A light exactly at the point (r2 = 0) has no direction and contributes nothing.
+    real cosTheta = dot(s.normal, toLight) * inverseDistance;
+    path.facing = path.r2 > 0.0 && cosTheta > 0.0;
+    path.cosTheta = path.r2 == 0.0 ? 0.0 : cosTheta;
+    path.shadowRay = Ray(s.shadowOrigin, toLight * inverseDistance);
+    // A surface facing away asks about an empty segment: the answer is unused, and a BVH walk
+    // opens no box for it (straight-line code, as lavapipe runs a skipped branch anyway).
+    path.shadowLength = path.facing ? path.r2 * inverseDistance : 0.0;
+    return path;
+}
+
+// Light terms and their sum are capped just below float's limit: a light nearly touching the
+// point would give inf, and a zero colour channel times inf NaN. A term that large saturates the
+// pixel anyway.
+const float MAX_LIGHT_TERM = 3.0e38;
+
+// Light `index`'s part of the irradiance; sets its lit bit in `flags` and records it in a trace.
+vec3 lightTerm(uint index, vec4 power, LightPath path, bool shadowed, inout uint flags) {
+    bool lit = path.facing && !shadowed;
+    vec3 contribution = lit ? power.rgb * min(float(path.cosTheta / path.r2), MAX_LIGHT_TERM) : vec3(0.0);
+    uint status = path.r2 == 0.0 ? TRACE_LIGHT_AT_POINT
+                : !path.facing   ? TRACE_LIGHT_FACING_AWAY
+                : shadowed       ? TRACE_LIGHT_SHADOWED
+                                 : TRACE_LIGHT_LIT;
+    traceLight(index, status, path.cosTheta, path.r2, path.shadowLength, contribution);
+    if (lit && index < CLASSIFIED_LIGHTS) {
+        flags |= 2u << index;
+    }
+    return contribution;
+}
+
+#endif  // HEXRAY_LIGHTING_GLSL

@@ -1,0 +1,33 @@
+// What a render writes, and which rows: the output buffers, the band of rows (push constants),
+// the specialization constants every kernel takes (what to write, how many samples) and the
+// workgroup's size (one invocation per pixel).
+#ifndef HEXRAY_RENDER_OUTPUTS_GLSL
+#define HEXRAY_RENDER_OUTPUTS_GLSL
+
+#include "shader_interface.h"
+
+layout(local_size_x = WORKGROUP_SIZE, local_size_y = WORKGROUP_SIZE) in;
+
+layout(constant_id = OUTPUT_MODE_ID) const uint OUTPUT_MODE = OUTPUT_LINEAR_AND_CLASSES;
+layout(constant_id = SAMPLES_PER_PIXEL_ID) const uint SAMPLES_PER_PIXEL = 1u;  // anti-aliasing
+
+layout(std430, set = 0, binding = PIXEL_BINDING) writeonly buffer PixelBlock {
+    vec4 pixels[];    // linear RGB of the rows of this band
+};
+
+// What each pixel shows: .x node index (BACKGROUND), .y flags (see shader_interface.h).
+layout(std430, set = 0, binding = CLASS_BINDING) writeonly buffer ClassBlock {
+    uvec2 classes[];
+};
+
+// The finished image, when that is all the host wants: RGBA8 packed in a uint, R lowest.
+layout(std430, set = 0, binding = ENCODED_BINDING) writeonly buffer EncodedBlock {
+    uint encodedPixels[];
+};
+
+layout(push_constant) uniform BandBlock {
+    uint firstRow;
+    uint rowCount;
+} band;
+
+#endif  // HEXRAY_RENDER_OUTPUTS_GLSL

@@ -1,0 +1,80 @@
+// Every constant the host (C++) and the shaders (GLSL) must agree on, read by both: the C++
+// side includes this file from host/gpu/gpu_layout.h and host/image/pixel_class.h, the GLSL
+// side from the shader library. The std430 struct mirrors and their offset checks are C++
+// only (host/gpu/gpu_layout.h); their GLSL declarations are in scene_data.glsl.
+#ifndef HEXRAY_SHADER_INTERFACE_H
+#define HEXRAY_SHADER_INTERFACE_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace hexray::gpu {
+using uint = std::uint32_t;
+#define HEXRAY_CONSTANT inline constexpr
+#else
+#define HEXRAY_CONSTANT const
+#endif
+
+// Local size in x and y of every kernel: one invocation per pixel, WORKGROUP_SIZE² per group.
+HEXRAY_CONSTANT uint WORKGROUP_SIZE = 8u;
+
+// Descriptor bindings of set 0.
+HEXRAY_CONSTANT uint FRAME_BINDING = 0u;
+HEXRAY_CONSTANT uint NODE_BINDING = 1u;
+HEXRAY_CONSTANT uint LIGHT_BINDING = 2u;
+HEXRAY_CONSTANT uint PIXEL_BINDING = 3u;    // linear RGB
+HEXRAY_CONSTANT uint CLASS_BINDING = 4u;    // what each pixel shows (node, flags)
+HEXRAY_CONSTANT uint ENCODED_BINDING = 5u;  // the finished 8-bit image
+HEXRAY_CONSTANT uint BVH_BINDING = 6u;      // BVH scenes: the tree's nodes
+HEXRAY_CONSTANT uint PRIMITIVE_BINDING = 7u;  // BVH scenes: planes, then spheres in leaf order
+HEXRAY_CONSTANT uint AOV_BINDING = 8u;      // inspection: per-pixel depth and normal
+HEXRAY_CONSTANT uint TRACE_BINDING = 9u;    // inspection: one pixel explained
+HEXRAY_CONSTANT uint BINDING_COUNT = 10u;
+
+// Node kinds (GpuNode::kinds.x and .y).
+HEXRAY_CONSTANT uint GEOMETRY_PLANE = 0u;
+HEXRAY_CONSTANT uint GEOMETRY_SPHERE = 1u;
+HEXRAY_CONSTANT uint SHADER_CONSTANT = 0u;
+HEXRAY_CONSTANT uint SHADER_LAMBERT = 1u;
+HEXRAY_CONSTANT uint SHADER_CHECKER = 2u;
+
+// What a render writes (specialization constant OUTPUT_MODE).
+HEXRAY_CONSTANT uint OUTPUT_LINEAR_AND_CLASSES = 0u;      // pixels and classes
+HEXRAY_CONSTANT uint OUTPUT_8BIT_LINEAR = 1u;             // the encoded image, no transfer function
+HEXRAY_CONSTANT uint OUTPUT_8BIT_SRGB = 2u;               // the encoded image, sRGB
+HEXRAY_CONSTANT uint OUTPUT_LINEAR_CLASSES_AND_AOV = 3u;  // pixels, classes and AOVs
+HEXRAY_CONSTANT uint OUTPUT_TRACE = 4u;                   // one pixel explained into the trace buffer
+
+// Specialization constant ids: every kernel's, then a generated kernel's scene values
+// (host/gpu/scene_constants.h), one id per component from FIRST_SCENE_CONSTANT_ID on.
+HEXRAY_CONSTANT uint OUTPUT_MODE_ID = 0u;
+HEXRAY_CONSTANT uint SAMPLES_PER_PIXEL_ID = 1u;
+HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 2u;
+
+// What each pixel shows (PixelClass on the host): the node index, or BACKGROUND; flags with
+// ODD_CHECKER_BIT for a checker-shaded hit in a color2 cell and bit i + 1 for each of the first
+// CLASSIFIED_LIGHTS lights that reaches the point.
+HEXRAY_CONSTANT uint BACKGROUND = 0xffffffffu;
+HEXRAY_CONSTANT uint ODD_CHECKER_BIT = 1u;
+HEXRAY_CONSTANT uint CLASSIFIED_LIGHTS = 31u;
+
+// How the shader treated one light at a traced sample.
+HEXRAY_CONSTANT uint TRACE_LIGHT_NOT_EVALUATED = 0u;  // background or a constant shader
+HEXRAY_CONSTANT uint TRACE_LIGHT_LIT = 1u;
+HEXRAY_CONSTANT uint TRACE_LIGHT_FACING_AWAY = 2u;    // cos theta <= 0
+HEXRAY_CONSTANT uint TRACE_LIGHT_SHADOWED = 3u;
+HEXRAY_CONSTANT uint TRACE_LIGHT_AT_POINT = 4u;       // r^2 = 0
+
+// The uniform-buffer layout's capacity: scenes with at most this many nodes and as many lights
+// come in uniform blocks of this many entries.
+HEXRAY_CONSTANT uint SMALL_SCENE_CAPACITY = 32u;
+
+// The BVH traversal stack's depth: a deeper tree is not uploaded (the scene is then traced
+// without one).
+HEXRAY_CONSTANT uint BVH_STACK_SIZE = 64u;
+
+#undef HEXRAY_CONSTANT
+#ifdef __cplusplus
+}  // namespace hexray::gpu
+#endif
+
+#endif  // HEXRAY_SHADER_INTERFACE_H
