@@ -5,6 +5,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include "gpu/scene_constants.h"
 #include "shader_interface.h"
@@ -34,6 +35,16 @@ std::string hex(std::uint32_t mask) {
     char text[16];
     std::snprintf(text, sizeof text, "0x%08xu", mask);
     return text;
+}
+
+// A GLSL call, e.g. call("planeDistance", "ray", "NODE0_GEOMETRY").
+template <typename... Arguments>
+std::string call(std::string_view function, const Arguments&... arguments) {
+    std::string text(function);
+    text += '(';
+    const char* separator = "";
+    ((text += separator, text += arguments, separator = ", "), ...);
+    return text + ')';
 }
 
 // Whether hit.node is in `set`, as GLSL: a shift of a constant mask (the & 31 keeps the shift
@@ -148,15 +159,16 @@ private:
         const NodeCode& n = code_.nodes[i];
         const std::string g = value(i, "GEOMETRY");
         if (n.geometry == gpu::GEOMETRY_PLANE) {
-            return (textbook() ? "planeDistanceTextbook(ray, " : "planeDistance(ray, ") + g + ")";
+            return call(textbook() ? "planeDistanceTextbook" : "planeDistance", "ray", g);
         }
-        const std::string power = value(i, "EYE_POWER");
+        const std::string center = g + ".xyz";
+        const std::string radius = g + ".w";
         switch (n.sphereTest) {
-            case SphereTest::Fast: return "sphereDistanceFast(ray, " + g + ".xyz, " + g + ".w)";
-            case SphereTest::Textbook: return "sphereDistanceTextbook(ray, " + g + ".xyz, " + g + ".w)";
+            case SphereTest::Fast: return call("sphereDistanceFast", "ray", center, radius);
+            case SphereTest::Textbook: return call("sphereDistanceTextbook", "ray", center, radius);
             case SphereTest::Robust: break;
         }
-        return "sphereDistance(ray, " + g + ".xyz, " + g + ".w, " + power + ")";
+        return call("sphereDistance", "ray", center, radius, value(i, "EYE_POWER"));
     }
 
     void findNearestHit() {
@@ -184,14 +196,14 @@ private:
     // holds, computed for the selected node's data, then the hit's kind selected.
     void surfaceFunction(const std::string& name, NodeSet set) {
         out_ << "Surface " << name << "(Ray ray, Hit hit) {\n";
-        std::string result;
+        bool declared = false;
         const auto choose = [&](NodeSet kind, const std::string& surface) {
-            if (result.empty()) {
+            if (!declared) {
                 out_ << "    Surface s = " << surface << ";\n";
             } else {
                 out_ << "    s = " << contains(kind) << " ? " << surface << " : s;\n";
             }
-            result = "s";
+            declared = true;
         };
         if (const NodeSet p = planes(set)) {
             if (textbook()) {
@@ -214,7 +226,7 @@ private:
             select("vec4r", "textbookSphere", t, "GEOMETRY");
             choose(t, "sphereSurfaceTextbook(ray, hit.t, textbookSphere)");
         }
-        if (result.empty()) {
+        if (!declared) {
             out_ << "    Surface s;\n"
                     "    s.position = vec3r(0.0); s.normal = vec3r(0.0);\n"
                     "    s.outwardNormal = vec3r(0.0); s.shadowOrigin = vec3r(0.0);\n";
@@ -238,21 +250,24 @@ private:
     std::string shadowTest(std::uint32_t light, const ShadowTest& test) const {
         const std::string g = value(test.node, "GEOMETRY");
         const std::string lightPosition = lightValue(light, "POSITION");
+        const std::string center = g + ".xyz";
+        const std::string radius = g + ".w";
         if (code_.nodes[test.node].geometry == gpu::GEOMETRY_PLANE) {
-            return textbook() ? "planeDistanceTextbook(path.shadowRay, " + g + ") < path.shadowLength"
-                              : "planeSeparates(" + g + ", path.shadowRay.origin, " + lightPosition + ")";
+            return textbook() ? call("planeDistanceTextbook", "path.shadowRay", g) + " < path.shadowLength"
+                              : call("planeSeparates", g, "path.shadowRay.origin", lightPosition);
         }
         if (textbook()) {
-            return "sphereDistanceTextbook(path.shadowRay, " + g + ".xyz, " + g + ".w) < path.shadowLength";
+            return call("sphereDistanceTextbook", "path.shadowRay", center, radius) + " < path.shadowLength";
         }
-        const std::string f = lightPosition + " - " + g + ".xyz";
+        const std::string f = lightPosition + " - " + center;
         const std::string power = lightValue(light, "NODE" + std::to_string(test.node) + "_POWER");
-        const std::string towardSurface = "-path.shadowRay.direction, path.shadowLength)";
+        const char* towardSurface = "-path.shadowRay.direction";
+        const char* length = "path.shadowLength";
         if (test.sphereTest == SphereTest::Fast) {
-            return std::string(test.lightOutside ? "sphereCrossesSegmentFromOutside(" : "sphereCrossesSegmentFromInside(") +
-                   f + ", " + power + ", " + towardSurface;
+            return call(test.lightOutside ? "sphereCrossesSegmentFromOutside" : "sphereCrossesSegmentFromInside", f,
+                        power, towardSurface, length);
         }
-        return "sphereCrossesSegment(" + f + ", " + g + ".w, " + power + ", " + towardSurface;
+        return call("sphereCrossesSegment", f, radius, power, towardSurface, length);
     }
 
     void lightBlock(std::uint32_t light) {
