@@ -107,12 +107,8 @@ public:
                     [&](NodeShortcut& shortcut) { return shortcut.start_object(size); });
     }
     bool start_array(std::size_t size) {
-        const auto makeArray = [] {
-            Json array = Json::array();
-            array.get_ref<Json::array_t&>().reserve(3);  // most are [x, y, z] or [r, g, b]
-            return array;
-        };
-        return open(true, makeArray, [&](NodeShortcut& shortcut) { return shortcut.start_array(size); });
+        return open(true, [] { return Json::array(); },
+                    [&](NodeShortcut& shortcut) { return shortcut.start_array(size); });
     }
     bool end_object() {
         return close([](NodeShortcut& shortcut) { return shortcut.end_object(); });

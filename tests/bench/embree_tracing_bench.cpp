@@ -3,7 +3,6 @@
 // scenes of the given sizes, one sample per pixel, rounds interleaved, medians. A figure for
 // the reader, not a test: see ci/scale-bench.sh.
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -11,19 +10,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench/median.h"
 #include "embree/embree_renderer.h"
 #include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
 
 using namespace hexray;
+using bench::median;
 
 namespace {
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
 
 void measure(const EmbreeRenderer& renderer, const std::string& name, Scene scene, std::uint32_t width,
              std::uint32_t height, int rounds) {

@@ -5,7 +5,6 @@
 
 #include <sys/resource.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,18 +14,14 @@
 #include <CLI/CLI.hpp>
 
 #include "accel/bvh.h"
+#include "bench/median.h"
 #include "scene/scene_loader.h"
 #include "util/milliseconds_since.h"
 
 using namespace hexray;
+using bench::median;
 
 namespace {
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
 
 double peakResidentMiB() {
     rusage usage{};
