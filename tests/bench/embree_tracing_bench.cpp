@@ -27,7 +27,9 @@ void measure(const EmbreeRenderer& renderer, const std::string& name, Scene scen
     const EmbreeTracing tracings[] = {EmbreeTracing::SingleRays, EmbreeTracing::Packets};
     std::vector<double> milliseconds[2];
     for (int round = 0; round < rounds; ++round) {
-        for (int way = 0; way < 2; ++way) milliseconds[way].push_back(renderer.render(scene, tracings[way]).renderMilliseconds);
+        for (int way = 0; way < 2; ++way) {
+            milliseconds[way].push_back(renderer.render(scene, tracings[way]).renderMilliseconds);
+        }
     }
     const double pixels = double(width) * height;
     const double single = pixels / median(milliseconds[0]) / 1e3;

@@ -36,7 +36,9 @@ int main(int argc, char** argv) {
     std::string file;
     int rounds = 3;
     std::vector<unsigned> threadCounts{1, 2};
-    app.add_option("scene", file, "a scene file (e.g. from ci/make-spheres-scene.py)")->required()->check(CLI::ExistingFile);
+    app.add_option("scene", file, "a scene file (e.g. from ci/make-spheres-scene.py)")
+        ->required()
+        ->check(CLI::ExistingFile);
     app.add_option("--rounds", rounds)->check(CLI::Range(1, 100));
     app.add_option("--threads", threadCounts, "BVH builder thread counts")->delimiter(',');
     CLI11_PARSE(app, argc, argv);
@@ -59,7 +61,8 @@ int main(int argc, char** argv) {
     std::printf("%s: %.1f MB, %zu nodes; load %.0f ms, peak %.0f MiB after loading", file.c_str(),
                 double(std::filesystem::file_size(file)) / 1e6, scene.nodes.size(), median(loadMs), loadedPeak);
     for (std::size_t i = 0; i < threadCounts.size(); ++i) {
-        std::printf("; BVH %.0f ms on %u thread%s", median(buildMs[i]), threadCounts[i], threadCounts[i] == 1 ? "" : "s");
+        const unsigned threads = threadCounts[i];
+        std::printf("; BVH %.0f ms on %u thread%s", median(buildMs[i]), threads, threads == 1 ? "" : "s");
     }
     std::printf(" (medians of %d rounds)\n", rounds);
     return 0;

@@ -622,7 +622,8 @@ TEST(SceneLoaderNodes, EachBadNodeIsNamedWithItsFirstProblem) {
 // Nodes are read as the parser meets them, but problems are reported as if the file were read
 // whole: the parser's first, then the scene's parts in a fixed order, then the first bad node.
 TEST(SceneLoaderNodes, ProblemsAreReportedInTheSameOrderWhereverTheNodesAre) {
-    const std::string badRadius = R"({"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 0}, "shader": "red"})";
+    const std::string badRadius =
+        R"({"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 0}, "shader": "red"})";
     const std::string unknownShader = R"({"geometry": {"type": "plane", "y": 0}, "shader": "blue"})";
     EXPECT_EQ(errorFor(R"({"nodes": [)" + badRadius + R"(], "image": {"width": 0, "height": 6}})"),
               "test.json: image.width: must be between 1 and 16384 (got 0)");
