@@ -1,6 +1,6 @@
 #include "scene/node_reader.h"
 
-#include <algorithm>
+#include <string_view>
 #include <utility>
 
 namespace hexray {
@@ -37,10 +37,13 @@ void NodeReader::read(const Json& element, std::size_t index) {
 }
 
 std::vector<Node> NodeReader::resolve(const std::vector<std::string>& shaderNames) && {
-    std::vector<std::uint32_t> shaderIndices;
+    // By hashing, so that many names against many shaders cost no product of the two.
+    std::unordered_map<std::string_view, std::uint32_t> shaderIndexOf;
+    for (std::size_t i = 0; i < shaderNames.size(); ++i) shaderIndexOf.emplace(shaderNames[i], std::uint32_t(i));
+    std::vector<std::uint32_t> shaderIndices;  // for each of names_; shaderNames.size() if unknown
     for (const std::string& name : names_) {
-        shaderIndices.push_back(
-            std::uint32_t(std::find(shaderNames.begin(), shaderNames.end(), name) - shaderNames.begin()));
+        const auto found = shaderIndexOf.find(name);
+        shaderIndices.push_back(found == shaderIndexOf.end() ? std::uint32_t(shaderNames.size()) : found->second);
     }
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         const std::uint32_t nameIndex = nodes_[i].shaderIndex;
