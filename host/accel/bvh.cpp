@@ -247,6 +247,10 @@ void buildParts(Splitter& splitter, PartQueue& queue) {
     }
 }
 
+std::size_t nodeCount(const Part& part) {
+    return part.nodes.size() + (part.left ? nodeCount(*part.left) + nodeCount(*part.right) : 0);
+}
+
 // Appends `part` to `nodes` in depth-first order, its child indices made absolute.
 void appendPart(const Part& part, std::vector<BvhNode>& nodes) {
     const auto offset = static_cast<std::uint32_t>(nodes.size());
@@ -286,7 +290,7 @@ std::vector<BvhNode> buildNodes(std::vector<Item>& items, unsigned threadCount) 
         buildParts(splitter, queue);
     }
     queue.rethrowFailure();
-    nodes.reserve(2 * items.size() / kMaxBvhLeafSpheres + 1);
+    nodes.reserve(nodeCount(root));
     appendPart(root, nodes);
     return nodes;
 }
