@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package hexray needs to build, render and test.
-# `--bench` adds what only ci/bench-report.sh uses: Embree 3 (the bench's optional yardstick)
-# and matplotlib (the plot). Idempotent: safe to run again; apt skips what is already installed.
+# `--bench` adds what only ci/bench-report.sh and ci/scale-bench.sh use: Embree 3 (the bench's
+# optional yardstick) and matplotlib (the plot). Idempotent: safe to run again; apt skips what
+# is already installed.
 set -euo pipefail
 
 packages=(

@@ -3,7 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <utility>
 #include <variant>
 
 #include <glm/common.hpp>
@@ -36,51 +43,50 @@ struct Box {
     }
 };
 
+// A sphere as the builder sorts it; its box is centre -+ |radius|.
 struct Item {
-    std::uint32_t sceneNode = 0;
-    Box box;
     glm::dvec3 centre{0.0};
+    double radius = 0.0;  // |radius|
+    std::uint32_t sceneNode = 0;
+
+    Box box() const { return Box{centre - radius, centre + radius}; }
 };
 
-class Builder {
-public:
-    explicit Builder(std::vector<Item> items) : items_(std::move(items)) {}
+// The bounds of the items in a range and of their centres: what a node needs to be split.
+struct RangeBounds {
+    Box bounds;
+    Box centres;
+};
 
-    Bvh build() {
-        if (!items_.empty()) {
-            buildNode(0, static_cast<std::uint32_t>(items_.size()));
+// Splits items into the subtrees of the BVH. Every decision depends only on the items of the
+// range it is made for, so whichever thread builds a subtree, the tree is the same.
+class Splitter {
+public:
+    explicit Splitter(std::vector<Item>& items) : items_(items) {}
+
+    RangeBounds measure(std::uint32_t first, std::uint32_t count) const {
+        RangeBounds range;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            range.bounds.grow(items_[i].box());
+            range.centres.grow(items_[i].centre);
         }
-        bvh_.sphereNodes.reserve(items_.size());
-        for (const Item& item : items_) {
-            bvh_.sphereNodes.push_back(item.sceneNode);
-        }
-        return std::move(bvh_);
+        return range;
     }
 
-private:
-    // Builds the subtree over items_[first, first + count) and returns its node index.
-    std::uint32_t buildNode(std::uint32_t first, std::uint32_t count) {
-        const auto nodeIndex = static_cast<std::uint32_t>(bvh_.nodes.size());
-        bvh_.nodes.emplace_back();
-        Box bounds;
-        Box centres;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            bounds.grow(items_[i].box);
-            centres.grow(items_[i].centre);
-        }
-        bvh_.nodes[nodeIndex].boundsMin = bounds.min;
-        bvh_.nodes[nodeIndex].boundsMax = bounds.max;
+    // Builds the subtree over items_[first, first + count) into `nodes`, in depth-first order,
+    // with child indices relative to nodes[0]; returns its root's index.
+    std::uint32_t buildSubtree(std::uint32_t first, std::uint32_t count, std::vector<BvhNode>& nodes) {
+        const auto nodeIndex = static_cast<std::uint32_t>(nodes.size());
+        const RangeBounds range = measure(first, count);
+        nodes.push_back(BvhNode{range.bounds.min, range.bounds.max, first, count});
         if (count <= kMaxBvhLeafSpheres) {
-            bvh_.nodes[nodeIndex].firstOrSecondChild = first;
-            bvh_.nodes[nodeIndex].count = count;
             return nodeIndex;
         }
-
-        const std::uint32_t leftCount = partition(first, count, centres);
-        buildNode(first, leftCount);
-        const std::uint32_t second = buildNode(first + leftCount, count - leftCount);
-        bvh_.nodes[nodeIndex].firstOrSecondChild = second;
-        bvh_.nodes[nodeIndex].count = 0;
+        const std::uint32_t leftCount = partition(first, count, range.centres);
+        buildSubtree(first, leftCount, nodes);
+        const std::uint32_t second = buildSubtree(first + leftCount, count - leftCount, nodes);
+        nodes[nodeIndex].firstOrSecondChild = second;
+        nodes[nodeIndex].count = 0;
         return nodeIndex;
     }
 
@@ -108,7 +114,7 @@ private:
         std::array<std::uint32_t, kBinCount> binCounts{};
         for (auto it = begin; it != end; ++it) {
             const std::uint32_t bin = binOf(*it);
-            binBoxes[bin].grow(it->box);
+            binBoxes[bin].grow(it->box());
             ++binCounts[bin];
         }
 
@@ -143,9 +149,151 @@ private:
         return static_cast<std::uint32_t>(middle - begin);
     }
 
-    std::vector<Item> items_;
-    Bvh bvh_;
+private:
+    std::vector<Item>& items_;
 };
+
+// Subtrees of at most this many spheres are built by one thread from start to end; larger ones
+// are split, and their halves go to whichever thread is free.
+constexpr std::uint32_t kParallelGrain = 1u << 14;
+
+// A part of the tree as one thread built it: the subtree over items [first, first + count).
+// Either all its nodes (indices relative to nodes[0]), or, for a large one, only its root and
+// the two parts below.
+struct Part {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    std::vector<BvhNode> nodes;
+    std::unique_ptr<Part> left;
+    std::unique_ptr<Part> right;
+};
+
+// The parts waiting for a thread, and how many are not yet built.
+class PartQueue {
+public:
+    void push(Part* part) {
+        const std::lock_guard lock(mutex_);
+        waiting_.push_back(part);
+        ++unfinished_;
+        ready_.notify_one();
+    }
+
+    // The next part to build; nullptr once every part is built (or a thread failed).
+    Part* pop() {
+        std::unique_lock lock(mutex_);
+        ready_.wait(lock, [&] { return !waiting_.empty() || unfinished_ == 0 || failed_; });
+        if (waiting_.empty() || failed_) {
+            return nullptr;
+        }
+        Part* part = waiting_.back();
+        waiting_.pop_back();
+        return part;
+    }
+
+    void finished() {
+        const std::lock_guard lock(mutex_);
+        if (--unfinished_ == 0) {
+            ready_.notify_all();
+        }
+    }
+
+    void fail(std::exception_ptr error) {
+        const std::lock_guard lock(mutex_);
+        if (!failed_) {
+            failed_ = true;
+            error_ = std::move(error);
+        }
+        ready_.notify_all();
+    }
+
+    void rethrowFailure() const {
+        if (error_) {
+            std::rethrow_exception(error_);
+        }
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::vector<Part*> waiting_;
+    std::size_t unfinished_ = 0;
+    bool failed_ = false;
+    std::exception_ptr error_;
+};
+
+void buildPart(Part& part, Splitter& splitter, PartQueue& queue) {
+    if (part.count <= kParallelGrain) {
+        splitter.buildSubtree(part.first, part.count, part.nodes);
+        return;
+    }
+    const RangeBounds range = splitter.measure(part.first, part.count);
+    part.nodes.push_back(BvhNode{range.bounds.min, range.bounds.max, 0, 0});
+    const std::uint32_t leftCount = splitter.partition(part.first, part.count, range.centres);
+    part.left = std::make_unique<Part>(Part{part.first, leftCount, {}, nullptr, nullptr});
+    part.right = std::make_unique<Part>(Part{part.first + leftCount, part.count - leftCount, {}, nullptr, nullptr});
+    queue.push(part.left.get());
+    queue.push(part.right.get());
+}
+
+// Builds parts until none is left.
+void buildParts(Splitter& splitter, PartQueue& queue) {
+    try {
+        while (Part* part = queue.pop()) {
+            buildPart(*part, splitter, queue);
+            queue.finished();
+        }
+    } catch (...) {
+        queue.fail(std::current_exception());
+    }
+}
+
+std::size_t nodeCount(const Part& part) {
+    return part.nodes.size() + (part.left ? nodeCount(*part.left) + nodeCount(*part.right) : 0);
+}
+
+// Appends `part` to `nodes` in depth-first order, its child indices made absolute.
+void appendPart(const Part& part, std::vector<BvhNode>& nodes) {
+    const auto offset = static_cast<std::uint32_t>(nodes.size());
+    if (!part.left) {
+        for (BvhNode node : part.nodes) {
+            if (!node.isLeaf()) {
+                node.firstOrSecondChild += offset;
+            }
+            nodes.push_back(node);
+        }
+        return;
+    }
+    nodes.push_back(part.nodes.front());
+    appendPart(*part.left, nodes);
+    nodes[offset].firstOrSecondChild = static_cast<std::uint32_t>(nodes.size());
+    appendPart(*part.right, nodes);
+}
+
+std::vector<BvhNode> buildNodes(std::vector<Item>& items, unsigned threadCount) {
+    std::vector<BvhNode> nodes;
+    if (items.empty()) {
+        return nodes;
+    }
+    Splitter splitter(items);
+    Part root{0, static_cast<std::uint32_t>(items.size()), {}, nullptr, nullptr};
+    PartQueue queue;
+    queue.push(&root);
+    {
+        std::vector<std::jthread> helpers;
+        for (unsigned helper = 1; helper < threadCount; ++helper) {
+            try {
+                helpers.emplace_back([&] { buildParts(splitter, queue); });
+            } catch (const std::system_error&) {
+                break;  // fewer threads build the same tree
+            }
+        }
+        buildParts(splitter, queue);
+    }
+    queue.rethrowFailure();
+    nodes.reserve(nodeCount(root));
+    appendPart(root, nodes);
+    return nodes;
+}
 
 }  // namespace
 
@@ -159,25 +307,22 @@ bool bvhPays(const Scene& scene) {
     return countSpheres(scene) > kBvhMinSpheres;
 }
 
-Bvh buildBvh(const Scene& scene) {
+Bvh buildBvh(const Scene& scene, unsigned threadCount) {
+    Bvh bvh;
     std::vector<Item> items;
-    std::vector<std::uint32_t> planeNodes;
     for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
         if (std::holds_alternative<Plane>(scene.nodes[index].geometry)) {
-            planeNodes.push_back(static_cast<std::uint32_t>(index));
+            bvh.planeNodes.push_back(static_cast<std::uint32_t>(index));
         }
         if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[index].geometry)) {
-            const double r = std::abs(sphere->radius);
-            Item item;
-            item.sceneNode = static_cast<std::uint32_t>(index);
-            item.box.min = sphere->center - r;
-            item.box.max = sphere->center + r;
-            item.centre = sphere->center;
-            items.push_back(item);
+            items.push_back(Item{sphere->center, std::abs(sphere->radius), static_cast<std::uint32_t>(index)});
         }
     }
-    Bvh bvh = Builder(std::move(items)).build();
-    bvh.planeNodes = std::move(planeNodes);
+    bvh.nodes = buildNodes(items, threadCount ? threadCount : std::max(1u, std::thread::hardware_concurrency()));
+    bvh.sphereNodes.reserve(items.size());
+    for (const Item& item : items) {
+        bvh.sphereNodes.push_back(item.sceneNode);
+    }
     return bvh;
 }
 

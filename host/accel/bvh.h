@@ -37,9 +37,10 @@ struct Bvh {
 
 inline constexpr std::uint32_t kMaxBvhLeafSpheres = 4;
 
-// Binned SAH over sphere centres, leaves of at most kMaxBvhLeafSpheres spheres. Deterministic:
-// the same scene gives the same tree.
-Bvh buildBvh(const Scene& scene);
+// Binned SAH over sphere centres, leaves of at most kMaxBvhLeafSpheres spheres, built by
+// `threadCount` threads (0: one per core). Deterministic: the same scene gives the same tree,
+// on any number of threads.
+Bvh buildBvh(const Scene& scene, unsigned threadCount = 0);
 
 // Above this many spheres the CPU reference traverses a BVH instead of testing every sphere.
 inline constexpr std::size_t kBvhMinSpheres = 16;

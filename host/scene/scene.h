@@ -44,6 +44,13 @@ inline constexpr double kMinIntensity = 1e-100;
 inline constexpr double kMaxIntensity = 1e100;
 inline constexpr double kMaxColorComponent = 1e10;
 
+// Whether `value` is a length in the supported range: 0 (where allowed) or of magnitude within
+// [kMinSceneLength, kMaxSceneLength].
+inline bool isSupportedLength(double value, bool mayBeZero = true) {
+    const double magnitude = value < 0 ? -value : value;
+    return (mayBeZero && value == 0.0) || (magnitude >= kMinSceneLength && magnitude <= kMaxSceneLength);
+}
+
 struct CameraSettings {
     glm::dvec3 position{0.0};
     double yawDegrees = 0.0;    // + turns the view toward -X

@@ -1,6 +1,7 @@
 // The BVH over spheres: its structure, and that the CPU reference gives the same answers, bit
 // for bit, with and without it.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -167,6 +168,24 @@ TEST(Bvh, IsDeterministic) {
     EXPECT_EQ(a.sphereNodes, b.sphereNodes);
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)));
+}
+
+// Large trees are built by several threads, each taking whichever subtree is next; which thread
+// built what must not show in the tree. Enough spheres that the work is split many times.
+TEST(Bvh, SameTreeOnAnyNumberOfThreads) {
+    const Scene scene = makeRandomSpheresScene(200000, 5);
+    const Bvh reference = buildBvh(scene, 1);
+    std::vector<int> slotSeen(reference.sphereNodes.size(), 0);
+    EXPECT_EQ(checkSubtree(scene, reference, 0, slotSeen), reference.nodes.size());
+    EXPECT_TRUE(std::all_of(slotSeen.begin(), slotSeen.end(), [](int seen) { return seen == 1; }));
+    for (const unsigned threads : {2u, 3u, 8u}) {
+        SCOPED_TRACE(testing::Message() << threads << " threads");
+        const Bvh bvh = buildBvh(scene, threads);
+        EXPECT_EQ(bvh.sphereNodes, reference.sphereNodes);
+        EXPECT_EQ(bvh.planeNodes, reference.planeNodes);
+        ASSERT_EQ(bvh.nodes.size(), reference.nodes.size());
+        EXPECT_EQ(0, std::memcmp(bvh.nodes.data(), reference.nodes.data(), bvh.nodes.size() * sizeof(BvhNode)));
+    }
 }
 
 TEST(Bvh, EmptyAndPlaneOnlyScenesHaveNoNodes) {

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -544,6 +546,145 @@ TEST(SceneLoaderRejects, BadEnumStrings) {
               "test.json: shaders.red.type: unknown value \"phong\" (allowed: checker, constant, lambert)");
 }
 
+// ---------------------------------------------------------------- nodes, many and of every shape
+
+const std::string kValidNode = R"({"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"})";
+
+// kValidScene whose only node is replaced by `nodes` (the text between the list's brackets).
+std::string validSceneWithNodes(const std::string& nodes) { return validSceneWith(kValidNode, nodes); }
+
+// `count` spheres, the i-th at (i, 0, 0), except that node `at` is `replacement`.
+std::string manySpheres(std::size_t count, std::size_t at = std::string::npos, const std::string& replacement = "") {
+    std::string nodes;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i > 0) nodes += ",\n";
+        nodes += i == at ? replacement
+                         : R"({"geometry": {"type": "sphere", "center": [)" + std::to_string(i) +
+                               R"(, 0, 0], "radius": 1}, "shader": "red"})";
+    }
+    return validSceneWithNodes(nodes);
+}
+
+TEST(SceneLoaderNodes, ManyNodesAreAllRead) {
+    const Scene scene = parseScene(manySpheres(100000), "test.json");
+    ASSERT_EQ(scene.nodes.size(), 100000u);
+    for (const std::size_t i : {std::size_t{0}, std::size_t{51234}, std::size_t{99999}}) {
+        const Sphere& sphere = std::get<Sphere>(scene.nodes[i].geometry);
+        expectVec(sphere.center, {double(i), 0, 0});
+        EXPECT_EQ(sphere.radius, 1.0);
+        EXPECT_EQ(scene.nodes[i].shaderIndex, 0u);
+    }
+}
+
+// The duplicate-key check does not stop after the start of a file.
+TEST(SceneLoaderNodes, DuplicateKeyDeepInsideALargeFile) {
+    const std::string geometry = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "radius": 2})";
+    EXPECT_EQ(errorFor(manySpheres(100000, 99990, R"({"geometry": )" + geometry + R"(, "shader": "red"})")),
+              "test.json: nodes[99990].geometry.radius: duplicate key");
+    EXPECT_EQ(errorFor(manySpheres(100000, 77777, R"({"shader": "red", "geometry": {"type": "plane", "y": 0},)"
+                                                  R"( "shader": "red"})")),
+              "test.json: nodes[77777].shader: duplicate key");
+}
+
+TEST(SceneLoaderNodes, AProblemInTheLastNodeOfALargeFile) {
+    EXPECT_EQ(errorFor(manySpheres(100000, 99999, R"({"geometry": {"type": "plane", "y": "0"}, "shader": "red"})")),
+              "test.json: nodes[99999].geometry.y: expected a number (got string \"0\")");
+}
+
+// Nodes are read as the parser meets them, before the shaders when the file lists those later.
+TEST(SceneLoaderNodes, NodesMayComeBeforeTheShadersTheyName) {
+    const Scene scene = parseScene(R"({"nodes": [
+        {"shader": "b", "geometry": {"radius": 2, "center": [1, 2, 3], "type": "sphere"}},
+        {"geometry": {"y": -4, "type": "plane"}, "shader": "a"},
+        {"geometry": {"type": "plane", "y": 5}, "shader": "b"}],
+      "shaders": {"b": {"type": "constant", "color": [0, 0, 1]}, "a": {"type": "lambert", "color": [1, 0, 0]}},
+      "camera": {"position": [0, 1, -5]}, "image": {"width": 8, "height": 6}})",
+                                   "test.json");
+    ASSERT_EQ(scene.shaderNames, (std::vector<std::string>{"a", "b"}));
+    ASSERT_EQ(scene.nodes.size(), 3u);
+    EXPECT_EQ(scene.nodes[0].shaderIndex, 1u);
+    EXPECT_EQ(scene.nodes[1].shaderIndex, 0u);
+    EXPECT_EQ(scene.nodes[2].shaderIndex, 1u);
+    expectVec(std::get<Sphere>(scene.nodes[0].geometry).center, {1, 2, 3});
+    EXPECT_EQ(std::get<Sphere>(scene.nodes[0].geometry).radius, 2.0);
+    EXPECT_EQ(std::get<Plane>(scene.nodes[1].geometry).height, -4.0);
+    EXPECT_EQ(std::get<Plane>(scene.nodes[2].geometry).height, 5.0);
+}
+
+TEST(SceneLoaderNodes, NumbersInEveryJsonFormAreReadAlike) {
+    const Scene scene = parseScene(validSceneWithNodes(
+        R"({"geometry": {"type": "sphere", "center": [1, -2, 3.5e2], "radius": 18446744073709551615}, "shader": "red"},
+           {"geometry": {"type": "plane", "y": -7.25}, "shader": "red"})"), "test.json");
+    const Sphere& sphere = std::get<Sphere>(scene.nodes[0].geometry);
+    expectVec(sphere.center, {1, -2, 350});
+    EXPECT_EQ(sphere.radius, 18446744073709551615.0);
+    EXPECT_EQ(std::get<Plane>(scene.nodes[1].geometry).height, -7.25);
+}
+
+// Every way a node can be wrong gets the message of its first problem.
+TEST(SceneLoaderNodes, EachBadNodeIsNamedWithItsFirstProblem) {
+    const std::pair<std::string, std::string> cases[] = {
+        {R"(5)", "nodes[0]: expected an object (got number 5)"},
+        {R"([])", "nodes[0]: expected an object (got an array of 0 elements)"},
+        {R"({"shader": "red"})", "nodes[0].geometry: missing required field"},
+        {R"({"geometry": null, "shader": "red"})", "nodes[0].geometry: expected an object (got null)"},
+        {R"({"geometry": {"type": "plane", "y": 0}, "shader": null})",
+         "nodes[0].shader: expected a string (got null)"},
+        {R"({"geometry": {"type": "plane", "y": 0}, "shader": "red", "name": "x"})",
+         "nodes[0].name: unknown key (allowed: geometry, shader)"},
+        {R"({"geometry": {"center": [0, 0, 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.type: missing required field"},
+        {R"({"geometry": {"type": "Sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.type: unknown value \"Sphere\" (allowed: plane, sphere)"},
+        {R"({"geometry": {"type": "sphere", "center": [0, 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.center: expected an array of 3 numbers [x, y, z] (got an array of 2 elements)"},
+        {R"({"geometry": {"type": "sphere", "center": [0, 0, 0, 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.center: expected an array of 3 numbers [x, y, z] (got an array of 4 elements)"},
+        {R"({"geometry": {"type": "sphere", "center": [0, "a", 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.center[1]: expected a number (got string \"a\")"},
+        {R"({"geometry": {"type": "sphere", "center": [[0], 0, 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.center[0]: expected a number (got an array of 1 element)"},
+        {R"({"geometry": {"type": "sphere", "center": [0, 0, 0]}, "shader": "red"})",
+         "nodes[0].geometry.radius: missing required field"},
+        {R"({"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 1e-320}, "shader": "red"})",
+         "nodes[0].geometry.radius: must be between 1e-50 and 1e+50 in magnitude, the supported range of lengths "
+         "(got 1e-320)"},
+        {R"({"geometry": {"type": "sphere", "center": [0, 1e60, 0], "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.center[1]: must be 0 or between 1e-50 and 1e+50 in magnitude, the supported range of "
+         "lengths (got 1e+60)"},
+        {R"({"geometry": {"type": "plane", "y": 0, "radius": 1}, "shader": "red"})",
+         "nodes[0].geometry.radius: unknown key (allowed: type, y)"},
+        {R"({"geometry": {"type": "plane"}, "shader": "red"})", "nodes[0].geometry.y: missing required field"},
+        {R"({"geometry": {"type": "plane", "y": true}, "shader": "red"})",
+         "nodes[0].geometry.y: expected a number (got boolean true)"},
+        {R"({"geometry": {"type": "plane", "type": "plane", "y": 0}, "shader": "red"})",
+         "nodes[0].geometry.type: duplicate key"},
+    };
+    for (const auto& [node, message] : cases) {
+        SCOPED_TRACE(node);
+        EXPECT_EQ(errorFor(validSceneWithNodes(node)), "test.json: " + message);
+    }
+}
+
+// Nodes are read as the parser meets them, but problems are reported as if the file were read
+// whole: the parser's first, then the scene's parts in a fixed order, then the first bad node.
+TEST(SceneLoaderNodes, ProblemsAreReportedInTheSameOrderWhereverTheNodesAre) {
+    const std::string badRadius =
+        R"({"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 0}, "shader": "red"})";
+    const std::string unknownShader = R"({"geometry": {"type": "plane", "y": 0}, "shader": "blue"})";
+    EXPECT_EQ(errorFor(R"({"nodes": [)" + badRadius + R"(], "image": {"width": 0, "height": 6}})"),
+              "test.json: image.width: must be between 1 and 16384 (got 0)");
+    EXPECT_EQ(errorFor(validSceneWithNodes(unknownShader + ", " + badRadius)),
+              "test.json: nodes[0].shader: unknown shader \"blue\" (defined: red)");
+    EXPECT_EQ(errorFor(validSceneWithNodes(badRadius + ", " + unknownShader)),
+              "test.json: nodes[0].geometry.radius: must be > 0 (got 0)");
+    EXPECT_EQ(errorFor(R"({"nodes": [)" + badRadius + R"(], "image": {"width": 8, "width": 8}})"),
+              "test.json: image.width: duplicate key");
+    EXPECT_EQ(errorFor(R"({"nodes": [)" + badRadius + R"(], "image": })"),
+              "test.json:1:107: JSON syntax error: syntax error while parsing value - unexpected '}'; "
+              "expected '[', '{', or a literal");
+}
+
 // ---------------------------------------------------------------- files
 
 TEST_F(SceneFileTest, LoadsAFileAndNamesItInMessages) {
@@ -556,6 +697,19 @@ TEST_F(SceneFileTest, LoadsAFileAndNamesItInMessages) {
         ADD_FAILURE() << "accepted";
     } catch (const SceneError& error) {
         EXPECT_EQ(std::string(error.what()), bad.string() + ": nodes[0].geometry.radius: must be > 0 (got -3)");
+    }
+}
+
+// Just over the limit, in a sparse file that takes no disk.
+TEST_F(SceneFileTest, FilesOverTheSizeLimitAreRefused) {
+    const fs::path huge = folder_ / "huge.json";
+    std::ofstream(huge, std::ios::binary).close();
+    fs::resize_file(huge, (std::uintmax_t{256} << 20) + 1);  // sparse: no disk used
+    try {
+        loadSceneFile(huge);
+        ADD_FAILURE() << "accepted";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()), huge.string() + ": cannot read scene file: larger than 256 MiB");
     }
 }
 

@@ -1,0 +1,33 @@
+#pragma once
+// The JSON layer of scene files: text to a document, rejecting what only the parser sees (a
+// syntax error at its line:column; a duplicate key, nesting deeper than 64 levels or a number
+// too large for a double at its JSON path) with a SceneError. Time and memory are linear in
+// the text.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace hexray {
+
+// Receives each element of the root object's "nodes" array, with its index, as soon as the
+// parser has read it whole. The element is not kept: in the document, "nodes" is an empty
+// array, so a scene of a million nodes never exists as one document (some 700 bytes a node).
+using NodeSink = std::function<void(const nlohmann::json& element, std::size_t index)>;
+
+nlohmann::json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode);
+
+// Reads the events of each element of the root's "nodes" in place of a document: it takes an
+// element by returning true to each of its events, or declines it by returning false. (No
+// parse_error reaches it.) A shortcut for elements of a shape known in advance.
+using NodeShortcut = nlohmann::json_sax<nlohmann::json>;
+
+// As above, with every element of the root's "nodes" read by `shortcut`; nullopt once it
+// declines one, and the text must then be parsed the general way.
+std::optional<nlohmann::json> parseSceneJson(const std::string& text, const std::string& sourceName,
+                                             NodeShortcut& shortcut);
+
+}  // namespace hexray
