@@ -13,14 +13,17 @@ bool isPlaneNode(uint i) {
     return nodes[i].kinds.x == GEOMETRY_PLANE;
 }
 
-// Distance along the ray to sphere node i; `power` is the ray origin's (originPower).
-real sphereNodeDistance(Ray ray, uint i, real power) {
-    vec4r sphere = nodes[i].geometry;
+// Distance along the ray to a sphere (centre, radius); `power` is the ray origin's (originPower).
+real sphereDistanceFor(Ray ray, vec4r sphere, real power) {
 #ifdef HEXRAY_TEXTBOOK
     return sphereDistanceTextbook(ray, sphere.xyz, sphere.w);
 #else
     return sphereDistance(ray, sphere.xyz, sphere.w, power);
 #endif
+}
+
+real sphereNodeDistance(Ray ray, uint i, real power) {
+    return sphereDistanceFor(ray, nodes[i].geometry, power);
 }
 
 real planeNodeDistance(Ray ray, uint i) {
@@ -35,19 +38,6 @@ real planeNodeDistance(Ray ray, uint i) {
 // respect to each sphere the host computed.
 real cameraRayDistance(Ray ray, uint i) {
     return isPlaneNode(i) ? planeNodeDistance(ray, i) : sphereNodeDistance(ray, i, nodes[i].surface.x);
-}
-
-// Whether node i lies on the segment from the ray's origin to `target`, `distance` away.
-bool blocksSegment(Ray ray, uint i, vec3r target, real distance) {
-    vec4r geometry = nodes[i].geometry;
-    if (isPlaneNode(i)) {
-#ifdef HEXRAY_TEXTBOOK
-        return planeDistanceTextbook(ray, geometry.x) < distance;
-#else
-        return planeSeparates(geometry.x, ray.origin, target);
-#endif
-    }
-    return sphereNodeDistance(ray, i, originPower(ray.origin - geometry.xyz, geometry.w)) < distance;
 }
 
 #endif  // HEXRAY_NODE_TESTS_GLSL

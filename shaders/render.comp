@@ -1,8 +1,10 @@
 #version 450
 // hexray's data-driven kernel, for scenes too large for a generated one (see
 // host/gpu/kernel_generator.h): every ray tests every node in a loop over the storage buffers,
-// or, with HEXRAY_BVH, walks a BVH over the spheres. Compiled at build time for f32, f64
-// (HEXRAY_F64) and f32-naive (HEXRAY_TEXTBOOK), with and without HEXRAY_BVH.
+// or, with HEXRAY_CANDIDATES, only the nodes listed for its direction (candidates.glsl): the
+// same tests on the same nodes in the same order, less the nodes it cannot meet. Compiled at
+// build time for f32, f64 (HEXRAY_F64) and f32-naive (HEXRAY_TEXTBOOK), with and without
+// HEXRAY_CANDIDATES.
 #extension GL_GOOGLE_include_directive : require
 
 #include "checker.glsl"
@@ -10,37 +12,81 @@
 #include "node_tests.glsl"
 #include "scene_data.glsl"
 #include "surface.glsl"
-#ifdef HEXRAY_BVH
-#include "bvh.glsl"
+#ifdef HEXRAY_CANDIDATES
+#include "candidates.glsl"
 #endif
 
+// On an exact tie the lower node index keeps the hit, as the course specifies ("the earlier
+// node"), in whichever order the nodes are tested; two misses are no tie.
+Hit nearer(Hit hit, real t, uint node) {
+    return t < hit.t || (t == hit.t && t != NO_HIT && node < hit.node) ? Hit(t, node) : hit;
+}
+
 Hit findNearestHit(Ray ray) {
-#ifdef HEXRAY_BVH
-    return findNearestHitInBvh(ray);
-#else
     Hit hit = Hit(NO_HIT, NO_NODE);
-    for (uint i = 0u; i < frame.nodeCount; ++i) {
-        real t = cameraRayDistance(ray, i);
-        // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
-        if (t < hit.t) {
-            hit = Hit(t, i);
-        }
+#ifdef HEXRAY_CANDIDATES
+    CandidateRange planes = planeCandidates();
+    for (uint k = planes.first; k < planes.end; ++k) {
+        uint node = candidateEntry(k);
+        hit = nearer(hit, planeNodeDistance(ray, node), node);
     }
+    CandidateRange spheres = cameraCandidates(vec3(ray.direction));
+    for (uint k = spheres.first; k < spheres.end; ++k) {
+        CandidateSphere s = candidateSphere(candidateEntry(k));
+        hit = nearer(hit, sphereDistanceFor(ray, s.sphere, s.eyePower), s.node);
+    }
+#else
+    for (uint i = 0u; i < frame.nodeCount; ++i) {
+        hit = nearer(hit, cameraRayDistance(ray, i), i);
+    }
+#endif
     return hit;
+}
+
+// Whether plane `node` lies strictly between the surface and the light at `light`.
+bool planeBlocks(uint node, LightPath path, vec3r light) {
+#ifdef HEXRAY_TEXTBOOK
+    return planeDistanceTextbook(path.shadowRay, nodes[node].geometry.x) < path.shadowLength;
+#else
+    return planeSeparates(nodes[node].geometry.x, path.shadowRay.origin, light);
 #endif
 }
 
-// Whether anything lies strictly between the ray's origin and `target`, `distance` away.
-bool isOccluded(Ray ray, vec3r target, real distance) {
-#ifdef HEXRAY_BVH
-    return isOccludedInBvh(ray, target, distance);
+// Whether sphere `node` (centre, radius) lies strictly between the surface of `hit` and the light
+// at `light`. Robust: tested from the light toward the surface, the same origin for every pixel; a
+// sphere the eye sees from outside (`ownLeftOut`: the hit's is one) cannot shadow its own visible
+// points (convexity), and is left out. The textbook test starts at the surface, as a course does.
+bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit, bool ownLeftOut) {
+#ifdef HEXRAY_TEXTBOOK
+    return sphereDistanceTextbook(path.shadowRay, sphere.xyz, sphere.w) < path.shadowLength;
 #else
-    bool blocked = false;
-    for (uint i = 0u; i < frame.nodeCount && !blocked; ++i) {
-        blocked = blocksSegment(ray, i, target, distance);
-    }
-    return blocked;
+    vec3r f = light - sphere.xyz;
+    return !(ownLeftOut && node == hit.node) &&
+           sphereCrossesSegment(f, sphere.w, originPower(f, sphere.w), -path.shadowRay.direction, path.shadowLength);
 #endif
+}
+
+bool isOccluded(uint light, LightPath path, Hit hit) {
+    vec3r position = lights[light].position.xyz;
+    bool ownLeftOut = nodes[hit.node].surface.x > 0.0;  // planes: 0
+    bool blocked = false;
+#ifdef HEXRAY_CANDIDATES
+    CandidateRange planes = planeCandidates();
+    for (uint k = planes.first; k < planes.end && !blocked; ++k) {
+        blocked = planeBlocks(candidateEntry(k), path, position);
+    }
+    CandidateRange spheres = lightCandidates(light, vec3(-path.shadowRay.direction), float(path.shadowLength));
+    for (uint k = spheres.first; k < spheres.end && !blocked; ++k) {
+        CandidateSphere s = candidateSphere(candidateEntry(k));
+        blocked = sphereBlocks(s.node, s.sphere, path, position, hit, ownLeftOut);
+    }
+#else
+    for (uint i = 0u; i < frame.nodeCount && !blocked; ++i) {
+        blocked = isPlaneNode(i) ? planeBlocks(i, path, position)
+                                 : sphereBlocks(i, nodes[i].geometry, path, position, hit, ownLeftOut);
+    }
+#endif
+    return blocked;
 }
 
 real candidateDistance(Ray ray, uint node) {
@@ -52,9 +98,10 @@ Surface hitSurface(Ray ray, Hit hit) {
 #ifdef HEXRAY_TEXTBOOK
     return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
-    Surface sphere = sphereSurface(ray, geometry, nodes[hit.node].surface.x);
-    // Every node is tested for every shadow ray, the sphere itself included.
-    sphere.shadowOrigin = shadowOriginOffSphere(sphere, geometry);
+    real eyePower = nodes[hit.node].surface.x;
+    Surface sphere = sphereSurface(ray, geometry, eyePower);
+    // Seen from inside, the sphere is among its own shadow tests: its shadow rays start off it.
+    sphere.shadowOrigin = eyePower > 0.0 ? sphere.shadowOrigin : shadowOriginOffSphere(sphere, geometry);
     return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
 #endif
 }
@@ -77,8 +124,7 @@ vec3 shade(Ray ray, Hit hit, out uint flags) {
     vec3 irradiance = frame.ambient.rgb;
     for (uint i = 0u; i < frame.lightCount; ++i) {
         LightPath path = lightPath(s, lights[i].position.xyz);
-        bool shadowed = isOccluded(path.shadowRay, lights[i].position.xyz, path.shadowLength);
-        irradiance += lightTerm(i, lights[i].power, path, shadowed, flags);
+        irradiance += lightTerm(i, lights[i].power, path, isOccluded(i, path, hit), flags);
     }
     return albedo * min(irradiance, vec3(MAX_LIGHT_TERM));
 }

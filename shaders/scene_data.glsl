@@ -30,7 +30,6 @@ SCENE_BLOCK(FRAME_BINDING) FrameBlock {
     float samplingOffset;
     uint nodeCount;
     uint lightCount;
-    uint planeCount;  // BVH scenes: the first planeCount entries of primitiveNodes (bvh.glsl)
 } frame;
 
 struct Node {

@@ -24,11 +24,16 @@ HEXRAY_CONSTANT uint LIGHT_BINDING = 2u;
 HEXRAY_CONSTANT uint PIXEL_BINDING = 3u;    // linear RGB
 HEXRAY_CONSTANT uint CLASS_BINDING = 4u;    // what each pixel shows (node, flags)
 HEXRAY_CONSTANT uint ENCODED_BINDING = 5u;  // the finished 8-bit image
-HEXRAY_CONSTANT uint BVH_BINDING = 6u;      // BVH scenes: the tree's nodes
-HEXRAY_CONSTANT uint PRIMITIVE_BINDING = 7u;  // BVH scenes: planes, then spheres in leaf order
+HEXRAY_CONSTANT uint CANDIDATE_GRID_BINDING = 6u;    // candidate lists: the camera's and lights' grids
+HEXRAY_CONSTANT uint CANDIDATE_CELL_BINDING = 7u;    // candidate lists: where each cell's list starts
 HEXRAY_CONSTANT uint AOV_BINDING = 8u;      // inspection: per-pixel depth and normal
 HEXRAY_CONSTANT uint TRACE_BINDING = 9u;    // inspection: one pixel explained
-HEXRAY_CONSTANT uint BINDING_COUNT = 10u;
+HEXRAY_CONSTANT uint CANDIDATE_ENTRY_BINDING = 10u;  // candidate lists: the lists, one after another
+HEXRAY_CONSTANT uint CANDIDATE_SPHERE_BINDING = 11u; // candidate lists: the spheres they name
+HEXRAY_CONSTANT uint BINDING_COUNT = 12u;
+// The candidate bindings are uniform texel buffers (RGBA32UI grids and spheres, R32UI cells and
+// entries): lavapipe reads a texel buffer at a different index in each lane with vector gathers,
+// a storage buffer one lane and one component at a time.
 
 // Node kinds (GpuNode::kinds.x and .y).
 HEXRAY_CONSTANT uint GEOMETRY_PLANE = 0u;
@@ -68,9 +73,13 @@ HEXRAY_CONSTANT uint TRACE_LIGHT_AT_POINT = 4u;       // r^2 = 0
 // come in uniform blocks of this many entries.
 HEXRAY_CONSTANT uint SMALL_SCENE_CAPACITY = 32u;
 
-// The BVH traversal stack's depth: a deeper tree is not uploaded (the scene is then traced
-// without one).
-HEXRAY_CONSTANT uint BVH_STACK_SIZE = 64u;
+// Candidate lists (host/gpu/candidate_lists.h): cell 0 lists the planes, by node index, and every
+// other cell spheres, by their rank among the scene's spheres (their record in the sphere buffer).
+// Grid 0 is the camera's, then each light has one grid per face of a cube around it, face
+// 2 * axis + (1 if the direction along that axis is negative).
+HEXRAY_CONSTANT uint PLANE_CELL = 0u;
+HEXRAY_CONSTANT uint CAMERA_GRID = 0u;
+HEXRAY_CONSTANT uint CUBE_FACES = 6u;
 
 #undef HEXRAY_CONSTANT
 #ifdef __cplusplus

@@ -47,12 +47,13 @@ inline constexpr std::size_t kBvhMinSpheres = 16;
 
 std::size_t countSpheres(const Scene& scene);
 
-// How a renderer finds what a ray meets. Each renderer's Auto decides when its BVH pays; the
-// others exist for tests and benchmarks, not for users.
+// How a renderer finds what a ray meets. Each renderer's Auto decides when its acceleration
+// structure pays; the others exist for tests and benchmarks, not for users.
 enum class Acceleration {
     Auto,
-    None,  // every node for every ray
-    Bvh,   // a BVH over the spheres whenever the renderer can use one
+    None,    // every node for every ray
+    Always,  // the renderer's structure whenever it can use one: the CPU reference's BVH over the
+             // spheres, the GPU's candidate lists (gpu/candidate_lists.h)
 };
 
 // Whether a BVH makes the CPU reference faster for this scene (more than kBvhMinSpheres spheres).

@@ -310,7 +310,7 @@ void prepareBand(CpuRender& band, std::uint32_t width, std::uint32_t rows, bool 
 }
 
 std::optional<Bvh> bvhFor(const Scene& scene, Acceleration acceleration) {
-    const bool useBvh = acceleration == Acceleration::Bvh || (acceleration == Acceleration::Auto && bvhPays(scene));
+    const bool useBvh = acceleration == Acceleration::Always || (acceleration == Acceleration::Auto && bvhPays(scene));
     return useBvh ? std::optional<Bvh>(buildBvh(scene)) : std::nullopt;
 }
 

@@ -35,7 +35,6 @@ struct GpuFrame {
     float samplingOffset;  // 0.5: pixel centres; 0: the course's pixel corners
     std::uint32_t nodeCount;
     std::uint32_t lightCount;
-    std::uint32_t planeCount;  // BVH scenes: the first planeCount entries of the primitive list
 };
 
 // A node carries its own copy of its shader's parameters: one fetch per candidate, no indirection.
@@ -59,16 +58,29 @@ struct GpuLight {
     glm::vec4 power;          // .rgb = colour * intensity
 };
 
-// One node of the BVH over a scene's spheres (accel/bvh.h), in the shader's precision and
-// placement. Bounds are rounded outward and padded so that every sphere hit the shader can
-// compute lies inside its leaf's box. Depth-first order: an interior node's first child is the
-// next node.
+// Candidate lists (shaders/candidates.glsl), read as texels of 16 bytes: the grid buffer starts
+// with the camera's axes, then one grid per view (the camera's, then CUBE_FACES per light). Always
+// float: the shader looks its cell up in float whatever its precision.
+struct GpuCandidateAxes {
+    glm::vec4 right;    // .xyz
+    glm::vec4 down;     // .xyz
+    glm::vec4 forward;  // .xyz
+};
+
+struct GpuCandidateGrid {
+    glm::vec4 window;  // .xy: tangent coordinates (u, v) of the first corner; .zw: cells per unit
+    glm::uvec4 cells;  // .xy: cells across u and v; .z: the grid's first cell; .w: the cell past reach
+    glm::vec4 reach;   // .x: the longest ray the lists hold (+inf: any)
+};
+
+// One sphere of a candidate list, packed tight (texels have no alignment beyond their own size):
+// two texels in float, three in double.
 template <typename Real>
-struct alignas(4 * sizeof(Real)) GpuBvhNode {
-    glm::vec<3, Real> boundsMin;
-    std::uint32_t firstOrSecondChild;  // leaf: first primitive after the planes; interior: second child
-    glm::vec<3, Real> boundsMax;
-    std::uint32_t count;  // leaf: number of spheres (> 0); interior: 0
+struct GpuCandidateSphere {
+    glm::vec<4, Real> sphere;  // centre, radius: the node's geometry
+    Real eyePower;             // the node's surface.x
+    std::uint32_t node;
+    std::uint32_t unused[sizeof(Real) == 4 ? 2 : 1];
 };
 
 // Which rows of the image one dispatch covers (large images render in bands): push constants.
@@ -107,7 +119,6 @@ static_assert(offsetof(GpuFrame<float>, imageSize) == 96);
 static_assert(offsetof(GpuFrame<float>, samplingOffset) == 104);
 static_assert(offsetof(GpuFrame<float>, nodeCount) == 108);
 static_assert(offsetof(GpuFrame<float>, lightCount) == 112);
-static_assert(offsetof(GpuFrame<float>, planeCount) == 116);
 static_assert(sizeof(GpuFrame<float>) == 128);
 static_assert(offsetof(GpuNode<float>, kinds) == 0);
 static_assert(offsetof(GpuNode<float>, geometry) == 16);
@@ -119,10 +130,13 @@ static_assert(sizeof(GpuNode<float>) == 96);
 static_assert(offsetof(GpuLight<float>, position) == 0);
 static_assert(offsetof(GpuLight<float>, power) == 16);
 static_assert(sizeof(GpuLight<float>) == 32);
-static_assert(offsetof(GpuBvhNode<float>, firstOrSecondChild) == 12);
-static_assert(offsetof(GpuBvhNode<float>, boundsMax) == 16);
-static_assert(offsetof(GpuBvhNode<float>, count) == 28);
-static_assert(sizeof(GpuBvhNode<float>) == 32);
+static_assert(sizeof(GpuCandidateAxes) == 48);
+static_assert(offsetof(GpuCandidateGrid, cells) == 16);
+static_assert(offsetof(GpuCandidateGrid, reach) == 32);
+static_assert(sizeof(GpuCandidateGrid) == 48);
+static_assert(offsetof(GpuCandidateSphere<float>, eyePower) == 16);
+static_assert(offsetof(GpuCandidateSphere<float>, node) == 20);
+static_assert(sizeof(GpuCandidateSphere<float>) == 32);
 
 // --- std430 offsets, double variant (dvec4 aligned to 32)
 static_assert(offsetof(GpuFrame<double>, origin) == 0);
@@ -135,7 +149,6 @@ static_assert(offsetof(GpuFrame<double>, imageSize) == 160);
 static_assert(offsetof(GpuFrame<double>, samplingOffset) == 168);
 static_assert(offsetof(GpuFrame<double>, nodeCount) == 172);
 static_assert(offsetof(GpuFrame<double>, lightCount) == 176);
-static_assert(offsetof(GpuFrame<double>, planeCount) == 180);
 static_assert(sizeof(GpuFrame<double>) == 192);
 static_assert(offsetof(GpuNode<double>, kinds) == 0);
 static_assert(offsetof(GpuNode<double>, geometry) == 32);
@@ -147,10 +160,6 @@ static_assert(sizeof(GpuNode<double>) == 160);
 static_assert(offsetof(GpuLight<double>, position) == 0);
 static_assert(offsetof(GpuLight<double>, power) == 32);
 static_assert(sizeof(GpuLight<double>) == 64);
-static_assert(offsetof(GpuBvhNode<double>, firstOrSecondChild) == 24);
-static_assert(offsetof(GpuBvhNode<double>, boundsMax) == 32);
-static_assert(offsetof(GpuBvhNode<double>, count) == 56);
-static_assert(sizeof(GpuBvhNode<double>) == 64);
 
 // --- Inspection (shaders/inspect_hooks.glsl): `hexray render --aov` and `hexray pixel`.
 
@@ -211,6 +220,9 @@ static_assert(offsetof(GpuTraceHeader<double>, shadowOrigin) == 160);
 static_assert(offsetof(GpuTraceHeader<double>, albedo) == 192);
 static_assert(offsetof(GpuTraceHeader<double>, sampleColor) == 208);
 static_assert(offsetof(GpuTraceHeader<double>, pixelColor) == 224);
+static_assert(offsetof(GpuCandidateSphere<double>, eyePower) == 32);
+static_assert(offsetof(GpuCandidateSphere<double>, node) == 40);
+static_assert(sizeof(GpuCandidateSphere<double>) == 48);
 static_assert(sizeof(GpuTraceHeader<double>) == 256);  // std430: the struct rounds up to its 32-byte alignment
 static_assert(offsetof(GpuTraceEntry<double>, values) == 0);
 static_assert(offsetof(GpuTraceEntry<double>, color) == 32);

@@ -12,6 +12,7 @@
 
 #include "camera/camera.h"
 
+#include "gpu/candidate_buffers.h"
 #include "gpu/gpu_layout.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/scene_constants.h"
@@ -26,9 +27,12 @@ using gpu::GpuPixel;
 using gpu::GpuPixelClass;
 using gpu::WORKGROUP_SIZE;
 
-// The frame, nodes and lights come in uniform buffers for a small scene; every other binding,
-// and all of them for a larger scene, are storage buffers.
+// The frame, nodes and lights come in uniform buffers for a small scene; the candidate lists in
+// texel buffers; every other binding, and all of them for a larger scene, are storage buffers.
 vk::DescriptorType descriptorType(std::uint32_t binding, bool uniformScene) {
+    if (CandidateBuffers::isCandidateBinding(binding)) {
+        return vk::DescriptorType::eUniformTexelBuffer;
+    }
     const bool sceneData = binding == gpu::FRAME_BINDING || binding == gpu::NODE_BINDING || binding == gpu::LIGHT_BINDING;
     return uniformScene && sceneData ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer;
 }
@@ -86,8 +90,7 @@ struct PackedScene {
     std::vector<std::byte> frame;
     std::vector<std::byte> nodes;
     std::vector<std::byte> lights;
-    std::vector<std::byte> bvhNodes;    // empty: no BVH
-    std::vector<std::byte> primitives;
+    std::vector<std::byte> candidateSpheres;  // empty: no candidate lists
     // A generated kernel's specialization constants: their values, and each component's size.
     std::vector<std::byte> constants;
     std::vector<std::uint32_t> constantSizes;
@@ -103,10 +106,9 @@ template <typename Real>
 PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
     gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, plan.placement);
     PackedScene bytes;
-    if (plan.bvh) {
-        const gpu::GpuBvh<Real> tree = gpu::packBvh<Real>(scene, *plan.bvh, packed);
-        bytes.bvhNodes = bytesOf(std::span(tree.nodes));
-        bytes.primitives = bytesOf(std::span(tree.primitives));
+    if (plan.candidates) {
+        const auto spheres = gpu::packCandidateSpheres(packed, std::span(plan.candidates->sphereNodes));
+        bytes.candidateSpheres = bytesOf(std::span(spheres));
     }
     if (plan.layout == SceneLayout::Uniform) {
         // A uniform block declares all SMALL_SCENE_CAPACITY entries: the buffers must hold them.
@@ -196,7 +198,7 @@ GpuRenderer::~GpuRenderer() {
 
 DeviceAbilities GpuRenderer::abilities() const {
     const DeviceInfo& device = context_.selected();
-    return DeviceAbilities{device.name, device.hasFloat64, device.hasSubgroupVote};
+    return DeviceAbilities{device.name, device.hasFloat64};
 }
 
 RenderPlan GpuRenderer::plan(const Scene& scene, const PlanRequest& request) const {
@@ -227,7 +229,7 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, const RenderPlan& plan, 
     const auto keep = [&](const GpuRenderResult& streamed) {
         result.precision = streamed.precision;
         result.timing = streamed.timing;
-        result.usedBvh = streamed.usedBvh;
+        result.usedCandidateLists = streamed.usedCandidateLists;
     };
     if (output == GpuOutput::Encoded8) {
         result.encoded = Rgb8Image{scene.image.width, scene.image.height, {}};
@@ -378,7 +380,7 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan
     };
     renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, request);
     trace.precision = plan.precision;
-    trace.usedBvh = bands.usedBvh;
+    trace.usedCandidateLists = bands.usedCandidateLists;
     return trace;
 }
 
@@ -392,7 +394,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const PackedScene packed = packFor(scene, plan);
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     result.precision = plan.precision;
-    result.usedBvh = plan.layout == SceneLayout::StorageBvh;
+    result.usedCandidateLists = plan.layout == SceneLayout::StorageCandidates;
 
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
@@ -425,27 +427,29 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     if (tracing) {
         traceBuffer.upload(traceRequest);
     }
-    HostVisibleBuffer bvhBuffer(device, physicalDevice, packed.bvhNodes.size(), storage);
-    HostVisibleBuffer primitiveBuffer(device, physicalDevice, packed.primitives.size(), storage);
     frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
-    bvhBuffer.upload(std::span(packed.bvhNodes));
-    primitiveBuffer.upload(std::span(packed.primitives));
+    CandidateBuffers candidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
 
-    const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
+    const std::array<vk::DescriptorPoolSize, 3> poolSizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, gpu::BINDING_COUNT),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, gpu::BINDING_COUNT)};
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, gpu::BINDING_COUNT),
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, gpu::BINDING_COUNT)};
     vk::raii::DescriptorPool pool(
         device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
     const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
-    // In binding order (shader_interface.h).
+    // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
     const std::array<const HostVisibleBuffer*, gpu::BINDING_COUNT> buffers = {
-        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
-        &encodedBuffer, &bvhBuffer, &primitiveBuffer, &aovBuffer, &traceBuffer};
+        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer, &encodedBuffer,
+        nullptr,      nullptr,     &aovBuffer,   &traceBuffer, nullptr,      nullptr};
+    candidateBuffers.write(device, set);
     for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
+        if (!buffers[binding]) {
+            continue;
+        }
         const vk::DescriptorBufferInfo info(*buffers[binding]->buffer(), 0, buffers[binding]->size());
         device.updateDescriptorSets(
             vk::WriteDescriptorSet(*set, binding, 0, descriptorType(binding, uniformScene), nullptr, info), nullptr);
@@ -459,9 +463,10 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     // objects above, so they are leaked with the device instead (VulkanContext::abandoned()).
     const LeakIfAbandoned leakIfAbandoned{context_, [&] {
         for (HostVisibleBuffer* buffer : {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
-                                          &encodedBuffer, &aovBuffer, &traceBuffer, &bvhBuffer, &primitiveBuffer}) {
+                                          &encodedBuffer, &aovBuffer, &traceBuffer}) {
             buffer->abandon();
         }
+        candidateBuffers.abandon();
         sets[0].release();
         pool.release();
         commandBuffers[0].release();

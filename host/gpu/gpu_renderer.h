@@ -63,7 +63,7 @@ struct GpuPixelTrace {
     glm::vec3 sampleColor{0};        // the traced sample's linear colour
     glm::vec3 pixelColor{0};         // the pixel's (average of its samples)
     std::vector<GpuTraceLight> lights;
-    bool usedBvh = false;  // the trace followed the BVH, as the scene's render does
+    bool usedCandidateLists = false;  // the trace followed the candidate lists, as the scene's render does
 };
 
 struct GpuRenderResult {
@@ -76,7 +76,7 @@ struct GpuRenderResult {
     std::vector<glm::vec3> normals;
     Precision precision = Precision::F32;  // the plan's (never Auto)
     GpuTiming timing;
-    bool usedBvh = false;  // the spheres were traced through a BVH
+    bool usedCandidateLists = false;  // the spheres were found through candidate lists
 };
 
 // Owns the pipelines for one device, each built on first use, and the kernel compiler. render()
@@ -107,7 +107,7 @@ public:
     // render()'s LinearAndClasses or LinearClassesAndAov output a band of rows at a time: each
     // band is handed to `consume` (its first row, and a result whose image, classes, depth and
     // normals hold just the band's rows) as soon as it is read back. The returned result has the
-    // precision, timing and usedBvh, and no pixels.
+    // precision, timing and usedCandidateLists, and no pixels.
     using BandConsumer = std::function<void(std::uint32_t firstRow, const GpuRenderResult& band)>;
     GpuRenderResult renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
                                      const BandConsumer& consume);
@@ -144,7 +144,7 @@ private:
         const gpu::GpuAovPixel* aovs;
         const std::byte* trace;
     };
-    // Sets `result`'s precision, timing and usedBvh. With `traceRequest` non-empty, one trace
+    // Sets `result`'s precision, timing and usedCandidateLists. With `traceRequest` non-empty, one trace
     // dispatch instead (see tracePixel): the trace buffer starts as those bytes.
     void renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
                      const std::function<void(const Band&)>& consume, std::span<const std::byte> traceRequest = {});

@@ -109,7 +109,6 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     frame.samplingOffset = float(samplingOffset(scene.image.sampling));
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
-    frame.planeCount = std::uint32_t(scene.nodes.size() - countSpheres(scene));
 
     for (const Node& node : scene.nodes) {
         packed.nodes.push_back(packNode<Real>(node, scene.shaders[node.shaderIndex], placement, sheet.origin));
@@ -126,86 +125,20 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
 template GpuScene<float> packScene<float>(const Scene&, const Placement&);
 template GpuScene<double> packScene<double>(const Scene&, const Placement&);
 
-namespace {
-
-// Bounds for the shader's BVH. Its slab test allows for its own rounding (shaders/bvh.glsl);
-// the pad covers the other side: a ray that rounding lets hit a sphere while it passes just
-// outside. That error is a few units of roundoff of the distances involved, all below the
-// scene's extent, so a pad of 64 units of roundoff of that extent is ample.
 template <typename Real>
-class BvhBounds {
-public:
-    BvhBounds(const Bvh& bvh, const GpuScene<Real>& packed) : bvh_(bvh), packed_(packed) {
-        double extent = std::max({std::abs(packed.frame.origin.x), std::abs(packed.frame.origin.y),
-                                  std::abs(packed.frame.origin.z)});
-        for (const auto& node : packed.nodes) {
-            if (node.kinds.x == GEOMETRY_SPHERE) {
-                extent = std::max(extent, maxAbs(node.geometry) + double(node.geometry.w));
-            }
-        }
-        for (const auto& light : packed.lights) {
-            extent = std::max(extent, maxAbs(light.position));
-        }
-        pad_ = 64.0 * double(std::numeric_limits<Real>::epsilon()) * extent;
+std::vector<GpuCandidateSphere<Real>> packCandidateSpheres(const GpuScene<Real>& packed,
+                                                           std::span<const std::uint32_t> nodes) {
+    std::vector<GpuCandidateSphere<Real>> spheres;
+    spheres.reserve(nodes.size());
+    for (const std::uint32_t i : nodes) {
+        spheres.push_back({packed.nodes[i].geometry, packed.nodes[i].surface.x, i, {}});
     }
-
-    // Fills `nodes` (already sized) below `index`; returns the subtree's depth.
-    std::uint32_t fill(std::uint32_t index, std::vector<GpuBvhNode<Real>>& nodes) const {
-        const BvhNode& node = bvh_.nodes[index];
-        GpuBvhNode<Real>& out = nodes[index];
-        out.firstOrSecondChild = node.firstOrSecondChild;
-        out.count = node.count;
-        if (node.isLeaf()) {
-            glm::dvec3 low(std::numeric_limits<double>::infinity());
-            glm::dvec3 high(-std::numeric_limits<double>::infinity());
-            for (std::uint32_t i = 0; i < node.count; ++i) {
-                const RealVec4<Real>& sphere = packed_.nodes[bvh_.sphereNodes[node.firstOrSecondChild + i]].geometry;
-                const glm::dvec3 centre(sphere.x, sphere.y, sphere.z);
-                low = glm::min(low, centre - (double(sphere.w) + pad_));
-                high = glm::max(high, centre + (double(sphere.w) + pad_));
-            }
-            // The pad is far above Real's rounding of the bounds.
-            out.boundsMin = glm::vec<3, Real>(low);
-            out.boundsMax = glm::vec<3, Real>(high);
-            return 1;
-        }
-        const std::uint32_t first = index + 1;
-        const std::uint32_t second = node.firstOrSecondChild;
-        const std::uint32_t depth = std::max(fill(first, nodes), fill(second, nodes));
-        out.boundsMin = glm::min(nodes[first].boundsMin, nodes[second].boundsMin);
-        out.boundsMax = glm::max(nodes[first].boundsMax, nodes[second].boundsMax);
-        return depth + 1;
-    }
-
-private:
-    static double maxAbs(const RealVec4<Real>& v) {
-        return std::max({std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
-    }
-
-    const Bvh& bvh_;
-    const GpuScene<Real>& packed_;
-    double pad_ = 0.0;
-};
-
-}  // namespace
-
-template <typename Real>
-GpuBvh<Real> packBvh(const Scene& scene, const Bvh& bvh, const GpuScene<Real>& packed) {
-    GpuBvh<Real> result;
-    for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
-        if (std::holds_alternative<Plane>(scene.nodes[i].geometry)) {
-            result.primitives.push_back(i);
-        }
-    }
-    result.primitives.insert(result.primitives.end(), bvh.sphereNodes.begin(), bvh.sphereNodes.end());
-    if (!bvh.nodes.empty()) {
-        result.nodes.resize(bvh.nodes.size());
-        result.depth = BvhBounds<Real>(bvh, packed).fill(0, result.nodes);
-    }
-    return result;
+    return spheres;
 }
 
-template GpuBvh<float> packBvh<float>(const Scene&, const Bvh&, const GpuScene<float>&);
-template GpuBvh<double> packBvh<double>(const Scene&, const Bvh&, const GpuScene<double>&);
+template std::vector<GpuCandidateSphere<float>> packCandidateSpheres<float>(const GpuScene<float>&,
+                                                                            std::span<const std::uint32_t>);
+template std::vector<GpuCandidateSphere<double>> packCandidateSpheres<double>(const GpuScene<double>&,
+                                                                              std::span<const std::uint32_t>);
 
 }  // namespace hexray::gpu

@@ -10,7 +10,7 @@
 
 namespace hexray {
 
-std::span<const std::uint32_t> dataDrivenKernel(FloatWidth width, Formulation formulation, bool bvh);
-std::string dataDrivenKernelName(FloatWidth width, Formulation formulation, bool bvh);
+std::span<const std::uint32_t> dataDrivenKernel(FloatWidth width, Formulation formulation, bool candidates);
+std::string dataDrivenKernelName(FloatWidth width, Formulation formulation, bool candidates);
 
 }  // namespace hexray

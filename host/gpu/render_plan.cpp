@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "camera/camera.h"
+#include "gpu/candidate_lists.h"
 #include "gpu/prebuilt_kernels.h"
 #include "shader_interface.h"
 #include "vulkan/vulkan_context.h"
@@ -96,22 +97,12 @@ SceneCode sceneCodeFor(const Scene& scene, const RenderPlan& plan) {
     return code;
 }
 
-// The depth of the BVH below node `index` (nodes on the longest path to a leaf).
-std::uint32_t bvhDepth(const Bvh& bvh, std::uint32_t index = 0) {
-    const BvhNode& node = bvh.nodes[index];
-    if (node.isLeaf()) {
-        return 1;
+// Candidate lists pay as soon as the data-driven kernel has spheres to skip.
+bool wantsCandidates(const Scene& scene, Acceleration acceleration) {
+    if (acceleration == Acceleration::None || countSpheres(scene) == 0) {
+        return false;
     }
-    return 1 + std::max(bvhDepth(bvh, index + 1), bvhDepth(bvh, node.firstOrSecondChild));
-}
-
-SceneLayout chooseLayout(const Scene& scene, Acceleration acceleration, const DeviceAbilities& device) {
-    const bool wantsBvh = acceleration == Acceleration::Bvh ||
-                          (acceleration == Acceleration::Auto && !isSmallScene(scene) && bvhPays(scene));
-    if (wantsBvh && device.subgroupVote && countSpheres(scene) > 0) {
-        return SceneLayout::StorageBvh;
-    }
-    return isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
+    return acceleration == Acceleration::Always || !isSmallScene(scene);
 }
 
 }  // namespace
@@ -162,21 +153,19 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
     plan.width = plan.precision == Precision::F64 ? FloatWidth::F64 : FloatWidth::F32;
     plan.formulation = plan.precision == Precision::F32Naive ? Formulation::Textbook : Formulation::Robust;
     plan.placement = placementFor(scene, plan.formulation);
-    plan.layout = chooseLayout(scene, request.acceleration, device);
-    if (plan.layout == SceneLayout::StorageBvh) {
-        auto bvh = std::make_shared<Bvh>(buildBvh(scene));
-        if (bvhDepth(*bvh) <= gpu::BVH_STACK_SIZE) {
-            plan.bvh = std::move(bvh);
-        } else {
-            plan.layout = isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
+    plan.layout = isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
+    if (wantsCandidates(scene, request.acceleration)) {
+        if (auto lists = buildCandidateLists(scene, plan.placement, plan.width, plan.formulation)) {
+            plan.candidates = std::make_shared<const CandidateLists>(std::move(*lists));
+            plan.layout = SceneLayout::StorageCandidates;
         }
     }
     if (plan.layout == SceneLayout::Uniform) {
         plan.kernel = Kernel{"generated for the scene", std::make_shared<const SceneCode>(sceneCodeFor(scene, plan)), {}};
     } else {
-        const bool bvh = plan.layout == SceneLayout::StorageBvh;
-        plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, bvh), nullptr,
-                             dataDrivenKernel(plan.width, plan.formulation, bvh)};
+        const bool candidates = plan.layout == SceneLayout::StorageCandidates;
+        plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
+                             dataDrivenKernel(plan.width, plan.formulation, candidates)};
     }
     return plan;
 }

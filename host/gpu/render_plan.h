@@ -12,11 +12,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "accel/bvh.h"
+#include "accel/bvh.h"  // Acceleration
 #include "gpu/precision.h"
 #include "scene/scene.h"
 
 namespace hexray {
+
+struct CandidateLists;  // gpu/candidate_lists.h
 
 // The shader's arithmetic for positions and distances (colours are always float).
 enum class FloatWidth { F32, F64 };
@@ -42,8 +44,8 @@ struct Placement {
 // How the scene's data reaches the kernel.
 enum class SceneLayout {
     Uniform,     // small scenes: uniform buffers, read at constant indices by a generated kernel
-    Storage,     // storage buffers, every node for every ray (the data-driven kernel)
-    StorageBvh,  // storage buffers and a BVH over the spheres (needs subgroup vote and ballot)
+    Storage,            // storage buffers, every node for every ray (the data-driven kernel)
+    StorageCandidates,  // storage buffers, and per direction the spheres a ray can meet (candidate_lists.h)
 };
 
 // How a camera ray meets one sphere (generated kernels).
@@ -100,13 +102,12 @@ struct Kernel {
 struct DeviceAbilities {
     std::string name;            // for messages
     bool float64 = false;        // shaderFloat64
-    bool subgroupVote = false;   // subgroup vote and ballot in compute: BVH traversal
 };
 
 // What the caller asks for; planRender decides the rest.
 struct PlanRequest {
     Precision precision = Precision::Auto;
-    Acceleration acceleration = Acceleration::Auto;  // BVH or not, for scenes too large for a generated kernel
+    Acceleration acceleration = Acceleration::Auto;  // candidate lists or not, for scenes too large for a generated kernel
 };
 
 struct RenderPlan {
@@ -115,7 +116,7 @@ struct RenderPlan {
     Formulation formulation = Formulation::Robust;
     Placement placement;
     SceneLayout layout = SceneLayout::Uniform;
-    std::shared_ptr<const Bvh> bvh;  // StorageBvh only: the tree the kernel walks
+    std::shared_ptr<const CandidateLists> candidates;  // StorageCandidates only: the lists the kernel reads
     Kernel kernel;
     std::vector<std::string> warnings;  // what `render` tells the user: a precision overruled
 };

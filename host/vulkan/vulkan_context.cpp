@@ -119,12 +119,6 @@ DeviceInfo describe(const vk::raii::PhysicalDevice& device, std::uint32_t index)
     }
     info.hasComputeQueue = computeQueueFamily(device).has_value();
     info.hasFloat64 = device.getFeatures().shaderFloat64 == VK_TRUE && !injected(InjectedFault::NoFloat64);
-    const auto subgroupChain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>();
-    const auto& subgroup = subgroupChain.get<vk::PhysicalDeviceSubgroupProperties>();
-    const vk::SubgroupFeatureFlags needed = vk::SubgroupFeatureFlagBits::eBasic | vk::SubgroupFeatureFlagBits::eVote |
-                                            vk::SubgroupFeatureFlagBits::eBallot;
-    info.hasSubgroupVote = (subgroup.supportedStages & vk::ShaderStageFlagBits::eCompute) &&
-                           (subgroup.supportedOperations & needed) == needed;
     return info;
 }
 

@@ -51,8 +51,6 @@ struct DeviceInfo {
     std::string apiVersion;
     bool hasComputeQueue = false;
     bool hasFloat64 = false;
-    // Subgroup vote and ballot in compute shaders: the BVH traversal needs them.
-    bool hasSubgroupVote = false;
 };
 
 // Counts the validation layer's warnings and errors (each is also printed to stderr). Owned by

@@ -268,7 +268,7 @@ TEST(Bvh, ExactTiesGoToTheEarlierNode) {
 TEST(Bvh, RenderIsBitIdenticalWithAndWithout) {
     const Scene scene = makeRandomSpheresScene(200, 42);
     const CpuRender plain = renderOnCpu(scene, 0, Acceleration::None);
-    const CpuRender accelerated = renderOnCpu(scene, 0, Acceleration::Bvh);
+    const CpuRender accelerated = renderOnCpu(scene, 0, Acceleration::Always);
     ASSERT_EQ(plain.image.pixels.size(), accelerated.image.pixels.size());
     EXPECT_EQ(0, std::memcmp(plain.image.pixels.data(), accelerated.image.pixels.data(),
                              plain.image.pixels.size() * sizeof(glm::vec3)));
@@ -296,7 +296,7 @@ TEST(Bvh, MarginsAreBitIdenticalWhereNearMissesDecideThem) {
     scene.image.width = 200;
     scene.image.height = 120;
     const CpuRender plain = renderOnCpu(scene, 0, Acceleration::None);
-    const CpuRender accelerated = renderOnCpu(scene, 0, Acceleration::Bvh);
+    const CpuRender accelerated = renderOnCpu(scene, 0, Acceleration::Always);
     EXPECT_EQ(plain.classes, accelerated.classes);
     ASSERT_EQ(plain.margins.size(), accelerated.margins.size());
     std::size_t different = 0;

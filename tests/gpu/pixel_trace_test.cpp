@@ -213,7 +213,7 @@ TEST_F(PixelTraceTest, TraceAndAovModesFollowTheBvhInAManySphereScene) {
     overrideImageSize(scene, 96, 54, "test");
     GpuRenderer renderer(context());
     const GpuRenderResult aov = renderer.render(scene, Precision::F64, GpuOutput::LinearClassesAndAov);
-    ASSERT_TRUE(aov.usedBvh);
+    ASSERT_TRUE(aov.usedCandidateLists);
     const CpuRender reference = renderOnCpu(scene);
     const CpuRender cpu = renderOnCpu(scene, 0, Acceleration::Auto, true);
     std::size_t traced = 0;
@@ -225,7 +225,7 @@ TEST_F(PixelTraceTest, TraceAndAovModesFollowTheBvhInAManySphereScene) {
                 continue;  // either answer would be honest
             }
             const GpuPixelTrace g = renderer.tracePixel(scene, Precision::F64, x, y, 0);
-            ASSERT_TRUE(g.usedBvh);
+            ASSERT_TRUE(g.usedCandidateLists);
             expectAgreement(g, explainPixel(scene, x, y, 0));
             EXPECT_EQ(aov.classes[i], reference.classes[i]) << "pixel " << x << ", " << y;
             if (!std::isinf(cpu.depth[i])) {

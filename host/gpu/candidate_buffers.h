@@ -1,0 +1,43 @@
+#pragma once
+// The candidate lists on the device (shaders/candidates.glsl): four uniform texel buffers, bound
+// at the CANDIDATE_* bindings. Scenes without lists bind one-texel stand-ins.
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include <vulkan/vulkan_raii.hpp>
+
+#include "gpu/candidate_lists.h"
+#include "vulkan/host_visible_buffer.h"
+
+namespace hexray {
+
+class CandidateBuffers {
+public:
+    static constexpr std::array<std::uint32_t, 4> kBindings = {
+        gpu::CANDIDATE_GRID_BINDING, gpu::CANDIDATE_CELL_BINDING, gpu::CANDIDATE_ENTRY_BINDING,
+        gpu::CANDIDATE_SPHERE_BINDING};
+    static bool isCandidateBinding(std::uint32_t binding);
+
+    // Uploads `lists` (may be null) and the spheres' records (gpu_scene.h's packCandidateSpheres).
+    CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                     const CandidateLists* lists, std::span<const std::byte> sphereRecords);
+
+    void write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const;
+
+    // See HostVisibleBuffer::abandon.
+    void abandon();
+
+private:
+    struct TexelBuffer {
+        HostVisibleBuffer buffer;
+        vk::raii::BufferView view;
+    };
+    static TexelBuffer texelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                                   std::span<const std::byte> bytes, vk::Format format);
+
+    std::array<TexelBuffer, 4> buffers_;  // in kBindings' order
+};
+
+}  // namespace hexray

@@ -1,0 +1,60 @@
+#pragma once
+// Work split into parts, one thread per part (the caller's among them).
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace hexray {
+
+// Runs part(i) for every i in [0, parts), each on a thread of its own; parts whose thread cannot
+// start run on the caller's. Rethrows the first exception a part threw, once all have finished.
+inline void runParts(unsigned parts, const std::function<void(unsigned)>& part) {
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    const auto guarded = [&](unsigned index) {
+        try {
+            part(index);
+        } catch (...) {
+            const std::lock_guard lock(failureMutex);
+            if (!failure) {
+                failure = std::current_exception();
+            }
+        }
+    };
+    {
+        std::vector<unsigned> leftOver;
+        std::vector<std::jthread> helpers;
+        for (unsigned index = 1; index < parts; ++index) {
+            try {
+                helpers.emplace_back(guarded, index);
+            } catch (const std::system_error&) {
+                leftOver.push_back(index);
+            }
+        }
+        guarded(0);
+        for (const unsigned index : leftOver) {
+            guarded(index);
+        }
+    }
+    if (failure) {
+        std::rethrow_exception(failure);
+    }
+}
+
+// Where part `part` of `parts` equal parts of [0, count) begins (part == parts: count).
+inline std::size_t partBegin(std::size_t count, unsigned parts, unsigned part) {
+    return count * part / parts;
+}
+
+// The number of threads to use: `requested`, or one per core for 0.
+inline unsigned threadsFor(unsigned requested) {
+    return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
+}  // namespace hexray

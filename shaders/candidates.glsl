@@ -1,0 +1,98 @@
+// Candidate lists, in render.comp's HEXRAY_CANDIDATES variant: for each cell of a grid over the
+// directions seen from the eye, and from each light, the spheres a ray in that direction can meet
+// (built on the host, conservatively: host/gpu/candidate_lists.h). A ray looks its cell up by its
+// own direction and tests that cell's spheres only; planes, unbounded, are listed in one cell of
+// their own. Every buffer here is a uniform texel buffer (see shader_interface.h).
+#ifndef HEXRAY_CANDIDATES_GLSL
+#define HEXRAY_CANDIDATES_GLSL
+
+#include "precision.glsl"
+#include "shader_interface.h"
+
+// Texels 0 to 2: the camera's right, down and forward axes (floats). Then three texels per grid
+// (host/gpu/gpu_layout.h's GpuCandidateGrid), over tangent coordinates (u, v) =
+// (d . right, d . down) / (d . forward) of a direction d from the grid's origin.
+layout(set = 0, binding = CANDIDATE_GRID_BINDING) uniform usamplerBuffer candidateGrids;
+// Cell c lists entries cellStarts[c] to cellStarts[c + 1].
+layout(set = 0, binding = CANDIDATE_CELL_BINDING) uniform usamplerBuffer cellStarts;
+layout(set = 0, binding = CANDIDATE_ENTRY_BINDING) uniform usamplerBuffer candidateEntries;
+// One record per sphere (GpuCandidateSphere), in the lists' order (CandidateLists::sphereNodes):
+// centre and radius, the eye's power, the node index.
+layout(set = 0, binding = CANDIDATE_SPHERE_BINDING) uniform usamplerBuffer candidateSpheres;
+
+struct CandidateRange {
+    uint first;
+    uint end;
+};
+
+uint cellStart(uint cell) {
+    return texelFetch(cellStarts, int(cell)).x;
+}
+
+uint candidateEntry(uint k) {
+    return texelFetch(candidateEntries, int(k)).x;
+}
+
+struct CandidateSphere {
+    vec4r sphere;  // centre, radius
+    real eyePower;
+    uint node;
+};
+
+CandidateSphere candidateSphere(uint index) {
+#ifdef HEXRAY_F64
+    uvec4 a = texelFetch(candidateSpheres, int(3u * index));
+    uvec4 b = texelFetch(candidateSpheres, int(3u * index + 1u));
+    uvec4 c = texelFetch(candidateSpheres, int(3u * index + 2u));
+    dvec4 sphere = dvec4(packDouble2x32(a.xy), packDouble2x32(a.zw), packDouble2x32(b.xy), packDouble2x32(b.zw));
+    return CandidateSphere(sphere, packDouble2x32(c.xy), c.z);
+#else
+    uvec4 a = texelFetch(candidateSpheres, int(2u * index));
+    uvec4 b = texelFetch(candidateSpheres, int(2u * index + 1u));
+    return CandidateSphere(uintBitsToFloat(a), uintBitsToFloat(b.x), b.y);
+#endif
+}
+
+CandidateRange planeCandidates() {
+    return CandidateRange(cellStart(PLANE_CELL), cellStart(PLANE_CELL + 1u));
+}
+
+// The list of the cell of grid `grid` that holds `tangent`; empty outside the grid, where no
+// sphere's directions reach (a NaN tangent, from a zero direction, is outside). A ray longer than
+// the grid's reach takes the list the grid names for it instead.
+CandidateRange gridCandidates(uint grid, vec2 tangent, float rayLength) {
+    int base = 3 + 3 * int(grid);
+    vec4 window = uintBitsToFloat(texelFetch(candidateGrids, base));
+    uvec4 cells = texelFetch(candidateGrids, base + 1);
+    float reach = uintBitsToFloat(texelFetch(candidateGrids, base + 2).x);
+    vec2 position = (tangent - window.xy) * window.zw;
+    bool inside = all(greaterThanEqual(position, vec2(0.0))) && all(lessThan(position, vec2(cells.xy)));
+    uvec2 cell = uvec2(clamp(position, vec2(0.0), vec2(cells.xy - 1u)));
+    bool pastReach = rayLength > reach;
+    uint index = pastReach ? cells.w : cells.z + cell.y * cells.x + cell.x;
+    uint first = cellStart(index);
+    return CandidateRange(first, inside || pastReach ? cellStart(index + 1u) : first);
+}
+
+// The spheres a camera ray with this direction can meet.
+CandidateRange cameraCandidates(vec3 direction) {
+    vec3 right = uintBitsToFloat(texelFetch(candidateGrids, 0).xyz);
+    vec3 down = uintBitsToFloat(texelFetch(candidateGrids, 1).xyz);
+    vec3 forward = uintBitsToFloat(texelFetch(candidateGrids, 2).xyz);
+    vec2 across = vec2(dot(direction, right), dot(direction, down));
+    return gridCandidates(CAMERA_GRID, across / dot(direction, forward), 0.0);
+}
+
+// The spheres a segment from light `light` along `fromLight`, `rayLength` long, can meet. The cube
+// face is the direction's largest component; its tangent axes are the next two, in cyclic order.
+CandidateRange lightCandidates(uint light, vec3 fromLight, float rayLength) {
+    vec3 size = abs(fromLight);
+    bool x = size.x >= size.y && size.x >= size.z;
+    bool y = !x && size.y >= size.z;
+    float major = x ? fromLight.x : (y ? fromLight.y : fromLight.z);
+    vec2 across = x ? fromLight.yz : (y ? fromLight.zx : fromLight.xy);
+    uint face = (x ? 0u : (y ? 2u : 4u)) + (major < 0.0 ? 1u : 0u);
+    return gridCandidates(CAMERA_GRID + 1u + CUBE_FACES * light + face, across / abs(major), rayLength);
+}
+
+#endif  // HEXRAY_CANDIDATES_GLSL

@@ -1,0 +1,199 @@
+// The candidate lists (shaders/candidates.glsl) must not change what any pixel shows: a scene
+// traced through them and through every node in turn gives the same image, classes and AOVs bit
+// for bit, in every precision, also where spheres are far smaller than a pixel, straddle the eye's
+// plane or a light's cube faces, or hold the eye or a light; and it agrees with the CPU reference.
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "compare/compare.h"
+#include "cpu/cpu_renderer.h"
+#include "gpu/gpu_renderer.h"
+#include "scene/random_spheres.h"
+#include "validated_vulkan.h"
+
+namespace hexray {
+namespace {
+
+class GpuCandidatesTest : public test::ValidatedVulkanTest, public ::testing::WithParamInterface<Precision> {
+protected:
+    void SetUp() override {
+        test::ValidatedVulkanTest::SetUp();
+        if (GetParam() == Precision::F64 && !context().selected().hasFloat64) {
+            GTEST_SKIP() << context().selected().name << " has no shaderFloat64";
+        }
+    }
+};
+
+double uniform(std::mt19937_64& engine, double low, double high) {
+    return low + (high - low) * double(engine() >> 11) * 0x1.0p-53;
+}
+
+Scene randomScene(std::uint32_t spheres, std::uint64_t seed) {
+    Scene scene = makeRandomSpheresScene(spheres, seed);
+    scene.image.width = 160;
+    scene.image.height = 90;
+    return scene;
+}
+
+// A floor to the horizon, seen from just above; spheres far below a pixel's size far out, spheres
+// beside and behind the eye across its plane, spheres on the diagonals between a light's cube
+// faces, a light inside a sphere and one among small spheres.
+Scene edgeCaseScene() {
+    Scene scene = makeRandomSpheresScene(0, 1);
+    scene.image.width = 192;
+    scene.image.height = 108;
+    scene.camera.position = {0.0, 2.0, -10.0};
+    scene.camera.pitchDegrees = 0.0;
+    scene.camera.fovDegrees = 70.0;
+    scene.lights = {PointLight{{0.0, 30.0, 20.0}, Color(1.0), 900.0}, PointLight{{-5.0, 3.5, 8.0}, Color(1.0), 50.0},
+                    PointLight{{4.0, 1.0, 5.0}, Color(0.5), 40.0}};
+    std::mt19937_64 engine(17);
+    const auto add = [&](glm::dvec3 center, double radius) {
+        scene.nodes.push_back(Node{Sphere{center, radius}, 1 + std::uint32_t(scene.nodes.size() % 5)});
+    };
+    for (int i = 0; i < 1500; ++i) {  // about a hundredth of a pixel to a few pixels across
+        const double distance = uniform(engine, 15.0, 300.0);
+        add({uniform(engine, -0.6, 0.6) * distance, uniform(engine, 0.0, 0.4) * distance, distance - 10.0},
+            distance * std::exp(uniform(engine, std::log(3e-5), std::log(1e-2))));
+    }
+    add({-5.0, 3.0, 8.0}, 2.0);  // holds the second light
+    for (int i = 0; i < 60; ++i) {
+        add({4.0 + uniform(engine, -2, 2), uniform(engine, 0.1, 2.5), 5.0 + uniform(engine, -2, 2)},
+            uniform(engine, 0.05, 0.4));
+    }
+    for (int i = 0; i < 40; ++i) {  // on the first light's face diagonals, near and far
+        const double d = uniform(engine, 2.0, 25.0);
+        const double sx = i % 2 ? 1.0 : -1.0;
+        const double sz = i % 4 < 2 ? 1.0 : -1.0;
+        add({sx * d, 30.0 - d, 20.0 + sz * d}, uniform(engine, 0.1, 1.0));
+    }
+    add({3.0, 2.0, -10.0}, 1.5);   // across the eye's plane, beside it
+    add({-2.0, 1.0, -14.0}, 1.0);  // behind the eye
+    add({0.0, 2.0, -10.3}, 0.29);  // just behind the eye, nearly touching it
+    return scene;
+}
+
+// A floor to the horizon and a light in a cloud of spheres: f32-naive shadow rays from the far
+// floor (the rows next to the horizon lie tens of thousands of units out) are longer than the
+// light's lists hold (their rounding grows with their length) and take the list of every sphere.
+Scene horizonScene() {
+    Scene scene = makeRandomSpheresScene(0, 1);
+    scene.image.width = 192;
+    scene.image.height = 108;
+    scene.camera.position = {0.0, 100.0, -300.0};
+    scene.camera.pitchDegrees = -5.0;
+    scene.camera.fovDegrees = 60.0;
+    scene.lights = {PointLight{{0.0, 100.0, 0.0}, Color(1.0), 40000.0}};
+    std::mt19937_64 engine(29);
+    for (int i = 0; i < 300; ++i) {
+        const glm::dvec3 center(uniform(engine, -40, 40), uniform(engine, 60, 140), uniform(engine, -40, 40));
+        if (glm::distance(center, scene.lights[0].position) > 8.0) {
+            scene.nodes.push_back(Node{Sphere{center, uniform(engine, 0.5, 3.0)}, 1 + std::uint32_t(i % 5)});
+        }
+    }
+    return scene;
+}
+
+// The eye inside a large sphere with a light and spheres inside it too.
+Scene insideScene() {
+    Scene scene = makeRandomSpheresScene(300, 23);
+    scene.image.width = 128;
+    scene.image.height = 72;
+    scene.nodes.push_back(Node{Sphere{scene.camera.position + glm::dvec3(0, 0, 20), 200.0}, 2});
+    scene.lights.push_back(PointLight{scene.camera.position + glm::dvec3(5, 5, 30), Color(1.0), 2000.0});
+    return scene;
+}
+
+void expectSameAsEveryNode(GpuRenderer& renderer, const Scene& scene, Precision precision) {
+    const GpuRenderResult every = renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::None);
+    const GpuRenderResult listed = renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::Always);
+    ASSERT_FALSE(every.usedCandidateLists);
+    ASSERT_TRUE(listed.usedCandidateLists);
+    std::size_t differentPixels = 0;
+    std::size_t differentClasses = 0;
+    std::size_t differentAovs = 0;
+    std::size_t spheres = 0;
+    for (std::size_t i = 0; i < every.classes.size(); ++i) {
+        differentPixels += every.image.pixels[i] != listed.image.pixels[i];
+        differentClasses += every.classes[i] != listed.classes[i];
+        const bool sameDepth = std::bit_cast<std::uint32_t>(every.depth[i]) == std::bit_cast<std::uint32_t>(listed.depth[i]);
+        differentAovs += !sameDepth || every.normals[i] != listed.normals[i];
+        spheres += every.classes[i].node != PixelClass::kBackground && every.classes[i].node > 0;
+    }
+    EXPECT_EQ(differentPixels, 0u);
+    EXPECT_EQ(differentClasses, 0u);
+    EXPECT_EQ(differentAovs, 0u);
+    EXPECT_GT(spheres, every.classes.size() / 20) << "the scene must show spheres to test anything";
+}
+
+TEST_P(GpuCandidatesTest, GiveTheSameImageClassesAndAovsAsTestingEveryNode) {
+    GpuRenderer renderer(context());
+    for (const std::uint32_t spheres : {40u, 700u, 5000u}) {
+        SCOPED_TRACE(std::to_string(spheres) + " spheres");
+        expectSameAsEveryNode(renderer, randomScene(spheres, spheres), GetParam());
+    }
+}
+
+TEST_P(GpuCandidatesTest, GiveTheSameImageAtTheEdgeCases) {
+    GpuRenderer renderer(context());
+    {
+        SCOPED_TRACE("tiny spheres, the eye's plane, cube face edges, lights among spheres");
+        expectSameAsEveryNode(renderer, edgeCaseScene(), GetParam());
+    }
+    {
+        SCOPED_TRACE("the far floor's shadow rays");
+        expectSameAsEveryNode(renderer, horizonScene(), GetParam());
+    }
+    {
+        SCOPED_TRACE("the eye inside a sphere");
+        expectSameAsEveryNode(renderer, insideScene(), GetParam());
+    }
+}
+
+// f32-naive is left out: it disagrees with the reference (shadow acne) with or without lists.
+class GpuCandidatesAgreementTest : public GpuCandidatesTest {};
+
+TEST_P(GpuCandidatesAgreementTest, AgreeWithTheCpuReference) {
+    GpuRenderer renderer(context());
+    for (const std::uint32_t spheres : {100u, 2000u, 20000u}) {
+        SCOPED_TRACE(std::to_string(spheres) + " spheres");
+        const Scene scene = randomScene(spheres, 11);
+        const GpuRenderResult gpu = renderer.render(scene, GetParam());
+        ASSERT_TRUE(gpu.usedCandidateLists) << "Auto must choose the lists past a generated kernel";
+        const CpuRender cpu = renderOnCpu(scene);
+        const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
+                                                  gpu.image, gpu.classes, scene.image.encoding);
+        const Tolerance tolerance;
+        EXPECT_LE(c.topology.ambiguousShare(), 0.2);
+        EXPECT_EQ(c.topology.mismatches, 0u);
+        EXPECT_LE(100.0 * c.encoded.shareOverOneLevel, tolerance.maxSharePercent);
+        EXPECT_LE(c.encoded.rmse, tolerance.maxRmseLevels);
+    }
+}
+
+class GpuCandidatesChoiceTest : public test::ValidatedVulkanTest {};
+
+TEST_F(GpuCandidatesChoiceTest, SmallScenesKeepTheGeneratedKernels) {
+    GpuRenderer renderer(context());
+    EXPECT_FALSE(renderer.render(randomScene(20, 3)).usedCandidateLists);
+    EXPECT_TRUE(renderer.render(randomScene(40, 3)).usedCandidateLists);
+}
+
+std::string precisionTestName(const ::testing::TestParamInfo<Precision>& info) {
+    std::string name(precisionName(info.param));
+    std::erase(name, '-');  // test names allow only letters, digits and _
+    return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Precisions, GpuCandidatesTest,
+                         ::testing::Values(Precision::F32, Precision::F64, Precision::F32Naive), precisionTestName);
+INSTANTIATE_TEST_SUITE_P(Precisions, GpuCandidatesAgreementTest, ::testing::Values(Precision::F32, Precision::F64),
+                         precisionTestName);
+
+}  // namespace
+}  // namespace hexray
