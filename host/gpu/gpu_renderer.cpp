@@ -429,6 +429,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
     const bool linear = output != GpuOutput::Encoded8 && !tracing;
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
+    const auto uploadStart = std::chrono::steady_clock::now();
     const PackedScene packed = packFor(scene, plan);
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     result.precision = plan.precision;
@@ -487,6 +488,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     lightBuffer.upload(std::span(packed.lights));
     bvhBuffer.upload(std::span(packed.bvhNodes));
     primitiveBuffer.upload(std::span(packed.primitives));
+    result.timing.uploadMilliseconds = millisecondsSince(uploadStart);
 
     const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, gpu::BINDING_COUNT),
