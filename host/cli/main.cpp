@@ -172,7 +172,8 @@ int main(int argc, char** argv) {
         "Measure speed against error: interleaved rounds of every backend, precision and sample count on each "
         "scene, against a converged CPU reference, and the scaling curve over random-sphere scenes; prints "
         "tables and optionally writes CSV");
-    benchCommand->add_option("scenes", bench.scenePaths, "Scene files");
+    benchCommand->add_option("scenes", bench.scenePaths,
+                             "Scene files (none, and no --spheres: the shipped demo scene, lecture-demo)");
     benchCommand->add_option("--spheres", bench.sphereCounts,
                              "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
                              "scene each, measured on every backend")
@@ -229,9 +230,6 @@ int main(int argc, char** argv) {
             (pixelCommand->parsed() && pixelBackend == "cpu" && pixelCommand->count("--precision") > 0);
         if (cpuOnlyWithPrecision) {
             throw CLI::ValidationError("--precision", "applies to the GPU backend only");
-        }
-        if (benchCommand->parsed() && bench.scenePaths.empty() && bench.sphereCounts.empty()) {
-            throw CLI::ValidationError("bench", "needs scene files, --spheres, or both");
         }
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);

@@ -13,6 +13,7 @@
 #include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "gpu/shader_compiler.h"
 #include "image/aov.h"
 #include "image/image_io.h"
 #include "io/output_plan.h"
@@ -74,6 +75,11 @@ AovLayout aovLayout(const Scene& scene) {
 // by band too. Returns how, for the summary line.
 std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
                         std::optional<StagedAovs>& aovs) {
+    // glslang sets itself up while the Vulkan instance and device are created.
+    std::optional<ShaderCompilerWarmUp> compilerWarmUp;
+    if (isSmallScene(scene)) {
+        compilerWarmUp.emplace();
+    }
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
     Progress progress(scene.image.height);
