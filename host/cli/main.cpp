@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
     RenderOptions render;
     std::string renderBackend = "auto";
     std::string renderPrecision = "auto";
+    std::string renderCulling = "auto";
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON), see README.md")->required();
     renderCommand
@@ -112,6 +113,13 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
         ->capture_default_str();
     addPrecisionOption(*renderCommand, renderPrecision);
+    renderCommand
+        ->add_option("--culling", renderCulling,
+                     "GPU: render screen tiles with kernels that leave out the tests their rays cannot need "
+                     "(the same image): on, off, or auto (for renders of at least 32 million samples, where it "
+                     "repays compiling the extra kernels)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
     addImageOptions(*renderCommand, render.image);
     addDeviceOption(*renderCommand, render.vulkan);
     addThreadsOption(*renderCommand, render.threads, "CPU backend");
@@ -249,6 +257,7 @@ int main(int argc, char** argv) {
         render.vulkan.validate = validate;
         render.backend = renderBackend == "cpu" ? Backend::Cpu : renderBackend == "gpu" ? Backend::Gpu : Backend::Auto;
         render.precision = *parsePrecision(renderPrecision);
+        render.culling = renderCulling == "on" ? Culling::On : renderCulling == "off" ? Culling::Off : Culling::Auto;
         return runRender(render);
     }
     if (compareCommand->parsed()) {

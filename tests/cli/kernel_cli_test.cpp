@@ -1,6 +1,7 @@
 // The generated kernel through the real executable: `render` says how its kernel was made (written,
 // compiled by glslang or loaded from the kernel cache under $XDG_CACHE_HOME/hexray) and how long the
-// driver's compile took; a corrupt cache file is rewritten, and an unusable cache is no cache.
+// driver's compile took; a corrupt cache file is rewritten, and an unusable cache is no cache;
+// culling by tile classes leaves the image as it was.
 
 #include <fstream>
 
@@ -67,6 +68,20 @@ TEST_F(KernelCliTest, TwoProcessesSharingTheCacheBothSucceed) {
                                 "a.png >/dev/null & " + render + "b.png >/dev/null & wait) && cmp a.png b.png";
     EXPECT_EQ(std::system(command.c_str()), 0);
     EXPECT_EQ(cacheFiles().size(), 1u);  // one whole file, no temporary left
+}
+
+TEST_F(KernelCliTest, CullingRendersTheSameImageWithAKernelPerTileClass) {
+    const std::string demo = "render " + scene("lecture-demo.json") + " --width 200 --height 150 ";
+    const RunResult culled = hexray(demo + "--culling on -o on.png");
+    ASSERT_EQ(culled.exitCode, 0) << culled.err;
+    EXPECT_NE(culled.out.find("tile classes"), std::string::npos) << culled.out;
+    const RunResult whole = hexray(demo + "--culling off -o off.png");
+    ASSERT_EQ(whole.exitCode, 0) << whole.err;
+    EXPECT_EQ(whole.out.find("tile classes"), std::string::npos) << whole.out;
+    EXPECT_EQ(readFile(dir_ / "on.png"), readFile(dir_ / "off.png"));
+    // A small render is not worth the extra kernels' compile: auto leaves it whole.
+    EXPECT_EQ(hexray(demo + "-o auto.png").out.find("tile classes"), std::string::npos);
+    EXPECT_EQ(hexray(demo + "--culling maybe -o x.png").exitCode, 2);
 }
 
 }  // namespace
