@@ -255,7 +255,7 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, const RenderPlan& plan, 
 }
 
 GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
-                                              const BandConsumer& consume) {
+                                              const BandConsumer& consume, RowRange rowRange) {
     GpuRenderResult result;
     const std::uint32_t width = scene.image.width;
     const bool aov = output == GpuOutput::LinearClassesAndAov;
@@ -279,11 +279,12 @@ GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPl
             rows.normals[i] = glm::vec3(band.aovs[i]);
         }
         consume(band.firstRow, rows);
-    });
+    }, rowRange);
     return result;
 }
 
-GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume) {
+GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume,
+                                               RowRange rows) {
     GpuRenderResult result;
     std::vector<std::uint8_t> rgb;
     renderBands(scene, plan, GpuOutput::Encoded8, result, [&](const Band& band) {
@@ -293,7 +294,7 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderP
             std::memcpy(&rgb[3 * i], &band.encoded[i], 3);  // RGBA8, R in the lowest byte: drop A
         }
         consume(band.firstRow, rgb);
-    });
+    }, rows);
     return result;
 }
 
@@ -376,14 +377,14 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan
         trace = f64 ? unpackTrace<double>(scene, band.trace, plan.placement)
                     : unpackTrace<float>(scene, band.trace, plan.placement);
     };
-    renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, request);
+    renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, RowRange{}, request);
     trace.precision = plan.precision;
     trace.usedBvh = bands.usedBvh;
     return trace;
 }
 
 void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
-                              const std::function<void(const Band&)>& consume,
+                              const std::function<void(const Band&)>& consume, RowRange rowRange,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
@@ -517,8 +518,9 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     // dispatch) is not counted as render time.
     timing.firstDispatchMilliseconds = runDispatch(GpuBand{0, std::min(rowsPerBand, WORKGROUP_SIZE)}, 1, 1, false);
 
-    for (std::uint32_t firstRow = 0; firstRow < height; firstRow += rowsPerBand) {
-        const std::uint32_t rows = std::min(rowsPerBand, height - firstRow);
+    const std::uint32_t endRow = std::min(rowRange.end(), height);
+    for (std::uint32_t firstRow = rowRange.first; firstRow < endRow; firstRow += rowsPerBand) {
+        const std::uint32_t rows = std::min(rowsPerBand, endRow - firstRow);
         timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
         consume(Band{firstRow, rows, reinterpret_cast<const GpuPixel*>(pixelBuffer.data()),
                      reinterpret_cast<const GpuPixelClass*>(classBuffer.data()),
