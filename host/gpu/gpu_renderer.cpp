@@ -256,7 +256,7 @@ GpuRenderResult GpuRenderer::render(const Scene& scene, const RenderPlan& plan, 
 }
 
 GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
-                                              const BandConsumer& consume) {
+                                              const BandConsumer& consume, RowRange rowRange) {
     GpuRenderResult result;
     const std::uint32_t width = scene.image.width;
     const bool aov = output == GpuOutput::LinearClassesAndAov;
@@ -280,11 +280,12 @@ GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPl
             rows.normals[i] = glm::vec3(band.aovs[i]);
         }
         consume(band.firstRow, rows);
-    });
+    }, rowRange);
     return result;
 }
 
-GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume) {
+GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume,
+                                               RowRange rows) {
     GpuRenderResult result;
     std::vector<std::uint8_t> rgb;
     renderBands(scene, plan, GpuOutput::Encoded8, result, [&](const Band& band) {
@@ -294,7 +295,7 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderP
             std::memcpy(&rgb[3 * i], &band.encoded[i], 3);  // RGBA8, R in the lowest byte: drop A
         }
         consume(band.firstRow, rgb);
-    });
+    }, rows);
     return result;
 }
 
@@ -377,7 +378,7 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan
         trace = f64 ? unpackTrace<double>(scene, band.trace, plan.placement)
                     : unpackTrace<float>(scene, band.trace, plan.placement);
     };
-    renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, request);
+    renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, RowRange{}, request);
     trace.precision = plan.precision;
     trace.usedBvh = bands.usedBvh;
     return trace;
@@ -420,10 +421,17 @@ BandTiles bandTiles(const TileClassification& classification, std::uint32_t firs
     return band;
 }
 
+// The band buffer's pixels from `offset` on (null for a buffer this render does not fill).
+template <typename Pixel>
+const Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
+    const auto* first = reinterpret_cast<const Pixel*>(buffer.data());
+    return first ? first + offset : nullptr;
+}
+
 }  // namespace
 
 void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
-                              const std::function<void(const Band&)>& consume,
+                              const std::function<void(const Band&)>& consume, RowRange rowRange,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
@@ -607,13 +615,19 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     }
     timing.firstDispatchMilliseconds = run(warmUp, false);
 
-    for (std::uint32_t firstRow = 0; firstRow < height; firstRow += rowsPerBand) {
-        const std::uint32_t rows = std::min(rowsPerBand, height - firstRow);
+    // Bands start on a tile row, so each tile is one of the classification's (a range of rows
+    // that starts inside a tile renders that tile whole and hands on only the range's rows).
+    const std::uint32_t endRow = std::min(rowRange.end(), height);
+    const std::uint32_t startRow = std::min(rowRange.first, endRow) / WORKGROUP_SIZE * WORKGROUP_SIZE;
+    for (std::uint32_t firstRow = startRow; firstRow < endRow; firstRow += rowsPerBand) {
+        const std::uint32_t rows = std::min(rowsPerBand, endRow - firstRow);
         timing.renderMilliseconds += run(bandDispatches(firstRow, rows), true);
-        consume(Band{firstRow, rows, reinterpret_cast<const GpuPixel*>(pixelBuffer.data()),
-                     reinterpret_cast<const GpuPixelClass*>(classBuffer.data()),
-                     reinterpret_cast<const gpu::GpuEncodedPixel*>(encodedBuffer.data()),
-                     reinterpret_cast<const gpu::GpuAovPixel*>(aovBuffer.data()), traceBuffer.data()});
+        const std::uint32_t skipped = std::max(firstRow, rowRange.first) - firstRow;
+        const std::size_t offset = std::size_t(skipped) * width;
+        consume(Band{firstRow + skipped, rows - skipped, pixelsFrom<GpuPixel>(pixelBuffer, offset),
+                     pixelsFrom<GpuPixelClass>(classBuffer, offset),
+                     pixelsFrom<gpu::GpuEncodedPixel>(encodedBuffer, offset),
+                     pixelsFrom<gpu::GpuAovPixel>(aovBuffer, offset), traceBuffer.data()});
     }
 }
 

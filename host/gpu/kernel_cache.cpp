@@ -99,8 +99,7 @@ void KernelCache::store(const std::string& key, std::span<const std::uint32_t> s
     std::error_code error;
     fs::create_directories(directory_, error);
     const fs::path target = fileFor(key);
-    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about "." + string + "...".
-    std::string name = ".";
+    std::string name = ".";  // built in steps: GCC 12 misreads "." + std::string as overlapping (-Wrestrict)
     name += target.filename().string();
     name += ".XXXXXX";
     std::string temporary = (directory_ / name).string();
