@@ -11,6 +11,7 @@
 #include "bench/bench_report.h"
 #include "bench/lecture_demo_ceiling.h"
 #include "cli/command_support.h"
+#include "cli/progress.h"
 #include "cpu/cpu_renderer.h"
 #include "demo_scene.h"
 #include "io/output_file.h"
@@ -203,12 +204,18 @@ void addCurveReferences(const BenchOptions& options, Bench& bench) {
 // on all of them alike.
 std::vector<BenchMeasurement> runRounds(const BenchOptions& options, BenchBackends& backends, Bench& bench) {
     std::vector<BenchMeasurement> measurements(bench.configurations.size());
+    Progress progress("bench", std::uint64_t(options.rounds) * bench.configurations.size(),
+                      Progress::Unit::Measurements);
+    std::uint64_t done = 0;
     for (unsigned round = 0; round < options.rounds; ++round) {
-        std::fprintf(stderr, "bench: round %u of %u\n", round + 1, options.rounds);
+        if (!Progress::shown()) {  // a log gets one line a round
+            std::fprintf(stderr, "bench: round %u of %u\n", round + 1, options.rounds);
+        }
         for (std::size_t i = 0; i < bench.configurations.size(); ++i) {
             const BenchConfiguration& configuration = bench.configurations[i];
             const Scene scene = withSamples(bench.scenes[configuration.scene].scene, configuration.samplesPerPixel);
             backends.measure(scene, configuration, round == 0, measurements[i]);
+            progress.update(++done);
         }
     }
     for (std::size_t i = 0; i < bench.configurations.size(); ++i) {

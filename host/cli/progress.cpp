@@ -11,9 +11,9 @@ constexpr auto kRedrawInterval = std::chrono::milliseconds(100);
 
 std::string amount(std::uint64_t done, std::uint64_t total, Progress::Unit unit) {
     char text[96];
-    if (unit == Progress::Unit::Rows) {
-        std::snprintf(text, sizeof text, "%llu of %llu rows", static_cast<unsigned long long>(done),
-                      static_cast<unsigned long long>(total));
+    if (unit != Progress::Unit::Bytes) {
+        std::snprintf(text, sizeof text, "%llu of %llu %s", static_cast<unsigned long long>(done),
+                      static_cast<unsigned long long>(total), unit == Progress::Unit::Rows ? "rows" : "measurements");
     } else {
         std::snprintf(text, sizeof text, "%.1f of %.1f MB", double(done) * 1e-6, double(total) * 1e-6);
     }

@@ -12,9 +12,9 @@ namespace hexray::cli {
 
 class Progress {
 public:
-    enum class Unit { Rows, Bytes };
+    enum class Unit { Rows, Bytes, Measurements };
 
-    // `task` begins the line ("rendering scene.json"); `total` rows or bytes make the whole.
+    // `task` begins the line ("rendering scene.json"); `total` units make the whole.
     Progress(std::string task, std::uint64_t total, Unit unit = Unit::Rows);
     ~Progress();
     Progress(const Progress&) = delete;

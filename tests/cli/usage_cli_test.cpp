@@ -129,6 +129,16 @@ TEST_F(ProgressCliTest, CompareAndALargeSceneLoadShowProgressOnATerminal) {
     EXPECT_TRUE(std::regex_search(run.out, std::regex("loading big.json: \\d+% \\(\\d\\.\\d of \\d\\.\\d MB\\)"))) << run.out;
 }
 
+TEST_F(ProgressCliTest, BenchShowsMeasurementsDoneAndTimeLeftOnATerminal) {
+    const RunResult run = onTerminal("bench " + scene("lecture-demo.json") +
+                                     " --width 64 --height 48 --rounds 2 --samples 1 --reference-samples 1");
+    ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+    EXPECT_TRUE(std::regex_search(
+        run.out, std::regex("bench: \\d+% \\(\\d+ of \\d+ measurements\\), \\d+\\.\\d s left")))
+        << run.out;
+    EXPECT_EQ(run.out.find("bench: round 1 of 2"), std::string::npos) << run.out;
+}
+
 TEST_F(ProgressCliTest, NothingIsShownWhenStandardErrorIsNotATerminal) {
     const RunResult run = hexray("render " + scene("lecture-demo.json") + " --backend cpu --width 200 --height 1500 -o c.png");
     ASSERT_EQ(run.exitCode, 0) << run.err;
