@@ -28,9 +28,10 @@ HEXRAY_CONSTANT uint CANDIDATE_GRID_BINDING = 6u;    // candidate lists: the cam
 HEXRAY_CONSTANT uint CANDIDATE_CELL_BINDING = 7u;    // candidate lists: where each cell's list starts
 HEXRAY_CONSTANT uint AOV_BINDING = 8u;      // inspection: per-pixel depth and normal
 HEXRAY_CONSTANT uint TRACE_BINDING = 9u;    // inspection: one pixel explained
-HEXRAY_CONSTANT uint CANDIDATE_ENTRY_BINDING = 10u;  // candidate lists: the lists, one after another
-HEXRAY_CONSTANT uint CANDIDATE_SPHERE_BINDING = 11u; // candidate lists: the spheres they name
-HEXRAY_CONSTANT uint BINDING_COUNT = 12u;
+HEXRAY_CONSTANT uint TILE_BINDING = 10u;    // a tile class's kernel: the tiles it renders
+HEXRAY_CONSTANT uint CANDIDATE_ENTRY_BINDING = 11u;  // candidate lists: the lists, one after another
+HEXRAY_CONSTANT uint CANDIDATE_SPHERE_BINDING = 12u; // candidate lists: the spheres they name
+HEXRAY_CONSTANT uint BINDING_COUNT = 13u;
 // The candidate bindings are uniform texel buffers (RGBA32UI grids and spheres, R32UI cells and
 // entries): lavapipe reads a texel buffer at a different index in each lane with vector gathers,
 // a storage buffer one lane and one component at a time.

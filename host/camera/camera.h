@@ -29,6 +29,17 @@ glm::dmat3 cameraRotation(const CameraSettings& camera);
 // The direction the camera looks along (the rotated +Z axis).
 glm::dvec3 cameraForward(const CameraSettings& camera);
 
+struct CameraAngles {
+    double yawDegrees = 0.0;
+    double pitchDegrees = 0.0;
+    double rollDegrees = 0.0;
+};
+
+// The angles of a camera at `position` looking at `target`, with the unit vector `up` pointing up in
+// the image as nearly as it can (its part across the view): the scene file's look-at camera, as
+// the course's angles. The caller rejects a target at the position and an `up` along the view.
+CameraAngles lookAtAngles(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up);
+
 // The sheet for a FOV measured across the diagonal of a sheet of the given aspect.
 PixelSheet makePixelSheet(const CameraSettings& camera, double aspect);
 

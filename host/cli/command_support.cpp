@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <new>
 
+#include "cli/progress.h"
 #include "image/image_io.h"
 #include "io/output_error.h"
 #include "io/output_plan.h"
 #include "scene/scene_loader.h"
+#include "tile/tile_stamp.h"
 
 namespace hexray::cli {
 
@@ -38,6 +40,9 @@ int guarded(const std::function<int()>& command) {
         const VulkanError classified = classify(error, "rendering");
         printError(classified.what());
         return exitCodeFor(classified.failure());
+    } catch (const TileError& error) {
+        printError(error.what());
+        return kBadInput;
     } catch (const OutputConflict& error) {
         printError(error.what());
         return kBadInput;
@@ -60,8 +65,22 @@ int guarded(const std::function<int()>& command) {
     }
 }
 
-Scene loadScene(const std::string& path, const ImageOverride& image) {
-    Scene scene = loadSceneFile(path);
+Scene loadScene(const std::string& path, const ImageOverride& image, std::string* identity) {
+    const std::string text = readSceneFile(path);
+    if (identity) {
+        *identity = sceneTextIdentity(text);
+    }
+    Progress progress("loading " + path, text.size(), Progress::Unit::Bytes);
+    ParseProgress parseProgress;  // none unless shown: the parser's fastest path
+    if (Progress::shown()) {
+        parseProgress = [&](std::size_t parsed, std::size_t) { progress.update(parsed); };
+    }
+    Scene scene = parseScene(text, path, parseProgress);
+    applyImageOverride(scene, image);
+    return scene;
+}
+
+void applyImageOverride(Scene& scene, const ImageOverride& image) {
     if (image.width || image.height) {
         const char* source = !image.height ? "--width" : !image.width ? "--height" : "--width/--height";
         overrideImageSize(scene, image.width.value_or(scene.image.width), image.height.value_or(scene.image.height),
@@ -70,7 +89,6 @@ Scene loadScene(const std::string& path, const ImageOverride& image) {
     if (image.samplesPerPixel) {
         overrideSamplesPerPixel(scene, *image.samplesPerPixel, "--spp");
     }
-    return scene;
 }
 
 int withValidationVerdict(int commandCode, const ValidationLog& log) {

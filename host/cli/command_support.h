@@ -26,7 +26,12 @@ int exitCodeFor(VulkanFailure failure);
 // exit code 6 and a message that says which size to reduce).
 int guarded(const std::function<int()>& command);
 
-Scene loadScene(const std::string& path, const ImageOverride& image);
+// Loads the scene with the command line's overrides, showing progress for a large file on a
+// terminal. With `identity`, also the file's identity (tile/tile_stamp.h, sceneTextIdentity).
+Scene loadScene(const std::string& path, const ImageOverride& image, std::string* identity = nullptr);
+
+// The command line's replacements for the scene's image size and samples, checked like the file's.
+void applyImageOverride(Scene& scene, const ImageOverride& image);
 
 // Validation messages fail the command: a tester's run must be clean, not merely finish.
 // `commandCode` wins when it is already a failure.

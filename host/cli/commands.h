@@ -8,6 +8,8 @@
 
 #include "compare/compare.h"
 #include "gpu/precision.h"
+#include "gpu/render_plan.h"
+#include "tile/tile.h"
 
 namespace hexray::cli {
 
@@ -39,14 +41,23 @@ struct VulkanOptions {
 };
 
 struct RenderOptions {
-    std::string scenePath;
+    std::vector<std::string> scenePaths;  // scene files or directories of them, each rendered to its own file
     ImageOverride image;
     VulkanOptions vulkan;
     Backend backend = Backend::Auto;
     Precision precision = Precision::Auto;
-    std::string outputPath;  // empty: <scene name>.png in the current directory
+    Culling culling = Culling::Auto;
+    // Empty: <scene name>.png in the current directory. One scene: the file, or a directory to
+    // put <scene name>.png in; several: that directory.
+    std::string outputPath;
     unsigned threads = 0;    // CPU backend; 0 = all cores
     std::string aovDirectory;  // empty: no AOVs (see image/aov.h)
+    std::optional<Tile> tile;  // only these rows, recorded in the file for `hexray merge`
+};
+
+struct MergeOptions {
+    std::string outputPath;
+    std::vector<std::string> piecePaths;
 };
 
 struct CompareOptions {
@@ -94,5 +105,9 @@ int runCompare(const CompareOptions& options);
 int runDevices(const VulkanOptions& options);
 int runBench(const BenchOptions& options);
 int runPixel(const PixelOptions& options);
+int runMerge(const MergeOptions& options);
+// `hexray --version`: hexray's version and git revision, the Vulkan loader's version and the
+// device hexray would use, with its driver (or why Vulkan is unavailable). Exit code 0 either way.
+int runVersion();
 
 }  // namespace hexray::cli

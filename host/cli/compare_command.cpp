@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "cli/command_support.h"
+#include "cli/progress.h"
+#include "cli/scene_files.h"
 #include "compare/render_comparator.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
@@ -19,40 +21,6 @@ namespace hexray::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct SceneFile {
-    std::string path;
-    std::string name;  // for the table: the path under the directory given, without .json
-};
-
-// The scene files named, with directories expanded to the *.json files under them, sorted.
-std::vector<SceneFile> sceneFiles(const std::vector<std::string>& paths) {
-    std::vector<SceneFile> files;
-    for (const std::string& path : paths) {
-        std::error_code error;
-        if (!fs::is_directory(path, error)) {
-            files.push_back({path, fs::path(path).stem().string()});  // a missing file is reported when loaded
-            continue;
-        }
-        std::vector<SceneFile> found;
-        for (auto entry = fs::recursive_directory_iterator(path, error); !error && entry != fs::end(entry);
-             entry.increment(error)) {
-            if (entry->is_regular_file() && entry->path().extension() == ".json") {
-                found.push_back({entry->path().string(),
-                                 fs::relative(entry->path(), path).replace_extension().string()});
-            }
-        }
-        if (error) {
-            throw SceneError(path + ": cannot read the directory: " + error.message());
-        }
-        if (found.empty()) {
-            throw SceneError(path + ": no scene files (*.json) in this directory");
-        }
-        std::sort(found.begin(), found.end(), [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
-        files.insert(files.end(), found.begin(), found.end());
-    }
-    return files;
-}
 
 struct Row {
     Precision precision;
@@ -201,10 +169,12 @@ struct BandedComparison {
 };
 
 // Renders `scene` on the GPU a band at a time, the CPU reference for the same rows as each band
-// arrives, and compares them; `outputs` (if any) get each band's rows.
-BandedComparison compareInBands(GpuRenderer& renderer, const Scene& scene, Precision requested, unsigned threads,
-                                BandOutputs* outputs) {
+// arrives, and compares them; `outputs` (if any) get each band's rows. On a terminal, a progress
+// line names the scene by `path`.
+BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, const Scene& scene,
+                                Precision requested, unsigned threads, BandOutputs* outputs) {
     const bool aov = outputs && outputs->withAovs();
+    Progress progress("comparing " + path, scene.image.height);
     const CpuBandRenderer reference(scene, threads, Acceleration::Auto, aov);
     RenderComparator comparator;
     CpuRender cpu;
@@ -223,6 +193,7 @@ BandedComparison compareInBands(GpuRenderer& renderer, const Scene& scene, Preci
             if (outputs) {
                 outputs->writeRows(cpu, band, ambiguous, reference8, gpu8);
             }
+            progress.update(firstRow + band.image.height);
         });
     return {comparator.result(), gpu.precision, gpu.timing.renderMilliseconds, cpuMilliseconds, reference.threadCount()};
 }
@@ -297,6 +268,52 @@ void printComparison(const SceneFile& file, const Scene& scene, Precision reques
     printDetailed(file.path, scene, row, gpuHow, cpuHow, tolerance);
 }
 
+// What a comparison command has found so far.
+struct Verdicts {
+    bool allPassed = true;
+    bool allLoaded = true;
+
+    int exitCode() const { return !allLoaded ? kBadInput : allPassed ? kSuccess : kToleranceExceeded; }
+};
+
+Row rowFor(const BandedComparison& compared, Precision automatic, const CompareOptions& options) {
+    return Row{compared.precision,
+               compared.precision == automatic,
+               !(options.allPrecisions && compared.precision == Precision::F32Naive),
+               compared.comparison,
+               judge(compared.comparison, options.tolerance),
+               compared.gpuMilliseconds};
+}
+
+// Compares one scene in each precision asked for: a table row, or the detailed report (and its
+// files), for each.
+void compareScene(GpuRenderer& renderer, const VulkanContext& context, const SceneFile& file, const Scene& scene,
+                  const CompareOptions& options, bool table, Verdicts& verdicts) {
+    const Precision automatic = renderer.resolve(scene, Precision::Auto);
+    for (const Precision requested : precisionsToCompare(options, context)) {
+        std::optional<BandOutputs> outputs;
+        if (!table) {
+            outputs.emplace(options, scene);
+        }
+        const BandedComparison compared = compareInBands(renderer, file.path, scene, requested, options.threads,
+                                                         outputs ? &*outputs : nullptr);
+        const Row row = rowFor(compared, automatic, options);
+        verdicts.allPassed = verdicts.allPassed && (!row.judged || row.verdict.passed());
+        if (table) {
+            printTableRow(file.name, row);
+            continue;
+        }
+        printComparison(file, scene, requested, compared, row, context, options.tolerance);
+        outputs->commit();
+    }
+}
+
+// Bands of floats, not the encoded render's larger ones: memory grows with the width only. On a
+// terminal, smaller ones, so that the progress line moves.
+std::uint64_t comparisonBandBytes() {
+    return Progress::shown() ? kBandBytes / 8 : kBandBytes;
+}
+
 }  // namespace
 
 int runCompare(const CompareOptions& options) {
@@ -307,46 +324,22 @@ int runCompare(const CompareOptions& options) {
         requireSingleComparison(options, table);
         checkPaths(options, files);
         const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
-        // Bands of floats, not the encoded render's larger ones: memory grows with the width only.
-        GpuRenderer renderer(context, kBandBytes);
-        bool allPassed = true;
-        bool allLoaded = true;
+        GpuRenderer renderer(context, comparisonBandBytes());
         if (table) {
             printTableHeader();
         }
+        Verdicts verdicts;
         for (const SceneFile& file : files) {
             const std::optional<Scene> scene = loadForComparison(file, options.image, table);
-            allLoaded = allLoaded && scene.has_value();
-            if (!scene) {
-                continue;
-            }
-            const Precision automatic = renderer.resolve(*scene, Precision::Auto);
-            for (const Precision requested : precisionsToCompare(options, context)) {
-                std::optional<BandOutputs> outputs;
-                if (!table) {
-                    outputs.emplace(options, *scene);
-                }
-                const BandedComparison compared =
-                    compareInBands(renderer, *scene, requested, options.threads, outputs ? &*outputs : nullptr);
-                Row row{compared.precision,
-                        compared.precision == automatic,
-                        !(options.allPrecisions && compared.precision == Precision::F32Naive),
-                        compared.comparison,
-                        judge(compared.comparison, options.tolerance),
-                        compared.gpuMilliseconds};
-                allPassed = allPassed && (!row.judged || row.verdict.passed());
-                if (table) {
-                    printTableRow(file.name, row);
-                    continue;
-                }
-                printComparison(file, *scene, requested, compared, row, context, options.tolerance);
-                outputs->commit();
+            verdicts.allLoaded = verdicts.allLoaded && scene.has_value();
+            if (scene) {
+                compareScene(renderer, context, file, *scene, options, table, verdicts);
             }
         }
         if (table) {
-            std::printf("%s\n", allPassed && allLoaded ? "PASS" : "FAIL");
+            std::printf("%s\n", verdicts.allPassed && verdicts.allLoaded ? "PASS" : "FAIL");
         }
-        return int(!allLoaded ? kBadInput : allPassed ? kSuccess : kToleranceExceeded);
+        return verdicts.exitCode();
     });
     return withValidationVerdict(code, log);
 }

@@ -1,9 +1,12 @@
 // hexray: renders scene files with a Vulkan compute shader (or the CPU reference) and compares
-// the two. The command line is defined here; the work is in the *_command.cpp files.
+// the two. The command line is defined here, one function per subcommand; the work is in the
+// *_command.cpp files.
 
 #include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,14 +26,35 @@ using namespace hexray;
 using namespace hexray::cli;
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line, or an\n"
-    "output that is an input or another output); 3 Vulkan unavailable or failed (no driver or device, no compute\n"
-    "queue, no float64 for --precision f64); 4 --validate and the validation layer reported messages; 5 an output\n"
-    "cannot be written (its directory is checked before any work); 6 any other failure (out of memory: make the\n"
-    "image narrower); 7 the Vulkan device was lost or hung during the render;\n"
+    "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line, a piece that\n"
+    "does not fit a merge, or an output that is an input or another output); 3 Vulkan unavailable or failed (no\n"
+    "driver or device, no compute queue, no float64 for --precision f64); 4 --validate and the validation layer\n"
+    "reported messages; 5 an output cannot be written (its directory is checked before any work); 6 any other\n"
+    "failure (out of memory: make the image narrower); 7 the Vulkan device was lost or hung during the render;\n"
     "8 the Vulkan driver ran out of device (or host) memory.\n"
     "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except an\n"
-    "unknown --device or a missing validation layer), 7 or 8.";
+    "unknown --device or a missing validation layer), 7 or 8. render of several scenes renders every one it can\n"
+    "and exits with the first failed scene's code.";
+
+constexpr const char* kCommands = "render, merge, compare, bench, pixel, devices";
+
+// Every subcommand's options, as parsing fills them in.
+struct CommandLine {
+    bool validate = false;
+    RenderOptions render;
+    std::string renderBackend = "auto";
+    std::string renderPrecision = "auto";
+    std::string renderCulling = "auto";
+    std::string renderTile;
+    MergeOptions merge;
+    CompareOptions compare;
+    std::string comparePrecision = "auto";
+    BenchOptions bench;
+    PixelOptions pixel;
+    std::string pixelBackend = "both";
+    std::string pixelPrecision = "auto";
+    VulkanOptions devices;
+};
 
 void addImageOptions(CLI::App& command, ImageOverride& image) {
     const CLI::Validator size = IntegerBetween<std::int64_t>(1, kMaxImageDimension);
@@ -38,7 +62,8 @@ void addImageOptions(CLI::App& command, ImageOverride& image) {
     command.add_option("--height", image.height, "Override the scene's image height (pixels)")->check(size);
     command
         .add_option("--spp", image.samplesPerPixel,
-                    "Override the scene's samples per pixel (anti-aliasing, 1 to 1024; default 1)")
+                    "Override the scene's samples per pixel (anti-aliasing, 1 to 1024; default: the scene's "
+                    "image.spp, itself 1 when the scene does not say)")
         ->check(IntegerBetween<std::int64_t>(1, kMaxSamplesPerPixel));
 }
 
@@ -48,6 +73,233 @@ CLI::Option* addThreadsOption(CLI::App& command, unsigned& threads, const char* 
                     std::string(what) + " threads (default: all cores; at most the image's height and " +
                         std::to_string(kMaxCpuThreads) + " are started)")
         ->check(IntegerBetween<unsigned>(1, UINT_MAX));
+}
+
+void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
+    command.add_option("--device", vulkan.device,
+                       "Vulkan device: index or part of the name, as `hexray devices` lists them (default: a "
+                       "discrete GPU, else an integrated, virtual or CPU one such as lavapipe, with a compute queue)");
+}
+
+CLI::Option* addPrecisionOption(CLI::App& command, std::string& precision) {
+    return command
+        .add_option("--precision", precision,
+                    "Shader arithmetic: auto (per scene: f32 when its float32 error stays below 1e-3 of the scene's "
+                    "smallest feature, else f64), f32, f64 (needs shaderFloat64), or f32-naive (the textbook "
+                    "formulas, for comparison)")
+        ->check(CLI::IsMember({"auto", "f32", "f64", "f32-naive"}))
+        ->capture_default_str();
+}
+
+void addRenderCommand(CLI::App& app, CommandLine& line) {
+    RenderOptions& render = line.render;
+    CLI::App* command = app.add_subcommand(
+        "render", "Render scenes to images (PNG or OpenEXR), each scene to its own file, in one process");
+    command
+        ->add_option("scenes", render.scenePaths,
+                     "Scene files (JSON: image, camera, lights, shaders and nodes), or directories of them (every "
+                     "*.json below)")
+        ->required();
+    command
+        ->add_option("-o,--output", render.outputPath,
+                     "Output image, by its extension: .png (8-bit), .exr (linear float RGB, before encoding), or - "
+                     "(PNG on standard output). Default: <scene name>.png here. With several scenes, or when it is "
+                     "a directory: the directory the images go into, as <scene name>.png")
+        ->check(NotEmpty());
+    command
+        ->add_option("--backend", line.renderBackend,
+                     "gpu: the Vulkan compute shader; cpu: the double-precision reference; auto: the GPU, or the "
+                     "CPU reference (with a note on stderr) when the GPU path cannot render")
+        ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
+        ->capture_default_str();
+    addPrecisionOption(*command, line.renderPrecision);
+    command
+        ->add_option("--culling", line.renderCulling,
+                     "GPU: render screen tiles with kernels that leave out the tests their rays cannot need "
+                     "(the same image): on, off, or auto (for renders of at least 32 million samples, where it "
+                     "repays compiling the extra kernels)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
+    addImageOptions(*command, render.image);
+    addDeviceOption(*command, render.vulkan);
+    addThreadsOption(*command, render.threads, "CPU backend");
+    command
+        ->add_option("--aov", render.aovDirectory,
+                     "Also write, from each pixel's first sample, depth.exr, normal.exr, object-id.exr and "
+                     "light-<i>.exr (1 where light i reaches the point), with a PNG preview of each, into this "
+                     "directory")
+        ->check(NotEmpty());
+    command
+        ->add_option("--tile", line.renderTile,
+                     "Render only tile I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
+                     "`hexray merge` (default name <scene name>.tile-I-of-N.png)")
+        ->check(TileSpec());
+}
+
+void addMergeCommand(CLI::App& app, CommandLine& line) {
+    CLI::App* command = app.add_subcommand(
+        "merge", "Assemble the pieces of `render --tile I/N` into the whole image; refuses missing, overlapping "
+                 "or mismatched pieces");
+    command->add_option("output", line.merge.outputPath, "The whole image (.png, .exr as the pieces, or -)")
+        ->required()
+        ->check(NotEmpty());
+    command->add_option("pieces", line.merge.piecePaths, "Every piece, in any order")->required();
+}
+
+void addCompareCommand(CLI::App& app, CommandLine& line) {
+    CompareOptions& compare = line.compare;
+    CLI::App* command = app.add_subcommand(
+        "compare",
+        "Render scenes on the GPU and on the CPU reference and compare them: ambiguous pixels, topology "
+        "mismatches outside them, colour errors on the rest. Fails when the tolerance is exceeded");
+    command->add_option("scenes", compare.scenePaths, "Scene files, or directories of them")->required();
+    CLI::Option* precisionOption = addPrecisionOption(*command, line.comparePrecision);
+    command
+        ->add_flag("--all", compare.allPrecisions,
+                   "Every precision (f32-naive, f32, f64) for every scene, as one table; f32-naive rows are "
+                   "shown but not judged")
+        ->excludes(precisionOption);
+    addImageOptions(*command, compare.image);
+    addDeviceOption(*command, compare.vulkan);
+    command->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)")
+        ->check(NotEmpty());
+    command
+        ->add_option("--max-topology-mismatches", compare.tolerance.maxTopologyMismatches,
+                     "Tolerance: unambiguous pixels whose node, checker cell or lit lights differ")
+        ->check(IntegerBetween<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
+        ->capture_default_str();
+    command
+        ->add_option("--max-bad-pixels", compare.tolerance.maxSharePercent,
+                     "Tolerance: share of unambiguous pixels, in percent, whose 8-bit value may differ by more "
+                     "than one level")
+        ->check(FiniteNumberBetween(0.0, 100.0))
+        ->capture_default_str();
+    command
+        ->add_option("--max-rmse", compare.tolerance.maxRmseLevels,
+                     "Tolerance: RMSE of the 8-bit output over unambiguous pixels, in levels")
+        ->check(FiniteNumberBetween(0.0, 255.0))
+        ->capture_default_str();
+    addThreadsOption(*command, compare.threads, "CPU reference");
+    command
+        ->add_option("--mask", compare.maskPath,
+                     "Write a PNG of where the renders disagree: red topology mismatch, yellow colour more "
+                     "than one level off, blue ambiguous, black agreement")
+        ->check(NotEmpty());
+    command
+        ->add_option("--aov", compare.aovDirectory,
+                     "Write both backends' AOVs (as render --aov does) into DIR/gpu and DIR/cpu, and the CPU "
+                     "reference's decision margin as DIR/cpu/margin.exr")
+        ->check(NotEmpty());
+}
+
+void addBenchCommand(CLI::App& app, CommandLine& line) {
+    BenchOptions& bench = line.bench;
+    CLI::App* command = app.add_subcommand(
+        "bench",
+        "Measure speed against error: interleaved rounds of every backend, precision and sample count on each "
+        "scene, against a converged CPU reference, and the scaling curve over random-sphere scenes; prints "
+        "tables and optionally writes CSV");
+    command->add_option("scenes", bench.scenePaths,
+                        "Scene files (none, and no --spheres: the shipped demo scene, lecture-demo)");
+    command->add_option("--spheres", bench.sphereCounts,
+                        "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
+                        "scene each, measured on every backend")
+        ->check(IntegerBetween<std::uint32_t>(1, 1000000))
+        ->allow_extra_args(false)  // one comma-separated list, so scene files may follow it
+        ->delimiter(',');
+    command->add_option("--max-frame-seconds", bench.maxFrameSeconds,
+                        "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
+                        "not measured at that sphere count (its error columns still use a CPU reference render)")
+        ->check(FiniteNumberAbove(0.0))
+        ->capture_default_str();
+    addImageOptions(*command, bench.image);
+    addDeviceOption(*command, bench.vulkan);
+    command->add_option("--rounds", bench.rounds, "Interleaved rounds")
+        ->check(IntegerBetween<unsigned>(1, 1000))
+        ->capture_default_str();
+    command->add_option("--samples", bench.samples, "Samples per pixel to measure (several allowed)")
+        ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
+        ->capture_default_str();
+    command->add_option("--reference-samples", bench.referenceSamples,
+                        "Samples per pixel of the converged CPU reference")
+        ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
+        ->capture_default_str();
+    command->add_option("--csv", bench.csvPath, "Also write the table as CSV (- for standard output)")
+        ->check(NotEmpty());
+}
+
+void addPixelCommand(CLI::App& app, CommandLine& line) {
+    PixelOptions& pixel = line.pixel;
+    CLI::App* command = app.add_subcommand(
+        "pixel", "Explain one pixel: its ray, every node's intersection, the hit, the shading terms and the colour, "
+                 "from the shader and from the CPU reference side by side");
+    command->add_option("scene", pixel.scenePath, "Scene file (JSON)")->required();
+    command->add_option("x", pixel.x, "Column, 0 at the left")->required()->check(AnInteger<std::int64_t>());
+    command->add_option("y", pixel.y, "Row, 0 at the top")->required()->check(AnInteger<std::int64_t>());
+    command->add_option("--backend", line.pixelBackend, "both (side by side), gpu or cpu")
+        ->check(CLI::IsMember({"both", "gpu", "cpu"}))
+        ->capture_default_str();
+    addPrecisionOption(*command, line.pixelPrecision);
+    command->add_option("--sample", pixel.sample, "Which of the pixel's samples to explain (with --spp > 1)")
+        ->check(IntegerBetween<std::int64_t>(0, kMaxSamplesPerPixel - 1))
+        ->capture_default_str();
+    addImageOptions(*command, pixel.image);
+    addDeviceOption(*command, pixel.vulkan);
+}
+
+void addDevicesCommand(CLI::App& app, CommandLine& line) {
+    CLI::App* command = app.add_subcommand("devices", "List the Vulkan devices and the one hexray would use");
+    addDeviceOption(*command, line.devices);
+}
+
+void defineCommandLine(CLI::App& app, CommandLine& line) {
+    app.footer(kExitCodes);
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return std::string("hexray: error: ") + error.what() + "\nRun with --help for more information.\n";
+    });
+    app.require_subcommand(1);
+    app.fallthrough();  // the global options below are accepted after the subcommand too
+    app.add_flag("--validate", line.validate,
+                 "Enable the Khronos validation layer; any warning or error it reports fails the command "
+                 "(exit code 4). Also accepted after the command, as --version is");
+    app.add_flag_callback(
+        "--version", [] { throw CLI::CallForVersion("", 0); },
+        "Print hexray's version and git revision, the Vulkan loader's version and the device and driver hexray "
+        "would use");
+    addRenderCommand(app, line);
+    addMergeCommand(app, line);
+    addCompareCommand(app, line);
+    addBenchCommand(app, line);
+    addPixelCommand(app, line);
+    addDevicesCommand(app, line);
+}
+
+// The first word that is not an option, when it names no command: CLI11 would only say that a
+// subcommand is required.
+std::optional<std::string> unknownCommand(int argc, char** argv, const CLI::App& app) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string word = argv[i];
+        if (word == "--") {
+            return std::nullopt;
+        }
+        if (!word.empty() && word[0] != '-') {
+            const auto named = [&](const CLI::App* command) { return command->check_name(word); };
+            return app.get_subcommands(named).empty() ? std::optional<std::string>(word) : std::nullopt;
+        }
+    }
+    return std::nullopt;
+}
+
+// What CLI11 cannot check on its own; throws CLI::ValidationError.
+void checkCombinations(const CLI::App& app, const CommandLine& line) {
+    const bool cpuOnlyWithPrecision =
+        (app.got_subcommand("render") && line.renderBackend == "cpu" &&
+         app.get_subcommand("render")->count("--precision") > 0) ||
+        (app.got_subcommand("pixel") && line.pixelBackend == "cpu" &&
+         app.get_subcommand("pixel")->count("--precision") > 0);
+    if (cpuOnlyWithPrecision) {
+        throw CLI::ValidationError("--precision", "applies to the GPU backend only");
+    }
 }
 
 // The bench's paths, checked before its rounds (the bench itself only writes the CSV at the end).
@@ -65,19 +317,53 @@ int checkBenchPaths(const BenchOptions& bench) {
     });
 }
 
-void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
-    command.add_option("--device", vulkan.device,
-                       "Vulkan device: index or part of the name, as `hexray devices` lists them "
-                       "(default: a discrete or integrated GPU if present, else lavapipe)");
+Backend backendNamed(const std::string& name) {
+    return name == "cpu" ? Backend::Cpu : name == "gpu" ? Backend::Gpu : Backend::Auto;
 }
 
-CLI::Option* addPrecisionOption(CLI::App& command, std::string& precision) {
-    return command
-        .add_option("--precision", precision,
-                    "Shader arithmetic: auto (per scene, see README), f32, f64 (needs shaderFloat64), or "
-                    "f32-naive (the textbook formulas, for comparison)")
-        ->check(CLI::IsMember({"auto", "f32", "f64", "f32-naive"}))
-        ->capture_default_str();
+int runRenderCommand(CommandLine& line) {
+    RenderOptions& render = line.render;
+    render.vulkan.validate = line.validate;
+    render.backend = backendNamed(line.renderBackend);
+    render.precision = *parsePrecision(line.renderPrecision);
+    render.culling = line.renderCulling == "on" ? Culling::On : line.renderCulling == "off" ? Culling::Off : Culling::Auto;
+    render.tile = parseTile(line.renderTile);
+    return runRender(render);
+}
+
+int runPixelCommand(CommandLine& line) {
+    PixelOptions& pixel = line.pixel;
+    pixel.vulkan.validate = line.validate;
+    pixel.backend = line.pixelBackend == "gpu"   ? PixelBackend::Gpu
+                    : line.pixelBackend == "cpu" ? PixelBackend::Cpu
+                                                 : PixelBackend::Both;
+    pixel.precision = *parsePrecision(line.pixelPrecision);
+    return runPixel(pixel);
+}
+
+// Runs the subcommand parsed.
+int runCommand(const CLI::App& app, CommandLine& line) {
+    if (app.got_subcommand("render")) {
+        return runRenderCommand(line);
+    }
+    if (app.got_subcommand("merge")) {
+        return runMerge(line.merge);
+    }
+    if (app.got_subcommand("compare")) {
+        line.compare.vulkan.validate = line.validate;
+        line.compare.precision = *parsePrecision(line.comparePrecision);
+        return runCompare(line.compare);
+    }
+    if (app.got_subcommand("bench")) {
+        line.bench.vulkan.validate = line.validate;
+        const int checked = checkBenchPaths(line.bench);
+        return checked != kSuccess ? checked : runBench(line.bench);
+    }
+    if (app.got_subcommand("pixel")) {
+        return runPixelCommand(line);
+    }
+    line.devices.validate = line.validate;
+    return runDevices(line.devices);
 }
 
 }  // namespace
@@ -86,190 +372,33 @@ int main(int argc, char** argv) {
     CLI::App app("hexray: a raytracer whose renderer is a Vulkan compute shader, checked against an "
                  "independent CPU reference.",
                  "hexray");
-    app.footer(kExitCodes);
-    app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return std::string("hexray: error: ") + error.what() + "\nRun with --help for more information.\n";
-    });
-    app.require_subcommand(1);
-    bool validate = false;
-    app.add_flag("--validate", validate,
-                 "Enable the Khronos validation layer; any warning or error it reports fails the command "
-                 "(exit code 4)");
-
-    RenderOptions render;
-    std::string renderBackend = "auto";
-    std::string renderPrecision = "auto";
-    CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
-    renderCommand->add_option("scene", render.scenePath, "Scene file (JSON), see README.md")->required();
-    renderCommand
-        ->add_option("-o,--output", render.outputPath,
-                     "Output PNG (default: <scene name>.png here; - for standard output)")
-        ->check(NotEmpty());
-    renderCommand
-        ->add_option("--backend", renderBackend,
-                     "gpu: the Vulkan compute shader; cpu: the double-precision reference; auto: the GPU, or the "
-                     "CPU reference (with a note on stderr) when the GPU path cannot render")
-        ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
-        ->capture_default_str();
-    addPrecisionOption(*renderCommand, renderPrecision);
-    addImageOptions(*renderCommand, render.image);
-    addDeviceOption(*renderCommand, render.vulkan);
-    addThreadsOption(*renderCommand, render.threads, "CPU backend");
-    renderCommand
-        ->add_option("--aov", render.aovDirectory,
-                     "Also write depth, normal, object id and per-light shadow masks as OpenEXR files with "
-                     "PNG previews into this directory (see README)")
-        ->check(NotEmpty());
-
-    CompareOptions compare;
-    std::string comparePrecision = "auto";
-    CLI::App* compareCommand = app.add_subcommand(
-        "compare",
-        "Render scenes on the GPU and on the CPU reference and compare them: ambiguous pixels, topology "
-        "mismatches outside them, colour errors on the rest. Fails when the tolerance is exceeded");
-    compareCommand->add_option("scenes", compare.scenePaths, "Scene files, or directories of them")->required();
-    CLI::Option* precisionOption = addPrecisionOption(*compareCommand, comparePrecision);
-    compareCommand
-        ->add_flag("--all", compare.allPrecisions,
-                   "Every precision (f32-naive, f32, f64) for every scene, as one table; f32-naive rows are "
-                   "shown but not judged")
-        ->excludes(precisionOption);
-    addImageOptions(*compareCommand, compare.image);
-    addDeviceOption(*compareCommand, compare.vulkan);
-    compareCommand->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)")
-        ->check(NotEmpty());
-    compareCommand
-        ->add_option("--max-topology-mismatches", compare.tolerance.maxTopologyMismatches,
-                     "Tolerance: unambiguous pixels whose node, checker cell or lit lights differ")
-        ->check(IntegerBetween<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
-        ->capture_default_str();
-    compareCommand
-        ->add_option("--max-bad-pixels", compare.tolerance.maxSharePercent,
-                     "Tolerance: share of unambiguous pixels, in percent, whose 8-bit value may differ by more "
-                     "than one level")
-        ->check(FiniteNumberBetween(0.0, 100.0))
-        ->capture_default_str();
-    compareCommand
-        ->add_option("--max-rmse", compare.tolerance.maxRmseLevels,
-                     "Tolerance: RMSE of the 8-bit output over unambiguous pixels, in levels")
-        ->check(FiniteNumberBetween(0.0, 255.0))
-        ->capture_default_str();
-    addThreadsOption(*compareCommand, compare.threads, "CPU reference");
-    compareCommand
-        ->add_option("--mask", compare.maskPath,
-                     "Write a PNG of where the renders disagree: red topology mismatch, yellow colour more "
-                     "than one level off, blue ambiguous, black agreement")
-        ->check(NotEmpty());
-    compareCommand
-        ->add_option("--aov", compare.aovDirectory,
-                     "Write both backends' AOVs into DIR/gpu and DIR/cpu, and the CPU reference's decision "
-                     "margin as DIR/cpu/margin.exr (see README)")
-        ->check(NotEmpty());
-
-    BenchOptions bench;
-    CLI::App* benchCommand = app.add_subcommand(
-        "bench",
-        "Measure speed against error: interleaved rounds of every backend, precision and sample count on each "
-        "scene, against a converged CPU reference, and the scaling curve over random-sphere scenes; prints "
-        "tables and optionally writes CSV");
-    benchCommand->add_option("scenes", bench.scenePaths, "Scene files");
-    benchCommand->add_option("--spheres", bench.sphereCounts,
-                             "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
-                             "scene each, measured on every backend")
-        ->check(IntegerBetween<std::uint32_t>(1, 1000000))
-        ->allow_extra_args(false)  // one comma-separated list, so scene files may follow it
-        ->delimiter(',');
-    benchCommand->add_option("--max-frame-seconds", bench.maxFrameSeconds,
-                             "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
-                             "not measured at that sphere count (its error columns still use a CPU reference render)")
-        ->check(FiniteNumberAbove(0.0))
-        ->capture_default_str();
-    addImageOptions(*benchCommand, bench.image);
-    addDeviceOption(*benchCommand, bench.vulkan);
-    benchCommand->add_option("--rounds", bench.rounds, "Interleaved rounds")
-        ->check(IntegerBetween<unsigned>(1, 1000))
-        ->capture_default_str();
-    benchCommand->add_option("--samples", bench.samples, "Samples per pixel to measure (several allowed)")
-        ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
-        ->capture_default_str();
-    benchCommand->add_option("--reference-samples", bench.referenceSamples,
-                             "Samples per pixel of the converged CPU reference")
-        ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
-        ->capture_default_str();
-    benchCommand->add_option("--csv", bench.csvPath, "Also write the table as CSV (- for standard output)")
-        ->check(NotEmpty());
-
-    PixelOptions pixel;
-    std::string pixelBackend = "both";
-    std::string pixelPrecision = "auto";
-    CLI::App* pixelCommand = app.add_subcommand(
-        "pixel", "Explain one pixel: its ray, every node's intersection, the hit, the shading terms and the colour, "
-                 "from the shader and from the CPU reference side by side");
-    pixelCommand->add_option("scene", pixel.scenePath, "Scene file (JSON)")->required();
-    pixelCommand->add_option("x", pixel.x, "Column, 0 at the left")->required()->check(AnInteger<std::int64_t>());
-    pixelCommand->add_option("y", pixel.y, "Row, 0 at the top")->required()->check(AnInteger<std::int64_t>());
-    pixelCommand->add_option("--backend", pixelBackend, "both (side by side), gpu or cpu")
-        ->check(CLI::IsMember({"both", "gpu", "cpu"}))
-        ->capture_default_str();
-    addPrecisionOption(*pixelCommand, pixelPrecision);
-    pixelCommand->add_option("--sample", pixel.sample, "Which of the pixel's samples to explain (with --spp > 1)")
-        ->check(IntegerBetween<std::int64_t>(0, kMaxSamplesPerPixel - 1))
-        ->capture_default_str();
-    addImageOptions(*pixelCommand, pixel.image);
-    addDeviceOption(*pixelCommand, pixel.vulkan);
-
-    VulkanOptions devices;
-    CLI::App* devicesCommand = app.add_subcommand("devices", "List the Vulkan devices and the one hexray would use");
-    addDeviceOption(*devicesCommand, devices);
-
+    CommandLine line;
+    defineCommandLine(app, line);
+    if (const std::optional<std::string> word = unknownCommand(argc, argv, app)) {
+        printError("unknown command '" + *word + "' (the commands are " + kCommands + "; hexray --help describes them)");
+        return kBadInput;
+    }
     try {
         app.parse(argc, argv);
-        const bool cpuOnlyWithPrecision =
-            (renderCommand->parsed() && renderBackend == "cpu" && renderCommand->count("--precision") > 0) ||
-            (pixelCommand->parsed() && pixelBackend == "cpu" && pixelCommand->count("--precision") > 0);
-        if (cpuOnlyWithPrecision) {
-            throw CLI::ValidationError("--precision", "applies to the GPU backend only");
+        checkCombinations(app, line);
+    } catch (const CLI::CallForVersion&) {
+        return runVersion();
+    } catch (const CLI::RequiredError& error) {
+        if (!app.get_subcommands().empty()) {
+            return app.exit(error) == 0 ? kSuccess : kBadInput;
         }
-        if (benchCommand->parsed() && bench.scenePaths.empty() && bench.sphereCounts.empty()) {
-            throw CLI::ValidationError("bench", "needs scene files, --spheres, or both");
-        }
+        printError(std::string("a command is required: ") + kCommands + " (hexray --help describes them)");
+        return kBadInput;
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);
         return code == 0 ? kSuccess : kBadInput;
     }
-
     // Standard output carries the data when an output is "-" (or a path to it): what the command
     // prints goes to standard error then.
-    if (const int code = guarded([&] {
-            reserveStandardOutputForData({render.outputPath, compare.diffPath, compare.maskPath, bench.csvPath});
-            return int(kSuccess);
-        });
-        code != kSuccess) {
-        return code;
-    }
-    if (renderCommand->parsed()) {
-        render.vulkan.validate = validate;
-        render.backend = renderBackend == "cpu" ? Backend::Cpu : renderBackend == "gpu" ? Backend::Gpu : Backend::Auto;
-        render.precision = *parsePrecision(renderPrecision);
-        return runRender(render);
-    }
-    if (compareCommand->parsed()) {
-        compare.vulkan.validate = validate;
-        compare.precision = *parsePrecision(comparePrecision);
-        return runCompare(compare);
-    }
-    if (benchCommand->parsed()) {
-        bench.vulkan.validate = validate;
-        const int checked = checkBenchPaths(bench);
-        return checked != kSuccess ? checked : runBench(bench);
-    }
-    if (pixelCommand->parsed()) {
-        pixel.vulkan.validate = validate;
-        pixel.backend = pixelBackend == "gpu" ? PixelBackend::Gpu : pixelBackend == "cpu" ? PixelBackend::Cpu
-                                                                                        : PixelBackend::Both;
-        pixel.precision = *parsePrecision(pixelPrecision);
-        return runPixel(pixel);
-    }
-    devices.validate = validate;
-    return runDevices(devices);
+    const int reserved = guarded([&] {
+        reserveStandardOutputForData({line.render.outputPath, line.merge.outputPath, line.compare.diffPath,
+                                      line.compare.maskPath, line.bench.csvPath});
+        return int(kSuccess);
+    });
+    return reserved != kSuccess ? reserved : runCommand(app, line);
 }

@@ -6,10 +6,13 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 
 #include <CLI/CLI.hpp>
+
+#include "tile/tile.h"
 
 namespace hexray::cli {
 
@@ -38,5 +41,11 @@ CLI::Validator AnInteger() {
 CLI::Validator FiniteNumberBetween(double min, double max);
 CLI::Validator FiniteNumberAbove(double min);  // and below the largest double
 CLI::Validator NotEmpty();
+
+// "I/N": tile I of N, 0 <= I < N <= kMaxTiles; "" when `text` is one, else why not.
+std::string tileProblem(const std::string& text);
+CLI::Validator TileSpec();
+// The tile `text` names (checked by TileSpec); nullopt for "".
+std::optional<Tile> parseTile(const std::string& text);
 
 }  // namespace hexray::cli

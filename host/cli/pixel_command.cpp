@@ -134,6 +134,173 @@ void requireInRange(const char* what, std::int64_t value, std::uint32_t limit, c
     }
 }
 
+// The shader's own account of the sample, after a line saying how to read it.
+GpuPixelTrace traceOnGpu(const PixelOptions& options, const Scene& scene, ValidationLog& log, std::uint32_t x,
+                         std::uint32_t y, std::uint32_t sample) {
+    const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
+    GpuRenderer renderer(context);
+    const GpuPixelTrace trace = renderer.tracePixel(scene, options.precision, x, y, sample);
+    std::printf("gpu: %s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(),
+                context.selected().name.c_str(),
+                trace.cameraRelative ? format("the shader works camera-relative, lengths divided by %g; printed here in "
+                                              "world units (eye added back, lengths multiplied by %g)",
+                                              trace.scale, trace.scale)
+                                           .c_str()
+                                     : "the shader works in world coordinates");
+    return trace;
+}
+
+// One sample of a pixel as the shader traced it and as the CPU reference explains it, printed
+// section by section: the ray, the candidates, the hit and its surface, each light, the colour.
+class PixelReport {
+public:
+    PixelReport(const Scene& scene, bool useGpu, bool useCpu, const GpuPixelTrace& shader,
+                const CpuPixelExplanation& reference)
+        : scene_(scene), useGpu_(useGpu), useCpu_(useCpu), shader_(shader), reference_(reference),
+          table_(useGpu, useCpu),
+          sceneScale_(glm::length(reference.ray.origin) + glm::length(shader.rayOrigin)),
+          shaderHit_(shader.node != PixelClass::kBackground), referenceHit_(reference.nearest.has_value()),
+          referenceNode_(referenceHit_ ? std::uint32_t(reference.nearest->nodeIndex) : PixelClass::kBackground) {}
+
+    void print() {
+        table_.header();
+        printRay();
+        printCandidates();
+        printHit();
+        if (shaderHit_ || referenceHit_) {
+            printSurface();
+            for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+                printLight(i);
+            }
+        }
+        printColour();
+    }
+
+    // Whether the backends agree: no row differs and the pixel's class is the same.
+    void printVerdict() const {
+        const bool sameClass = shader_.node == referenceNode_ && shader_.flags == reference_.pixelClass.flags;
+        if (table_.differences() == 0 && sameClass) {
+            std::printf("gpu and cpu agree\n");
+        } else {
+            std::printf("DIFFERENCE: %d row%s differ (marked)%s\n", table_.differences(),
+                        table_.differences() == 1 ? "" : "s", sameClass ? "" : "; the pixel's class differs");
+        }
+    }
+
+private:
+    void printRay() {
+        table_.row("ray origin", vec(shader_.rayOrigin), vec(reference_.ray.origin),
+                   differs(shader_.rayOrigin, reference_.ray.origin, sceneScale_));
+        table_.row("ray direction", vec(shader_.rayDirection), vec(reference_.ray.direction),
+                   differs(shader_.rayDirection, reference_.ray.direction, 1.0));
+    }
+
+    // Nodes that every backend shown misses are only counted: a scene may have thousands.
+    void printCandidates() {
+        std::printf("candidates\n");
+        std::size_t missedByAll = 0;
+        for (std::size_t i = 0; i < scene_.nodes.size(); ++i) {
+            const double miss = std::numeric_limits<double>::infinity();
+            const double shaderT = useGpu_ ? shader_.candidates[i] : miss;
+            const double referenceT = useCpu_ && reference_.candidates[i] ? reference_.candidates[i]->t : miss;
+            if (std::isinf(shaderT) && std::isinf(referenceT)) {
+                ++missedByAll;
+                continue;
+            }
+            table_.row(format("  node %zu %s", i, kindName(scene_.nodes[i].geometry)), distance(shaderT),
+                       distance(referenceT), differs(shaderT, referenceT, 0.0));
+        }
+        if (missedByAll > 0) {
+            std::printf("  %zu other node%s: miss\n", missedByAll, missedByAll == 1 ? "" : "s");
+        }
+    }
+
+    void printHit() {
+        const auto hitText = [](bool hit, std::uint32_t node, double t) {
+            return hit ? format("node %u, %s", node, distance(t).c_str()) : std::string("background");
+        };
+        const double referenceT = referenceHit_ ? reference_.nearest->hit.t : 0.0;
+        table_.row("hit", hitText(shaderHit_, shader_.node, shader_.t), hitText(referenceHit_, referenceNode_, referenceT),
+                   shader_.node != referenceNode_ || (shaderHit_ && referenceHit_ && differs(shader_.t, referenceT, 0.0)));
+    }
+
+    void printSurface() {
+        const glm::dvec3 referencePosition = referenceHit_ ? reference_.nearest->hit.point : glm::dvec3(0);
+        const glm::dvec3 referenceNormal = referenceHit_ ? reference_.nearest->hit.facingNormal : glm::dvec3(0);
+        table_.row("position", shaderHit_ ? vec(shader_.position) : "", referenceHit_ ? vec(referencePosition) : "",
+                   differs(shader_.position, referencePosition, sceneScale_));
+        table_.row("normal (facing ray)", shaderHit_ ? vec(shader_.normal) : "",
+                   referenceHit_ ? vec(referenceNormal) : "", differs(shader_.normal, referenceNormal, 1.0));
+        const auto shaderText = [&](bool hit, std::uint32_t node) {
+            return hit ? std::string(shaderName(scene_.shaders.at(scene_.nodes[node].shaderIndex))) : std::string();
+        };
+        table_.row("shader", shaderText(shaderHit_, shader_.node), shaderText(referenceHit_, referenceNode_));
+        const bool shaderOdd = (shader_.flags & PixelClass::kOddCheckerBit) != 0;
+        const bool referenceOdd = (reference_.pixelClass.flags & PixelClass::kOddCheckerBit) != 0;
+        std::string shaderAlbedo = shaderHit_ ? vec(glm::dvec3(shader_.albedo)) : "";
+        std::string referenceAlbedo = referenceHit_ ? vec(reference_.albedo) : "";
+        if (reference_.checkerCell) {
+            referenceAlbedo += format(" cell (%.0f, %.0f) %s", reference_.checkerCell->x, reference_.checkerCell->y,
+                                      referenceOdd ? "odd" : "even");
+        }
+        if (shaderHit_ &&
+            std::holds_alternative<CheckerShader>(scene_.shaders.at(scene_.nodes[shader_.node].shaderIndex))) {
+            shaderAlbedo += shaderOdd ? " odd cell" : " even cell";
+        }
+        table_.row("albedo", shaderAlbedo, referenceAlbedo,
+                   shaderOdd != referenceOdd || differs(glm::dvec3(shader_.albedo), reference_.albedo, 0.0));
+    }
+
+    void printLight(std::size_t i) {
+        const GpuTraceLight shaderLight = useGpu_ ? shader_.lights[i] : GpuTraceLight{};
+        const bool explained = i < reference_.lights.size();
+        const LightTerm referenceLight =
+            explained ? reference_.lights[i] : LightTerm{{LightReach::AtPoint, 0, 0}, Color(0)};
+        const std::uint32_t referenceStatus = explained ? statusOf(referenceLight.decision.reach) : 0;
+        const bool shaderEvaluated = shaderLight.status != gpu::TRACE_LIGHT_NOT_EVALUATED;
+        const bool referenceEvaluated = referenceStatus != gpu::TRACE_LIGHT_NOT_EVALUATED;
+        table_.row(format("light %zu", i), lightStatus(shaderLight.status), lightStatus(referenceStatus),
+                   shaderLight.status != referenceStatus);
+        if (!shaderEvaluated && !referenceEvaluated) {
+            return;
+        }
+        const LightDecision& decision = referenceLight.decision;
+        table_.row("  cos theta", shaderEvaluated ? format("%.7g", shaderLight.cosTheta) : "",
+                   referenceEvaluated ? format("%.7g", decision.cosTheta) : "",
+                   differs(shaderLight.cosTheta, decision.cosTheta, 1.0));
+        table_.row("  r^2", shaderEvaluated ? format("%.9g", shaderLight.distanceSquared) : "",
+                   referenceEvaluated ? format("%.9g", decision.distanceSquared) : "",
+                   differs(shaderLight.distanceSquared, decision.distanceSquared, 0.0));
+        table_.row("  contribution", shaderEvaluated ? vec(glm::dvec3(shaderLight.contribution)) : "",
+                   referenceEvaluated ? vec(referenceLight.contribution) : "",
+                   differs(glm::dvec3(shaderLight.contribution), referenceLight.contribution, 1e-3));
+    }
+
+    void printColour() {
+        const Encoding encoding = scene_.image.encoding;
+        const glm::dvec3 shaderSample(shader_.sampleColor);
+        const glm::dvec3 shaderPixel(shader_.pixelColor);
+        table_.row("sample colour", vec(shaderSample), vec(reference_.sampleColor),
+                   differs(shaderSample, reference_.sampleColor, 1e-3));
+        table_.row("pixel colour (linear)", vec(shaderPixel), vec(reference_.pixelColor),
+                   differs(shaderPixel, reference_.pixelColor, 1e-3));
+        table_.row(encoding == Encoding::Srgb ? "pixel 8-bit (sRGB)" : "pixel 8-bit (linear)",
+                   levels(shaderPixel, encoding), levels(reference_.pixelColor, encoding),
+                   levelsDiffer(shaderPixel, reference_.pixelColor, encoding));
+    }
+
+    const Scene& scene_;
+    bool useGpu_;
+    bool useCpu_;
+    const GpuPixelTrace& shader_;
+    const CpuPixelExplanation& reference_;
+    Table table_;
+    double sceneScale_;
+    bool shaderHit_;
+    bool referenceHit_;
+    std::uint32_t referenceNode_;
+};
+
 }  // namespace
 
 int runPixel(const PixelOptions& options) {
@@ -151,125 +318,23 @@ int runPixel(const PixelOptions& options) {
 
         std::printf("pixel (%u, %u) of %s (%ux%u), sample %u of %u\n", x, y, options.scenePath.c_str(),
                     scene.image.width, scene.image.height, sample, scene.image.samplesPerPixel);
-        GpuPixelTrace g;
-        if (useGpu) {
-            const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
-            GpuRenderer renderer(context);
-            g = renderer.tracePixel(scene, options.precision, x, y, sample);
-            std::printf("gpu: %s on %s; %s\n", std::string(precisionName(g.precision)).c_str(),
-                        context.selected().name.c_str(),
-                        g.cameraRelative
-                            ? format("the shader works camera-relative, lengths divided by %g; printed here in "
-                                     "world units (eye added back, lengths multiplied by %g)",
-                                     g.scale, g.scale)
-                                  .c_str()
-                            : "the shader works in world coordinates");
-        }
-        CpuPixelExplanation c;
-        float margin = 0.0f;
+        const GpuPixelTrace shader = useGpu ? traceOnGpu(options, scene, log, x, y, sample) : GpuPixelTrace{};
+        const CpuPixelExplanation reference = useCpu ? explainPixel(scene, x, y, sample) : CpuPixelExplanation{};
+        const float margin = useCpu ? pixelMargin(scene, x, y) : 0.0f;
         if (useCpu) {
-            c = explainPixel(scene, x, y, sample);
-            margin = pixelMargin(scene, x, y);
             std::printf("cpu: double-precision reference, world units\n");
         }
         std::printf("\n");
 
-        const double sceneScale = glm::length(c.ray.origin) + glm::length(g.rayOrigin);
-        Table table(useGpu, useCpu);
-        table.header();
-        table.row("ray origin", vec(g.rayOrigin), vec(c.ray.origin), differs(g.rayOrigin, c.ray.origin, sceneScale));
-        table.row("ray direction", vec(g.rayDirection), vec(c.ray.direction),
-                  differs(g.rayDirection, c.ray.direction, 1.0));
-        std::printf("candidates\n");
-        // Nodes that every backend shown misses are only counted: a scene may have thousands.
-        std::size_t missedByAll = 0;
-        for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
-            const double miss = std::numeric_limits<double>::infinity();
-            const double gt = useGpu ? g.candidates[i] : miss;
-            const double ct = useCpu && c.candidates[i] ? c.candidates[i]->t : miss;
-            if (std::isinf(gt) && std::isinf(ct)) {
-                ++missedByAll;
-                continue;
-            }
-            table.row(format("  node %zu %s", i, kindName(scene.nodes[i].geometry)), distance(gt), distance(ct),
-                      differs(gt, ct, 0.0));
-        }
-        if (missedByAll > 0) {
-            std::printf("  %zu other node%s: miss\n", missedByAll, missedByAll == 1 ? "" : "s");
-        }
-        const bool gpuHit = g.node != PixelClass::kBackground;
-        const bool cpuHit = c.nearest.has_value();
-        const std::uint32_t cpuNode = cpuHit ? std::uint32_t(c.nearest->nodeIndex) : PixelClass::kBackground;
-        const auto hitText = [](bool hit, std::uint32_t node, double t) {
-            return hit ? format("node %u, %s", node, distance(t).c_str()) : std::string("background");
-        };
-        table.row("hit", hitText(gpuHit, g.node, g.t), hitText(cpuHit, cpuNode, cpuHit ? c.nearest->hit.t : 0.0),
-                  g.node != cpuNode || (gpuHit && cpuHit && differs(g.t, c.nearest->hit.t, 0.0)));
-        if (gpuHit || cpuHit) {
-            const glm::dvec3 cpuPosition = cpuHit ? c.nearest->hit.point : glm::dvec3(0);
-            const glm::dvec3 cpuNormal = cpuHit ? c.nearest->hit.facingNormal : glm::dvec3(0);
-            table.row("position", gpuHit ? vec(g.position) : "", cpuHit ? vec(cpuPosition) : "",
-                      differs(g.position, cpuPosition, sceneScale));
-            table.row("normal (facing ray)", gpuHit ? vec(g.normal) : "", cpuHit ? vec(cpuNormal) : "",
-                      differs(g.normal, cpuNormal, 1.0));
-            const auto shaderText = [&](bool hit, std::uint32_t node) {
-                return hit ? std::string(shaderName(scene.shaders.at(scene.nodes[node].shaderIndex))) : std::string();
-            };
-            table.row("shader", shaderText(gpuHit, g.node), shaderText(cpuHit, cpuNode));
-            const bool gpuOdd = (g.flags & PixelClass::kOddCheckerBit) != 0;
-            const bool cpuOdd = (c.pixelClass.flags & PixelClass::kOddCheckerBit) != 0;
-            std::string gpuAlbedo = gpuHit ? vec(glm::dvec3(g.albedo)) : "";
-            std::string cpuAlbedo = cpuHit ? vec(c.albedo) : "";
-            if (c.checkerCell) {
-                cpuAlbedo += format(" cell (%.0f, %.0f) %s", c.checkerCell->x, c.checkerCell->y, cpuOdd ? "odd" : "even");
-            }
-            if (gpuHit && std::holds_alternative<CheckerShader>(scene.shaders.at(scene.nodes[g.node].shaderIndex))) {
-                gpuAlbedo += gpuOdd ? " odd cell" : " even cell";
-            }
-            table.row("albedo", gpuAlbedo, cpuAlbedo, gpuOdd != cpuOdd || differs(glm::dvec3(g.albedo), c.albedo, 0.0));
-            for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-                const GpuTraceLight gl = useGpu ? g.lights[i] : GpuTraceLight{};
-                const LightTerm cl =
-                    i < c.lights.size() ? c.lights[i] : LightTerm{{LightReach::AtPoint, 0, 0}, Color(0)};
-                const std::uint32_t cpuStatus = i < c.lights.size() ? statusOf(cl.decision.reach) : 0;
-                const bool gpuEvaluated = gl.status != gpu::TRACE_LIGHT_NOT_EVALUATED;
-                const bool cpuEvaluated = cpuStatus != gpu::TRACE_LIGHT_NOT_EVALUATED;
-                table.row(format("light %zu", i), lightStatus(gl.status), lightStatus(cpuStatus), gl.status != cpuStatus);
-                if (!gpuEvaluated && !cpuEvaluated) {
-                    continue;
-                }
-                table.row("  cos theta", gpuEvaluated ? format("%.7g", gl.cosTheta) : "",
-                          cpuEvaluated ? format("%.7g", cl.decision.cosTheta) : "",
-                          differs(gl.cosTheta, cl.decision.cosTheta, 1.0));
-                table.row("  r^2", gpuEvaluated ? format("%.9g", gl.distanceSquared) : "",
-                          cpuEvaluated ? format("%.9g", cl.decision.distanceSquared) : "",
-                          differs(gl.distanceSquared, cl.decision.distanceSquared, 0.0));
-                table.row("  contribution", gpuEvaluated ? vec(glm::dvec3(gl.contribution)) : "",
-                          cpuEvaluated ? vec(cl.contribution) : "",
-                          differs(glm::dvec3(gl.contribution), cl.contribution, 1e-3));
-            }
-        }
-        const Encoding encoding = scene.image.encoding;
-        table.row("sample colour", vec(glm::dvec3(g.sampleColor)), vec(c.sampleColor),
-                  differs(glm::dvec3(g.sampleColor), c.sampleColor, 1e-3));
-        table.row("pixel colour (linear)", vec(glm::dvec3(g.pixelColor)), vec(c.pixelColor),
-                  differs(glm::dvec3(g.pixelColor), c.pixelColor, 1e-3));
-        table.row(encoding == Encoding::Srgb ? "pixel 8-bit (sRGB)" : "pixel 8-bit (linear)",
-                  levels(glm::dvec3(g.pixelColor), encoding), levels(c.pixelColor, encoding),
-                  levelsDiffer(glm::dvec3(g.pixelColor), c.pixelColor, encoding));
+        PixelReport report(scene, useGpu, useCpu, shader, reference);
+        report.print();
         if (useCpu) {
             std::printf("cpu decision margin: %.3g (%s)\n", double(margin),
                         margin < kAmbiguityMargin ? "ambiguous: the backends may honestly differ here"
                                                   : "unambiguous: the backends must agree");
         }
         if (useGpu && useCpu) {
-            const bool sameClass = g.node == cpuNode && g.flags == c.pixelClass.flags;
-            if (table.differences() == 0 && sameClass) {
-                std::printf("gpu and cpu agree\n");
-            } else {
-                std::printf("DIFFERENCE: %d row%s differ (marked)%s\n", table.differences(),
-                            table.differences() == 1 ? "" : "s", sameClass ? "" : "; the pixel's class differs");
-            }
+            report.printVerdict();
         }
         return int(kSuccess);
     });

@@ -1,62 +1,76 @@
+// `hexray render`: each scene named into its own image file, in one process that starts Vulkan
+// once (GpuSession); a scene that fails is reported and the others still render.
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "cli/command_support.h"
-#include "cpu/cpu_explain.h"
+#include "cli/gpu_session.h"
+#include "cli/progress.h"
+#include "cli/render_targets.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "gpu/shader_compiler.h"
 #include "image/aov.h"
-#include "image/image_io.h"
+#include "image/image_row_writer.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
+#include "scene/scene_loader.h"
+#include "tile/tile_stamp.h"
 
 namespace hexray::cli {
 namespace {
 
-std::string defaultOutputPath(const std::string& scenePath) {
-    return std::filesystem::path(scenePath).stem().string() + ".png";
-}
+// One scene rendered into one file: what either backend needs.
+struct SceneRender {
+    const RenderOptions& options;
+    const RenderTarget& target;
+    Scene scene;
+    RowRange rows;              // the whole image, or the tile's rows
+    std::string sceneIdentity;  // tiles only: recorded in the piece
 
-// A progress line on stderr while a large image renders band by band; silent unless stderr
-// is a terminal, and for images that render in one band.
-class Progress {
-public:
-    explicit Progress(std::uint32_t rows) : rows_(rows), shown_(::isatty(STDERR_FILENO) != 0) {}
-    ~Progress() {
-        if (started_) {
-            std::fprintf(stderr, "\r%40s\r", "");
-        }
-    }
-    void rowsDone(std::uint32_t done) {
-        if (!shown_ || done >= rows_) {
-            return;
-        }
-        started_ = true;
-        std::fprintf(stderr, "\rrendering: %3u%% (%u of %u rows)", unsigned(100.0 * done / rows_), done, rows_);
-        std::fflush(stderr);
+    SceneRender(const RenderOptions& renderOptions, const RenderTarget& renderTarget)
+        : options(renderOptions), target(renderTarget) {
+        scene = loadScene(target.scenePath, options.image, options.tile ? &sceneIdentity : nullptr);
+        rows = options.tile ? tileRows(*options.tile, scene.image.height) : RowRange{0, scene.image.height};
     }
 
-private:
-    std::uint32_t rows_;
-    bool shown_;
-    bool started_ = false;
+    // Opens the output; a tile's records `renderer`, since pieces of one image must share it.
+    void open(std::optional<ImageRowWriter>& writer, const std::string& renderer) const {
+        std::vector<ImageNote> notes;
+        if (options.tile) {
+            const TileStamp stamp{*options.tile, scene.image.width, scene.image.height, scene.image.samplesPerPixel,
+                                  renderer, sceneIdentity};
+            notes.push_back({kTileStampKey, formatTileStamp(stamp)});
+        }
+        writer.emplace(target.outputPath, *target.format, scene.image.width, rows.count, scene.image.encoding, notes);
+    }
+
+    // With --aov, starts the AOV set.
+    void stageAovs(std::optional<StagedAovs>& aovs) const {
+        if (!options.aovDirectory.empty()) {
+            aovs.emplace(options.aovDirectory, AovLayout{scene.image.width, scene.image.height, scene.lights.size()});
+        }
+    }
+
+    Progress progress() const { return Progress("rendering " + target.scenePath, rows.count); }
 };
 
 // "generated for the scene, written in 0.12 ms, glslang 9.8 ms", for the summary line.
-std::string describeKernel(const Kernel& kernel, const KernelBuild& build) {
-    if (!kernel.code) {
-        return kernel.name + " (prebuilt)";
+std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
+    if (!plan.kernel.code) {
+        return plan.kernel.name + " (prebuilt)";
     }
+    const std::size_t classes = plan.tileClasses.kernels.size();
+    const std::string name = classes ? "generated for each of " + std::to_string(classes) + " tile classes"
+                                     : plan.kernel.name;
     char text[160];
-    std::snprintf(text, sizeof text, "%s, written in %.2f ms, %s", kernel.name.c_str(), build.generateMilliseconds,
+    std::snprintf(text, sizeof text, "%s, written in %.2f ms, %s", name.c_str(), build.generateMilliseconds,
                   build.fromDiskCache ? "SPIR-V from the kernel cache" : "");
     std::string description = text;
     if (!build.fromDiskCache) {
@@ -66,92 +80,216 @@ std::string describeKernel(const Kernel& kernel, const KernelBuild& build) {
     return description;
 }
 
-AovLayout aovLayout(const Scene& scene) {
-    return AovLayout{scene.image.width, scene.image.height, scene.lights.size()};
+// The image's rows from the device into `writer`: 8-bit as the shader encodes them, or linear
+// for OpenEXR.
+GpuRenderResult renderImageOnGpu(const SceneRender& job, GpuSession& gpu, const RenderPlan& plan,
+                                 ImageRowWriter& writer) {
+    Progress progress = job.progress();
+    const auto rowsDone = [&](std::uint32_t firstRow, std::uint32_t rows) {
+        progress.update(firstRow + rows - job.rows.first);
+    };
+    if (writer.wantsLinear()) {
+        return gpu.linearRenderer().renderLinearRows(
+            job.scene, plan, GpuOutput::LinearAndClasses,
+            [&](std::uint32_t firstRow, const GpuRenderResult& band) {
+                writer.writeLinear(band.image);
+                rowsDone(firstRow, band.image.height);
+            },
+            job.rows);
+    }
+    const std::size_t rowBytes = 3 * std::size_t(job.scene.image.width);
+    return gpu.renderer().renderEncodedRows(
+        job.scene, plan,
+        [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
+            writer.writeEncoded(rgbRows);
+            rowsDone(firstRow, std::uint32_t(rgbRows.size() / rowBytes));
+        },
+        job.rows);
 }
 
-// Renders on the GPU into `writer`, band by band; then, with --aov, the AOVs into `aovs`, band
-// by band too. Returns how, for the summary line.
-std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
+// Renders on the GPU into `writer` (opened here, once the renderer is known), band by band;
+// then, with --aov, the AOVs in a second pass in the shader's AOV mode, so that the image is the
+// one a render without --aov writes. Returns how, for the summary line.
+std::string renderOnGpu(const SceneRender& job, GpuSession& gpu, std::optional<ImageRowWriter>& writer,
                         std::optional<StagedAovs>& aovs) {
-    const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
-    GpuRenderer renderer(context);
-    Progress progress(scene.image.height);
-    // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
-    // sits whole in memory.
-    const RenderPlan plan = renderer.plan(scene, {options.precision});
+    // glslang sets itself up while the Vulkan instance and device are created.
+    std::optional<ShaderCompilerWarmUp> compilerWarmUp;
+    if (isSmallScene(job.scene) && !gpu.started()) {
+        compilerWarmUp.emplace();
+    }
+    const RenderPlan plan =
+        gpu.renderer().plan(job.scene, {job.options.precision, Acceleration::Auto, job.options.culling});
     for (const std::string& warning : plan.warnings) {
         std::fprintf(stderr, "hexray: warning: %s\n", warning.c_str());
     }
-    const GpuRenderResult result = renderer.renderEncodedRows(
-        scene, plan, [&](std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows) {
-            writer.writeRows(rgbRows);
-            progress.rowsDone(firstRow + std::uint32_t(rgbRows.size() / (3 * std::size_t(scene.image.width))));
-        });
+    const std::string device = gpu.context().selected().name;
+    const std::string precision(precisionName(plan.precision));
+    job.open(writer, "gpu " + precision + " on " + device);
+    const GpuRenderResult result = renderImageOnGpu(job, gpu, plan, *writer);
+    job.stageAovs(aovs);
+    if (aovs) {
+        gpu.linearRenderer().renderLinearRows(job.scene, plan, GpuOutput::LinearClassesAndAov,
+                                  [&](std::uint32_t, const GpuRenderResult& band) {
+                                      aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
+                                  });
+    }
     char how[512];
     std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's "
                   "compile",
-                  std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
-                  result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
-                  describeKernel(plan.kernel, result.timing.kernel).c_str(), result.timing.firstDispatchMilliseconds);
-    if (!options.aovDirectory.empty()) {
-        // A second pass in the shader's AOV mode, so that the image is the one a render
-        // without --aov writes (encoded on the device). Its rows come back as floats: smaller bands.
-        aovs.emplace(options.aovDirectory, aovLayout(scene));
-        GpuRenderer aovRenderer(context, kBandBytes);
-        aovRenderer.renderLinearRows(scene, plan, GpuOutput::LinearClassesAndAov,
-                                     [&](std::uint32_t, const GpuRenderResult& band) {
-                                         aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
-                                     });
-    }
+                  precision.c_str(), device.c_str(), result.timing.renderMilliseconds,
+                  result.timing.fromTimestamps ? "" : " (wall clock)",
+                  describeKernel(plan, result.timing.kernel).c_str(), result.timing.firstDispatchMilliseconds);
     return how;
 }
 
-std::string renderWithCpuReference(const RenderOptions& options, const Scene& scene, PngRowWriter& writer,
-                                   std::optional<StagedAovs>& aovs) {
-    const bool withAovs = !options.aovDirectory.empty();
-    const CpuBandRenderer renderer(scene, options.threads, Acceleration::Auto, withAovs);
-    if (withAovs) {
-        aovs.emplace(options.aovDirectory, aovLayout(scene));
+// Rows per band of the CPU reference: within the memory budget; on a terminal, also small enough
+// that the progress line moves, but never so few that a thread has no row.
+std::uint32_t cpuBandRows(const CpuBandRenderer& renderer, std::uint32_t rows) {
+    constexpr std::uint32_t kProgressSteps = 64;
+    const std::uint32_t withinBudget = renderer.rowsPerBand(kBandBytes);
+    if (!Progress::shown()) {
+        return withinBudget;
     }
-    Progress progress(scene.image.height);
-    const std::uint32_t bandRows = renderer.rowsPerBand(kBandBytes);
+    return std::min(withinBudget, std::max((rows + kProgressSteps - 1) / kProgressSteps, 8 * renderer.threadCount()));
+}
+
+std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& writer,
+                        std::optional<StagedAovs>& aovs) {
+    const CpuBandRenderer renderer(job.scene, job.options.threads, Acceleration::Auto, !job.options.aovDirectory.empty());
+    job.open(writer, "cpu reference");
+    job.stageAovs(aovs);
+    Progress progress = job.progress();
+    const std::uint32_t bandRows = cpuBandRows(renderer, job.rows.count);
     CpuRender band;
     double milliseconds = 0;
-    for (std::uint32_t firstRow = 0; firstRow < scene.image.height; firstRow += bandRows) {
+    for (std::uint32_t firstRow = job.rows.first; firstRow < job.rows.end(); firstRow += bandRows) {
         const auto start = std::chrono::steady_clock::now();
-        renderer.render(firstRow, std::min(bandRows, scene.image.height - firstRow), band);
+        renderer.render(firstRow, std::min(bandRows, job.rows.end() - firstRow), band);
         milliseconds += millisecondsSince(start);
-        writer.writeRows(encodeImage(band.image, scene.image.encoding).bytes);
+        writer->writeLinear(band.image);
         if (aovs) {
             aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
         }
-        progress.rowsDone(firstRow + band.image.height);
+        progress.update(firstRow + band.image.height - job.rows.first);
     }
     char how[128];
     std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", renderer.threadCount(), milliseconds);
     return how;
 }
 
+// With --backend auto, a GPU path that cannot render (anything but a wrong request, such as an
+// unknown --device) hands over to the CPU reference, with a note the first time; with
+// --backend gpu the failure stands.
+class Fallback {
+public:
+    explicit Fallback(Backend backend) : backend_(backend) {}
+
+    bool allowed(const VulkanError& error) {
+        if (backend_ != Backend::Auto || error.failure() == VulkanFailure::Request) {
+            return false;
+        }
+        if (!noted_) {
+            std::fprintf(stderr, "hexray: note: %s; rendering on the CPU reference instead\n", error.reason().c_str());
+            noted_ = true;
+        }
+        return true;
+    }
+
+private:
+    Backend backend_;
+    bool noted_ = false;
+};
+
+// Renders one scene into its file on the backend asked for; returns how, for the summary line.
+std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallback,
+                        std::optional<ImageRowWriter>& writer, std::optional<StagedAovs>& aovs) {
+    if (job.options.backend != Backend::Cpu) {
+        std::optional<VulkanError> failure;
+        try {
+            return renderOnGpu(job, gpu, writer, aovs);
+        } catch (const VulkanError& error) {
+            failure = error;
+        } catch (const vk::SystemError& error) {
+            failure = classify(error, "rendering");
+        }
+        if (failure->failure() == VulkanFailure::DeviceLost) {
+            gpu.failed(*failure);  // not to be used again
+        }
+        if (!fallback.allowed(*failure)) {
+            throw *failure;
+        }
+        writer.reset();  // drops the GPU's partial rows with their temporary file
+        aovs.reset();
+    }
+    return renderOnCpu(job, writer, aovs);
+}
+
+int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback) {
+    const SceneRender job(options, target);
+    std::optional<ImageRowWriter> writer;
+    std::optional<StagedAovs> aovs;
+    const std::string how = renderImage(job, gpu, fallback, writer, aovs);
+    writer->finish();
+    const ImageSettings& image = job.scene.image;
+    std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
+    if (options.tile) {
+        size = "rows " + std::to_string(job.rows.first) + "-" + std::to_string(job.rows.end() - 1) + " of " + size;
+    }
+    std::printf("wrote %s (%s) — %s\n", displayName(target.outputPath).c_str(), size.c_str(), how.c_str());
+    if (aovs) {
+        // Only now, so a failed render leaves the directory's earlier AOVs as they were.
+        const std::size_t files = aovs->commit().size();
+        std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files, options.aovDirectory.c_str());
+    }
+    return int(kSuccess);
+}
+
 // Every path the render reads or writes, checked before any work.
-void checkPaths(const RenderOptions& options, const std::string& output) {
+void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& targets) {
+    if (targets.size() > 1 && !options.aovDirectory.empty()) {
+        throw SceneError("--aov: AOVs need a single scene");
+    }
+    if (options.tile && !options.aovDirectory.empty()) {
+        throw SceneError("--aov: AOVs are of the whole image, not of a tile");
+    }
     OutputPlan plan;
-    plan.addInput("the scene", options.scenePath);
-    plan.addFile("-o", output);
+    for (const RenderTarget& target : targets) {
+        plan.addInput("the scene", target.scenePath);
+    }
+    for (const RenderTarget& target : targets) {
+        plan.addFile("-o", target.outputPath);
+    }
     if (!options.aovDirectory.empty()) {
         plan.addDirectory("--aov", options.aovDirectory, isAovFileName);
     }
     plan.check();
+    for (const RenderTarget& target : targets) {
+        if (!target.format) {
+            throw SceneError("-o " + target.outputPath + ": unknown image format (supported: " +
+                             kSupportedImageFormats + ")");
+        }
+    }
 }
 
-// With --backend auto, a GPU path that cannot render (anything but a wrong request, such as an
-// unknown --device) hands over to the CPU reference; with --backend gpu the failure stands.
-bool fallsBack(const RenderOptions& options, const VulkanError& error) {
-    if (options.backend != Backend::Auto || error.failure() == VulkanFailure::Request) {
-        return false;
+// Renders every target, each on its own: one that fails is reported and the rest still render.
+// The exit code is the first failure's.
+int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& targets, GpuSession& gpu) {
+    Fallback fallback(options.backend);
+    int firstFailure = kSuccess;
+    std::vector<std::string> failed;
+    for (const RenderTarget& target : targets) {
+        const int code = guarded([&] { return renderScene(options, target, gpu, fallback); });
+        if (code != kSuccess) {
+            firstFailure = firstFailure == kSuccess ? code : firstFailure;
+            failed.push_back(target.scenePath);
+        }
     }
-    std::fprintf(stderr, "hexray: note: %s; rendering on the CPU reference instead\n", error.reason().c_str());
-    return true;
+    if (targets.size() > 1) {
+        std::string names;
+        for (const std::string& name : failed) names += (names.empty() ? "; failed: " : ", ") + name;
+        std::printf("rendered %zu of %zu scenes%s\n", targets.size() - failed.size(), targets.size(), names.c_str());
+    }
+    return firstFailure;
 }
 
 }  // namespace
@@ -159,42 +297,10 @@ bool fallsBack(const RenderOptions& options, const VulkanError& error) {
 int runRender(const RenderOptions& options) {
     ValidationLog log;
     const int code = guarded([&] {
-        const std::string output = options.outputPath.empty() ? defaultOutputPath(options.scenePath) : options.outputPath;
-        checkPaths(options, output);
-        const Scene scene = loadScene(options.scenePath, options.image);
-        // Opened first, so a bad output path fails before any rendering; renamed into place
-        // only once every row is in.
-        std::optional<PngRowWriter> writer(std::in_place, output, scene.image.width, scene.image.height);
-        std::string how;
-        std::optional<StagedAovs> aovs;
-        if (options.backend != Backend::Cpu) {
-            bool fallBack = false;
-            try {
-                how = renderOnGpu(options, scene, log, *writer, aovs);
-            } catch (const VulkanError& error) {
-                if (!fallsBack(options, error)) throw;
-                fallBack = true;
-            } catch (const vk::SystemError& error) {
-                if (!fallsBack(options, classify(error, "rendering"))) throw;
-                fallBack = true;
-            }
-            if (fallBack) {
-                writer.reset();  // drops the GPU's partial rows with their temporary file
-                writer.emplace(output, scene.image.width, scene.image.height);
-            }
-        }
-        if (how.empty()) {
-            how = renderWithCpuReference(options, scene, *writer, aovs);
-        }
-        writer->finish();
-        std::printf("wrote %s (%ux%u) — %s\n", displayName(output).c_str(), scene.image.width, scene.image.height,
-                    how.c_str());
-        if (aovs) {
-            // Only now, so a failed render leaves the directory's earlier AOVs as they were.
-            const std::size_t files = aovs->commit().size();
-            std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files, options.aovDirectory.c_str());
-        }
-        return int(kSuccess);
+        const std::vector<RenderTarget> targets = renderTargets(options);
+        checkPaths(options, targets);
+        GpuSession gpu(options.vulkan, log);
+        return renderEach(options, targets, gpu);
     });
     return withValidationVerdict(code, log);
 }

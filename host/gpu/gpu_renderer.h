@@ -16,6 +16,7 @@
 #include "image/image.h"
 #include "image/image_io.h"
 #include "image/pixel_class.h"
+#include "image/row_range.h"
 #include "scene/scene.h"
 #include "vulkan/vulkan_context.h"
 
@@ -25,6 +26,7 @@ struct GpuTiming {
     double renderMilliseconds = 0;         // all bands, measured after the warm-up dispatch
     double firstDispatchMilliseconds = 0;  // the warm-up: includes the driver's compile (lavapipe's JIT)
     bool fromTimestamps = false;           // false: host wall time (no timestamp support)
+    double uploadMilliseconds = 0;         // packing the scene and uploading it (and its candidate lists) to the device
     KernelBuild kernel;                    // generating and compiling the kernel (when not yet built)
 };
 
@@ -100,9 +102,11 @@ public:
     GpuRenderResult render(const Scene& scene, const RenderPlan& plan, GpuOutput output);
 
     // The 8-bit image a band of rows at a time, each handed to `consume` (first row, and the
-    // rows' RGB bytes) as soon as it is read back: the whole image is never in memory.
+    // rows' RGB bytes) as soon as it is read back: the whole image is never in memory. Only the
+    // rows in `rows`, each exactly as in the whole image.
     using RowConsumer = std::function<void(std::uint32_t firstRow, std::span<const std::uint8_t> rgbRows)>;
-    GpuRenderResult renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume);
+    GpuRenderResult renderEncodedRows(const Scene& scene, const RenderPlan& plan, const RowConsumer& consume,
+                                      RowRange rows = {});
 
     // render()'s LinearAndClasses or LinearClassesAndAov output a band of rows at a time: each
     // band is handed to `consume` (its first row, and a result whose image, classes, depth and
@@ -110,7 +114,7 @@ public:
     // precision, timing and usedCandidateLists, and no pixels.
     using BandConsumer = std::function<void(std::uint32_t firstRow, const GpuRenderResult& band)>;
     GpuRenderResult renderLinearRows(const Scene& scene, const RenderPlan& plan, GpuOutput output,
-                                     const BandConsumer& consume);
+                                     const BandConsumer& consume, RowRange rows = {});
 
     // Replays pixel (x, y) in the kernel's trace mode and returns what it computed for sample
     // `sample` (and the pixel's colour). The caller checks the ranges.
@@ -144,10 +148,12 @@ private:
         const gpu::GpuAovPixel* aovs;
         const std::byte* trace;
     };
-    // Sets `result`'s precision, timing and usedCandidateLists. With `traceRequest` non-empty, one trace
-    // dispatch instead (see tracePixel): the trace buffer starts as those bytes.
+    // Renders the rows in `rowRange`. Sets `result`'s precision, timing and usedCandidateLists.
+    // With `traceRequest` non-empty, one trace dispatch instead (see tracePixel): the trace buffer
+    // starts as those bytes.
     void renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
-                     const std::function<void(const Band&)>& consume, std::span<const std::byte> traceRequest = {});
+                     const std::function<void(const Band&)>& consume, RowRange rowRange,
+                     std::span<const std::byte> traceRequest = {});
 
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
     struct SceneBindings {

@@ -6,6 +6,7 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 #include "image/image_io.h"
 
@@ -38,6 +39,11 @@ std::vector<std::string> ExrRowReader::channelNames() const {
         names.emplace_back(channel.name());
     }
     return names;
+}
+
+std::optional<std::string> ExrRowReader::stringAttribute(const std::string& name) const {
+    const auto* attribute = decoder_->file.header().findTypedAttribute<Imf::StringAttribute>(name);
+    return attribute ? std::optional<std::string>(attribute->value()) : std::nullopt;
 }
 
 void ExrRowReader::readRows(const std::string& channel, std::uint32_t firstRow, std::uint32_t rows,

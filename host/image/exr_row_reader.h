@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ public:
     std::uint32_t width() const { return width_; }
     std::uint32_t height() const { return height_; }
     std::vector<std::string> channelNames() const;
+    // The header's string attribute `name`.
+    std::optional<std::string> stringAttribute(const std::string& name) const;
 
     // Rows [firstRow, firstRow + rows) of `channel`, as float, into `values` (rows × width).
     void readRows(const std::string& channel, std::uint32_t firstRow, std::uint32_t rows, std::span<float> values);

@@ -10,6 +10,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 #include "io/output_error.h"
 #include "io/output_file.h"
@@ -38,11 +39,15 @@ private:
     const OutputFile& file_;
 };
 
-Imf::Header headerFor(std::uint32_t width, std::uint32_t height, const std::vector<std::string>& channelNames) {
+Imf::Header headerFor(std::uint32_t width, std::uint32_t height, const std::vector<std::string>& channelNames,
+                      const std::vector<ImageNote>& notes) {
     Imf::Header header(static_cast<int>(width), static_cast<int>(height));
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const std::string& name : channelNames) {
         header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    }
+    for (const ImageNote& note : notes) {
+        header.insert(note.key, Imf::StringAttribute(note.text));
     }
     return header;
 }
@@ -78,10 +83,12 @@ struct ExrRowWriter::Encoder {
 };
 
 ExrRowWriter::ExrRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-                           const std::vector<std::string>& channelNames)
+                           const std::vector<std::string>& channelNames, const std::vector<ImageNote>& notes)
     : encoder_(std::make_unique<Encoder>(path, width, height, channelNames)) {
     Encoder& e = *encoder_;
-    e.guard([&] { e.exr = std::make_unique<Imf::OutputFile>(e.stream, headerFor(width, height, channelNames)); });
+    e.guard([&] {
+        e.exr = std::make_unique<Imf::OutputFile>(e.stream, headerFor(width, height, channelNames, notes));
+    });
 }
 
 ExrRowWriter::~ExrRowWriter() = default;

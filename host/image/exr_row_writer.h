@@ -11,13 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "image/image_io.h"
+
 namespace hexray {
 
 class ExrRowWriter {
 public:
-    // Throws OutputError when the file cannot be created.
+    // Throws OutputError when the file cannot be created. `notes` become string attributes.
     ExrRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-                 const std::vector<std::string>& channelNames);
+                 const std::vector<std::string>& channelNames, const std::vector<ImageNote>& notes = {});
     ~ExrRowWriter();
     ExrRowWriter(const ExrRowWriter&) = delete;
     ExrRowWriter& operator=(const ExrRowWriter&) = delete;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "image/image.h"
@@ -29,14 +30,22 @@ struct Rgb8Image {
 std::uint8_t encodeChannel(float linear, Encoding encoding);
 Rgb8Image encodeImage(const Image& image, Encoding encoding);
 
+// A key and a text recorded in an image file: a PNG tEXt chunk (Latin-1, key at most 79 bytes),
+// an OpenEXR string attribute.
+struct ImageNote {
+    std::string key;
+    std::string text;
+};
+
 // Writes a PNG row by row, so an image need never be whole in memory, to an OutputFile (see
 // io/output_file.h): a regular file appears at `path` only when finish() succeeds; a writer
 // destroyed without finish(), or a catchable signal meanwhile, leaves no partial or clobbered
 // image. "-" is standard output. Throws OutputError when the file cannot be written, and
-// std::bad_alloc when the encoder runs out of memory.
+// std::bad_alloc when the encoder runs out of memory. `notes` go before the pixels.
 class PngRowWriter {
 public:
-    PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height);
+    PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                 const std::vector<ImageNote>& notes = {});
     ~PngRowWriter();
     PngRowWriter(const PngRowWriter&) = delete;
     PngRowWriter& operator=(const PngRowWriter&) = delete;

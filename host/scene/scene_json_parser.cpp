@@ -1,6 +1,8 @@
 #include "scene/scene_json_parser.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -249,17 +251,71 @@ private:
     std::vector<Frame> frames_;
 };
 
+// The text as nlohmann's parser reads it, a character at a time, telling `progress` every
+// kProgressStep bytes how far it has got: one comparison a character, as the parser's own.
+class ProgressIterator {
+public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = char;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const char*;
+    using reference = const char&;
+
+    static constexpr std::size_t kProgressStep = std::size_t{1} << 20;
+
+    ProgressIterator(const std::string& text, std::size_t offset, const ParseProgress* progress)
+        : at_(text.data() + offset), begin_(text.data()), size_(text.size()), progress_(progress) {
+        setNextReport();
+    }
+
+    reference operator*() const { return *at_; }
+    ProgressIterator& operator++() {
+        if (++at_ == nextReport_) {
+            (*progress_)(std::size_t(at_ - begin_), size_);
+            setNextReport();
+        }
+        return *this;
+    }
+    ProgressIterator operator++(int) {
+        ProgressIterator before = *this;
+        ++*this;
+        return before;
+    }
+    bool operator==(const ProgressIterator& other) const { return at_ == other.at_; }
+
+private:
+    void setNextReport() {
+        const std::size_t offset = std::size_t(at_ - begin_);
+        nextReport_ = *progress_ && size_ - offset > kProgressStep ? at_ + kProgressStep : nullptr;
+    }
+
+    const char* at_;
+    const char* begin_;
+    std::size_t size_;
+    const ParseProgress* progress_;
+    const char* nextReport_ = nullptr;
+};
+
+// nlohmann's SAX parse of `text`, reporting progress if asked.
+bool saxParse(const std::string& text, DocumentBuilder& builder, const ParseProgress& progress) {
+    if (!progress) return Json::sax_parse(text, &builder);
+    return Json::sax_parse(ProgressIterator(text, 0, &progress), ProgressIterator(text, text.size(), &progress),
+                           &builder);
+}
+
 }  // namespace
 
-Json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode) {
+Json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode,
+                    const ParseProgress& progress) {
     DocumentBuilder builder(text, sourceName, &takeNode, nullptr);
-    Json::sax_parse(text, &builder);
+    saxParse(text, builder, progress);
     return builder.takeDocument();
 }
 
-std::optional<Json> parseSceneJson(const std::string& text, const std::string& sourceName, NodeShortcut& shortcut) {
+std::optional<Json> parseSceneJson(const std::string& text, const std::string& sourceName, NodeShortcut& shortcut,
+                                   const ParseProgress& progress) {
     DocumentBuilder builder(text, sourceName, nullptr, &shortcut);
-    if (!Json::sax_parse(text, &builder)) return std::nullopt;
+    if (!saxParse(text, builder, progress)) return std::nullopt;
     return builder.takeDocument();
 }
 

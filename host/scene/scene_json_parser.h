@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/scene_loader.h"
+
 namespace hexray {
 
 // Receives each element of the root object's "nodes" array, with its index, as soon as the
@@ -18,7 +20,8 @@ namespace hexray {
 // array, so a scene of a million nodes never exists as one document (some 700 bytes a node).
 using NodeSink = std::function<void(const nlohmann::json& element, std::size_t index)>;
 
-nlohmann::json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode);
+nlohmann::json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode,
+                              const ParseProgress& progress = {});
 
 // Reads the events of each element of the root's "nodes" in place of a document: it takes an
 // element by returning true to each of its events, or declines it by returning false. (No
@@ -28,6 +31,6 @@ using NodeShortcut = nlohmann::json_sax<nlohmann::json>;
 // As above, with every element of the root's "nodes" read by `shortcut`; nullopt once it
 // declines one, and the text must then be parsed the general way.
 std::optional<nlohmann::json> parseSceneJson(const std::string& text, const std::string& sourceName,
-                                             NodeShortcut& shortcut);
+                                             NodeShortcut& shortcut, const ParseProgress& progress = {});
 
 }  // namespace hexray

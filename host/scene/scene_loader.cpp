@@ -4,7 +4,9 @@
 
 #include "scene/scene_loader.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -13,6 +15,9 @@
 #include <utility>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
+#include "camera/camera.h"
 #include "scene/json_reader.h"
 #include "scene/node_reader.h"
 #include "scene/scene_json_parser.h"
@@ -60,13 +65,63 @@ ImageSettings readImage(const JsonReader& image) {
     return settings;
 }
 
+// The look-at form's sine of the smallest angle between `up` and the view: closer, and which way
+// is up would hang on rounding.
+constexpr double kMinUpSine = 1e-9;
+
+// Nonzero `v` at length 1, scaled first so that its square neither overflows nor underflows.
+glm::dvec3 unitVector(const glm::dvec3& v) {
+    return glm::normalize(v / std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}));
+}
+
+// "lookAt" and "up" as the course's angles, converted once here: nothing downstream knows the
+// camera was given this way.
+CameraAngles readLookAt(const JsonReader& camera, const glm::dvec3& position) {
+    for (const char* angle : {"yaw", "pitch", "roll"}) {
+        if (const auto found = camera.find(angle)) {
+            found->fail("cannot be used with camera.lookAt (a look-at camera's direction comes from lookAt and up)");
+        }
+    }
+    const JsonReader lookAt = camera.at("lookAt");
+    const glm::dvec3 target = lookAt.position();
+    if (target == position) {
+        lookAt.fail("must differ from camera.position (the camera would look nowhere)");
+    }
+    glm::dvec3 up(0.0, 1.0, 0.0);
+    if (const auto given = camera.find("up")) {
+        up = given->vec3();
+        if (up == glm::dvec3(0.0)) {
+            given->fail("must not be zero (it says which way is up in the image)");
+        }
+    }
+    const glm::dvec3 unitUp = unitVector(up);
+    if (glm::length(glm::cross(unitVector(target - position), unitUp)) < kMinUpSine) {
+        if (const auto given = camera.find("up")) {
+            given->fail("must not be parallel to the view direction lookAt - position (which way is up in the image "
+                        "would be undefined)");
+        }
+        lookAt.fail("the camera looks straight up or down, along the default up [0, 1, 0]: give camera.up across "
+                    "the view");
+    }
+    return lookAtAngles(position, target, unitUp);
+}
+
 CameraSettings readCamera(const JsonReader& camera) {
-    camera.rejectUnknownKeys({"position", "yaw", "pitch", "roll", "fov", "aspect"});
+    camera.rejectUnknownKeys({"position", "yaw", "pitch", "roll", "lookAt", "up", "fov", "aspect"});
     CameraSettings settings;  // its defaults are the format's defaults
     settings.position = camera.at("position").position();
-    settings.yawDegrees = camera.numberOr("yaw", settings.yawDegrees);
-    settings.pitchDegrees = camera.numberOr("pitch", settings.pitchDegrees);
-    settings.rollDegrees = camera.numberOr("roll", settings.rollDegrees);
+    if (camera.find("lookAt")) {
+        const CameraAngles angles = readLookAt(camera, settings.position);
+        settings.yawDegrees = angles.yawDegrees;
+        settings.pitchDegrees = angles.pitchDegrees;
+        settings.rollDegrees = angles.rollDegrees;
+    } else if (const auto up = camera.find("up")) {
+        up->fail("only with camera.lookAt (yaw, pitch and roll say which way is up)");
+    } else {
+        settings.yawDegrees = camera.numberOr("yaw", settings.yawDegrees);
+        settings.pitchDegrees = camera.numberOr("pitch", settings.pitchDegrees);
+        settings.rollDegrees = camera.numberOr("roll", settings.rollDegrees);
+    }
     settings.fovDegrees = camera.numberOr("fov", settings.fovDegrees, Bounds{.above = 0.0, .below = 180.0});
     if (auto aspect = camera.find("aspect")) settings.aspect = aspect->number(kPositive);
     return settings;
@@ -126,23 +181,26 @@ Scene readScene(const JsonReader& root, NodeReader&& nodes) {
 
 }  // namespace
 
-Scene parseScene(const std::string& text, const std::string& sourceName) {
+Scene parseScene(const std::string& text, const std::string& sourceName, const ParseProgress& progress) {
     // Valid files take the shortcut; a file with a node it declines is parsed again the general way.
     {
         NodeReader nodes(sourceName);
         UsualNodeShortcut shortcut(nodes);
-        if (const std::optional<Json> document = parseSceneJson(text, sourceName, shortcut)) {
+        if (const std::optional<Json> document = parseSceneJson(text, sourceName, shortcut, progress)) {
             return readScene(JsonReader(*document, sourceName, ""), std::move(nodes));
         }
     }
     NodeReader nodes(sourceName);
-    const Json document = parseSceneJson(text, sourceName, [&nodes](const Json& element, std::size_t index) {
-        nodes.read(element, index);
-    });
+    const auto takeNode = [&nodes](const Json& element, std::size_t index) { nodes.read(element, index); };
+    const Json document = parseSceneJson(text, sourceName, takeNode, progress);
     return readScene(JsonReader(document, sourceName, ""), std::move(nodes));
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {
+    return parseScene(readSceneFile(path), path.string());
+}
+
+std::string readSceneFile(const std::filesystem::path& path) {
     std::error_code ignored;
     if (std::filesystem::is_directory(path, ignored)) failToRead(path, EISDIR);  // fopen would accept it
 
@@ -161,7 +219,7 @@ Scene loadSceneFile(const std::filesystem::path& path) {
         if (text.size() > kMaxSceneFileBytes) failTooLarge(path);
     }
     if (std::ferror(file.get())) failToRead(path, errno);
-    return parseScene(text, path.string());
+    return text;
 }
 
 void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, const std::string& source) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -17,8 +18,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Told, about every MiB of a large file, how many bytes the parser has read of how many.
+using ParseProgress = std::function<void(std::size_t parsedBytes, std::size_t totalBytes)>;
+
 Scene loadSceneFile(const std::filesystem::path& path);
-Scene parseScene(const std::string& text, const std::string& sourceName);
+// loadSceneFile in two steps, for a caller that wants the text too or the parse's progress.
+std::string readSceneFile(const std::filesystem::path& path);
+Scene parseScene(const std::string& text, const std::string& sourceName, const ParseProgress& progress = {});
 
 // Replaces the image size (e.g. from the command line), with the same checks as the file's.
 // `source` names where the numbers came from, for the message.

@@ -164,3 +164,28 @@ TEST(SampleOffset, ManySamplesCoverThePixelEvenly) {
     }
     EXPECT_EQ(cells.size(), 256u);
 }
+
+TEST(Camera, LookAtGivesBackTheAnglesOfTheCameraItPointsAs) {
+    for (const glm::dvec3 angles : {glm::dvec3(30, 20, 10), glm::dvec3(-28, -12, 4), glm::dvec3(135, 30, -60),
+                                    glm::dvec3(-170, -80, 179), glm::dvec3(0, 0, 0)}) {
+        CameraSettings camera = cameraWith(angles.x, angles.y, angles.z);
+        camera.position = {3, -4, 5};
+        const glm::dvec3 target = camera.position + 7.0 * cameraForward(camera);
+        const glm::dvec3 up = cameraRotation(camera) * glm::dvec3(0, 1, 0);
+        const CameraAngles found = lookAtAngles(camera.position, target, up);
+        EXPECT_NEAR(found.yawDegrees, angles.x, 1e-12);
+        EXPECT_NEAR(found.pitchDegrees, angles.y, 1e-12);
+        EXPECT_NEAR(found.rollDegrees, angles.z, 1e-12);
+    }
+}
+
+TEST(Camera, LookAtTakesOnlyThePartOfUpAcrossTheView) {
+    // Looking along +Z: an up leaning toward the view or away from it is still plain +Y, and an
+    // up tipped 45 degrees toward +X is a roll of 45 degrees.
+    const glm::dvec3 eye(0, 0, 0);
+    const glm::dvec3 target(0, 0, 10);
+    EXPECT_NEAR(lookAtAngles(eye, target, glm::normalize(glm::dvec3(0, 1, 5))).rollDegrees, 0, 1e-12);
+    EXPECT_NEAR(lookAtAngles(eye, target, glm::normalize(glm::dvec3(0, 1, -5))).rollDegrees, 0, 1e-12);
+    EXPECT_NEAR(lookAtAngles(eye, target, glm::normalize(glm::dvec3(1, 1, 0))).rollDegrees, 45, 1e-12);
+    EXPECT_NEAR(lookAtAngles(eye, target, glm::dvec3(0, -1, 0)).rollDegrees, 180, 1e-12);
+}

@@ -518,7 +518,7 @@ TEST(SceneLoaderRejects, UnknownKeysAtEveryDepth) {
     EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 8, "depth": 3)"),
               "test.json: image.depth: unknown key (allowed: encoding, height, sampling, spp, width)");
     EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "fvo": 60)"),
-              "test.json: camera.fvo: unknown key (allowed: aspect, fov, pitch, position, roll, yaw)");
+              "test.json: camera.fvo: unknown key (allowed: aspect, fov, lookAt, pitch, position, roll, up, yaw)");
     EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("intensity": 100, "colour": [1, 1, 1])"),
               "test.json: lights[0].colour: unknown key (allowed: color, intensity, position)");
     EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": [1, 0, 0], "size": 2)"),

@@ -1,0 +1,68 @@
+#include "cli/render_targets.h"
+
+#include <filesystem>
+#include <map>
+
+#include "cli/scene_files.h"
+#include "io/output_error.h"
+#include "scene/scene_loader.h"
+
+namespace hexray::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string defaultName(const std::string& scenePath, const std::optional<Tile>& tile) {
+    std::string name = fs::path(scenePath).stem().string();
+    if (tile) {
+        name += ".tile-" + std::to_string(tile->index) + "-of-" + std::to_string(tile->count);
+    }
+    return name + ".png";
+}
+
+// Whether `-o` names a directory to put the images in: an existing one, or a path ending in '/'.
+bool namesDirectory(const std::string& output) {
+    std::error_code ignored;
+    return !output.empty() && (output.back() == '/' || fs::is_directory(output, ignored));
+}
+
+// The directory several scenes go into, checked.
+fs::path outputDirectory(const std::string& output, std::size_t scenes) {
+    std::error_code ignored;
+    if (output.empty()) {
+        return "";
+    }
+    if (!namesDirectory(output)) {
+        throw SceneError("-o " + output + ": " + std::to_string(scenes) +
+                         " scenes are rendered into a directory, and this is not one");
+    }
+    if (!fs::is_directory(output, ignored)) {
+        throw OutputError("-o " + output + ": no such directory (the scenes' images go into it)");
+    }
+    return output;
+}
+
+}  // namespace
+
+std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
+    const std::vector<SceneFile> scenes = sceneFiles(options.scenePaths);
+    const bool single = scenes.size() == 1 && !namesDirectory(options.outputPath);
+    if (single && !options.outputPath.empty()) {
+        return {{scenes[0].path, options.outputPath, imageFormatFor(options.outputPath)}};
+    }
+    const fs::path directory = outputDirectory(options.outputPath, scenes.size());
+    std::vector<RenderTarget> targets;
+    std::map<std::string, std::string> sceneByOutput;
+    for (const SceneFile& scene : scenes) {
+        const std::string output = (directory / defaultName(scene.path, options.tile)).string();
+        const auto [earlier, added] = sceneByOutput.emplace(fs::path(output).lexically_normal().string(), scene.path);
+        if (!added) {
+            throw SceneError("scenes " + earlier->second + " and " + scene.path + " would both be written to " +
+                             output + " (the image is named after the scene file): render them separately");
+        }
+        targets.push_back({scene.path, output, ImageFormat::Png});
+    }
+    return targets;
+}
+
+}  // namespace hexray::cli

@@ -1,0 +1,25 @@
+#pragma once
+// Which file format an output path asks for, by its extension.
+
+#include <optional>
+#include <string>
+
+namespace hexray {
+
+enum class ImageFormat {
+    Png,  // 8-bit RGB, encoded as the scene says (sRGB or linear)
+    Exr,  // 32-bit float linear RGB, before any encoding or clamping
+};
+
+// For messages: what imageFormatFor accepts.
+inline constexpr const char* kSupportedImageFormats =
+    ".png (8-bit), .exr (linear float RGB), or - (PNG on standard output)";
+
+// .png or .exr (in any case); "-" and any path to standard output are PNG, and so is a path
+// without an extension that is not a regular file (/dev/null, a FIFO). nullopt for anything else.
+std::optional<ImageFormat> imageFormatFor(const std::string& path);
+
+// ".png" or ".exr".
+const char* extensionOf(ImageFormat format);
+
+}  // namespace hexray

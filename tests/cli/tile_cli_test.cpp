@@ -1,0 +1,157 @@
+// `render --tile I/N` and `hexray merge`: the merged pieces are the single render, pixel for
+// pixel, on both backends and with anti-aliasing; pieces that do not make one image are refused.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli/cli_fixture.h"
+#include "image/exr_io.h"
+#include "image/image_io.h"
+#include "image/png_row_reader.h"
+#include "tile/tile_stamp.h"
+
+namespace hexray {
+namespace {
+
+using test::CliTest;
+using test::readFile;
+using test::RunResult;
+namespace fs = std::filesystem;
+
+// An odd size, so the tiles differ in height; several samples a pixel.
+constexpr const char* kImage = " --width 67 --height 53 --spp 4";
+
+class TileCliTest : public CliTest {
+protected:
+    // Renders the scene whole and in `tiles` pieces (in reverse order, to show order does not
+    // matter), merges them, and returns the merge's run.
+    RunResult renderAndMerge(const std::string& options, std::uint32_t tiles, const std::string& extension) {
+        const std::string render = "render " + scene("spheres-and-lights.json") + kImage + " " + options;
+        EXPECT_EQ(hexray(render + " -o whole" + extension).exitCode, 0);
+        std::string pieces;
+        for (std::uint32_t i = tiles; i-- > 0;) {
+            const std::string piece = "piece-" + std::to_string(i) + extension;
+            const RunResult run = hexray(render + " --tile " + std::to_string(i) + "/" + std::to_string(tiles) +
+                                         " -o " + piece);
+            EXPECT_EQ(run.exitCode, 0) << run.err;
+            pieces += " " + piece;
+        }
+        return hexray("merge merged" + extension + pieces);
+    }
+};
+
+TEST_F(TileCliTest, MergedGpuTilesAreTheSingleRenderPixelForPixel) {
+    const RunResult merge = renderAndMerge("--backend gpu", 5, ".png");
+    ASSERT_EQ(merge.exitCode, 0) << merge.err;
+    EXPECT_NE(merge.out.find("wrote merged.png (67x53) from 5 pieces"), std::string::npos) << merge.out;
+    EXPECT_EQ(readPng(dir_ / "merged.png").bytes, readPng(dir_ / "whole.png").bytes);
+}
+
+// Tiles of 10 or 11 rows start inside the culling's 8-row screen tiles, whose kernels leave out
+// what their own rows cannot see.
+TEST_F(TileCliTest, MergedGpuTilesWithCullingAreTheSingleRenderPixelForPixel) {
+    const RunResult merge = renderAndMerge("--backend gpu --culling on", 5, ".png");
+    ASSERT_EQ(merge.exitCode, 0) << merge.err;
+    EXPECT_EQ(readPng(dir_ / "merged.png").bytes, readPng(dir_ / "whole.png").bytes);
+}
+
+TEST_F(TileCliTest, MergedCpuTilesAreTheSingleRenderPixelForPixel) {
+    const RunResult merge = renderAndMerge("--backend cpu", 4, ".png");
+    ASSERT_EQ(merge.exitCode, 0) << merge.err;
+    EXPECT_EQ(readPng(dir_ / "merged.png").bytes, readPng(dir_ / "whole.png").bytes);
+}
+
+TEST_F(TileCliTest, MergedOpenExrTilesAreTheSingleRenderValueForValue) {
+    const RunResult merge = renderAndMerge("--backend gpu", 3, ".exr");
+    ASSERT_EQ(merge.exitCode, 0) << merge.err;
+    const ExrImage merged = readExr(dir_ / "merged.exr");
+    const ExrImage whole = readExr(dir_ / "whole.exr");
+    EXPECT_EQ(merged.width, 67u);
+    EXPECT_EQ(merged.height, 53u);
+    EXPECT_EQ(merged.channels, whole.channels);
+}
+
+TEST_F(TileCliTest, APieceRecordsItsPlaceInATextChunk) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + kImage + " --backend cpu --tile 2/5");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("wrote lecture-demo.tile-2-of-5.png (rows 21-30 of 67x53) — cpu reference"),
+              std::string::npos)
+        << run.out;
+    const PngRowReader piece(dir_ / "lecture-demo.tile-2-of-5.png");
+    EXPECT_EQ(piece.width(), 67u);
+    EXPECT_EQ(piece.height(), 10u);  // rows floor(2*53/5) = 21 to floor(3*53/5) - 1 = 30
+    const std::string text = piece.text(kTileStampKey).value_or("");
+    const std::string sceneText = readFile(test::sourcePath("scenes/lecture-demo.json"));
+    EXPECT_EQ(text, "2/5 rows 21-30 of 67x53; spp 4; cpu reference; scene " + sceneTextIdentity(sceneText)) << text;
+}
+
+TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem) {
+    const std::string render = "render " + scene("lecture-demo.json") + kImage + " --backend cpu";
+    for (const char* tile : {"0/3", "1/3", "2/3"}) {
+        ASSERT_EQ(hexray(render + " --tile " + tile).exitCode, 0);
+    }
+    ASSERT_EQ(hexray("render " + scene("lecture-demo.json") + " --width 67 --height 53 --spp 2 --backend cpu "
+                     "--tile 1/3 -o other-spp.png")
+                  .exitCode,
+              0);
+    ASSERT_EQ(hexray(render + " --tile 1/4 -o other-count.png").exitCode, 0);
+    ASSERT_EQ(hexray(render + " --tile 1/3 -o again.png").exitCode, 0);
+    ASSERT_EQ(hexray(render + " -o whole.png").exitCode, 0);
+    const std::string first = " lecture-demo.tile-0-of-3.png";
+    const std::string last = " lecture-demo.tile-2-of-3.png";
+    const std::string middle = " lecture-demo.tile-1-of-3.png";
+    const struct {
+        std::string pieces;
+        std::string message;
+    } cases[] = {
+        {first + last, "missing tile 1/3, rows 17-34 of the image lecture-demo.tile-0-of-3.png belongs to"},
+        {first + middle + " again.png" + last,
+         "again.png: overlaps lecture-demo.tile-1-of-3.png (both are tile 1/3, rows 17-34)"},
+        {first + middle + middle + last, "lecture-demo.tile-1-of-3.png: given twice"},
+        {first + " other-spp.png" + last,
+         "other-spp.png: a tile of another image than lecture-demo.tile-0-of-3.png: spp 2 (not 4)"},
+        {first + " other-count.png" + last, "other-count.png: a tile of another image than "
+                                            "lecture-demo.tile-0-of-3.png: tile count 4 (not 3)"},
+        {first + " whole.png" + last, "whole.png: not a piece of a tiled render (no hexray-tile stamp"},
+        {first + " nothing.png" + last, "nothing.png: cannot read PNG"},
+    };
+    for (const auto& [pieces, message] : cases) {
+        const RunResult run = hexray("merge merged.png" + pieces);
+        EXPECT_EQ(run.exitCode, 2) << pieces << "\n" << run.err;
+        EXPECT_NE(run.err.find(message), std::string::npos) << pieces << "\n" << run.err;
+        EXPECT_FALSE(fs::exists(dir_ / "merged.png")) << pieces;
+    }
+}
+
+TEST_F(TileCliTest, MergeRefusesAnOutputThatIsAPieceAndAPieceOfAnotherFormat) {
+    const std::string render = "render " + scene("lecture-demo.json") + kImage + " --backend cpu";
+    ASSERT_EQ(hexray(render + " --tile 0/2 -o a.png").exitCode, 0);
+    ASSERT_EQ(hexray(render + " --tile 1/2 -o b.exr").exitCode, 0);
+    RunResult run = hexray("merge a.png a.png b.exr");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("the output a.png: the same file as the piece a.png"), std::string::npos) << run.err;
+    run = hexray("merge m.png a.png b.exr");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("b.exr: not a PNG file (.png), as the merged image is"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "m.png"));
+}
+
+TEST_F(TileCliTest, ATileSpecificationOutsideItsRangeIsExitCode2) {
+    for (const char* tile : {"3/3", "-1/3", "1/0", "1", "a/b", "1/20000"}) {
+        const RunResult run = hexray("render " + scene("lecture-demo.json") + " --tile " + tile);
+        EXPECT_EQ(run.exitCode, 2) << tile;
+        EXPECT_NE(run.err.find("--tile: must be I/N, tile I of N, with 0 <= I < N <= 16384 (got " + std::string(tile)),
+                  std::string::npos)
+            << run.err;
+    }
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " --width 8 --height 4 --tile 0/5");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--tile 0/5: the image has 4 rows, so at most 4 tiles"), std::string::npos) << run.err;
+    EXPECT_EQ(createdFiles(), std::vector<std::string>{});
+}
+
+}  // namespace
+}  // namespace hexray
