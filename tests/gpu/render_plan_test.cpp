@@ -2,9 +2,12 @@
 // it implies, the layout, and per node and light which formulation a generated kernel uses.
 
 #include <string>
+#include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "gpu/candidate_lists.h"
 #include "gpu/kernel_generator.h"
 #include "gpu/render_plan.h"
 #include "scene/scene_loader.h"
@@ -15,7 +18,7 @@
 namespace hexray {
 namespace {
 
-const DeviceAbilities kLavapipe{"lavapipe", true, true};
+const DeviceAbilities kLavapipe{"lavapipe", true};
 
 Scene twoSpheres(const Sphere& first, const Sphere& second, const glm::dvec3& light) {
     Scene scene;
@@ -47,7 +50,7 @@ TEST(RenderPlan, PrecisionDecidesWidthFormulationAndPlacement) {
 
 TEST(RenderPlan, F64OnADeviceWithoutItIsRefused) {
     const Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
-    EXPECT_THROW(planRender(scene, {Precision::F64}, DeviceAbilities{"no-f64", false, true}), VulkanError);
+    EXPECT_THROW(planRender(scene, {Precision::F64}, DeviceAbilities{"no-f64", false}), VulkanError);
 }
 
 // The camera test is the robust one only for a sphere whose surface the eye is close to (here a
@@ -90,9 +93,38 @@ TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
         scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
     }
     const RenderPlan plan = planRender(scene, {Precision::F32}, kLavapipe);
-    EXPECT_NE(plan.layout, SceneLayout::Uniform);
+    EXPECT_EQ(plan.layout, SceneLayout::StorageCandidates);
+    ASSERT_TRUE(plan.candidates);
+    EXPECT_EQ(plan.candidates->sphereNodes.size(), countSpheres(scene));
     EXPECT_FALSE(plan.kernel.code);
     EXPECT_FALSE(plan.kernel.spirv.empty());
+    EXPECT_EQ(plan.kernel.name, "render.comp f32 candidates");
+
+    const RenderPlan everyNode = planRender(scene, {Precision::F32, Acceleration::None}, kLavapipe);
+    EXPECT_EQ(everyNode.layout, SceneLayout::Storage);
+    EXPECT_FALSE(everyNode.candidates);
+    EXPECT_EQ(everyNode.kernel.name, "render.comp f32 storage");
+}
+
+TEST(RenderPlan, LargeScenesWithoutSpheresTestEveryNode) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    std::erase_if(scene.nodes, [](const Node& node) { return std::holds_alternative<Sphere>(node.geometry); });
+    const Node plane = scene.nodes.at(0);
+    while (scene.nodes.size() <= gpu::SMALL_SCENE_CAPACITY) {
+        scene.nodes.push_back(plane);
+    }
+    const RenderPlan plan = planRender(scene, {Precision::F32, Acceleration::Always}, kLavapipe);
+    EXPECT_EQ(plan.layout, SceneLayout::Storage);
+    EXPECT_FALSE(plan.candidates);
+}
+
+TEST(RenderPlan, EveryPrecisionGetsCandidateLists) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    for (int i = 0; i < 40; ++i) {
+        scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
+    }
+    EXPECT_EQ(planRender(scene, {Precision::F64}, kLavapipe).kernel.name, "render.comp f64 candidates");
+    EXPECT_EQ(planRender(scene, {Precision::F32Naive}, kLavapipe).kernel.name, "render.comp f32 textbook candidates");
 }
 
 }  // namespace
