@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -166,6 +167,79 @@ TEST(CandidateLists, ListEverySphereForTextbookShadowRaysPastTheirReach) {
                                             Formulation::Robust);
     ASSERT_TRUE(robust);
     EXPECT_TRUE(std::isinf(robust->grids.at(1).reach.x));  // robust shadow rays start at the light
+}
+
+// Which spheres (node indices) any cell of grid `grid` lists, and how many cells list each.
+std::map<std::uint32_t, std::size_t> cellsListing(const CandidateLists& lists, std::uint32_t grid) {
+    const gpu::GpuCandidateGrid& g = lists.grids.at(grid);
+    std::map<std::uint32_t, std::size_t> cells;
+    for (std::uint32_t cell = g.cells.z; cell < g.cells.z + g.cells.x * g.cells.y; ++cell) {
+        for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
+            ++cells[lists.sphereNodes.at(lists.entries.at(k))];
+        }
+    }
+    return cells;
+}
+
+std::size_t cellCount(const CandidateLists& lists, std::uint32_t grid) {
+    return std::size_t(lists.grids.at(grid).cells.x) * lists.grids.at(grid).cells.y;
+}
+
+// The floor, then the eye looking along +z at a sphere on its left and one on its right, with one
+// behind it.
+Scene handMadeScene() {
+    Scene scene = makeRandomSpheresScene(0, 1);
+    scene.image.width = 320;
+    scene.image.height = 180;
+    scene.camera.position = {0.0, 2.0, -10.0};
+    scene.camera.pitchDegrees = 0.0;
+    scene.camera.fovDegrees = 70.0;
+    scene.lights = {PointLight{{0.0, 30.0, 20.0}, Color(1.0), 900.0}};
+    for (const glm::dvec3& center : {glm::dvec3(-8.0, 2.0, 20.0), glm::dvec3(8.0, 2.0, 20.0), glm::dvec3(0.0, 2.0, -30.0)}) {
+        scene.nodes.push_back(Node{Sphere{center, 1.0}, 1});
+    }
+    return scene;
+}
+
+TEST(CandidateLists, ListEachSphereOnlyWhereTheEyeCanSeeIt) {
+    const Scene scene = handMadeScene();
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust);
+    ASSERT_TRUE(lists);
+    const auto towards = [&](std::uint32_t node) {
+        return glm::vec3(glm::normalize(std::get<Sphere>(scene.nodes[node].geometry).center - scene.camera.position));
+    };
+    EXPECT_EQ(cameraList(*lists, towards(1)), std::set<std::uint32_t>{1});
+    EXPECT_EQ(cameraList(*lists, towards(2)), std::set<std::uint32_t>{2});
+    EXPECT_TRUE(cameraList(*lists, glm::vec3(0.0f, 0.0f, 1.0f)).empty()) << "between the two spheres";
+    const std::map<std::uint32_t, std::size_t> listed = cellsListing(*lists, gpu::CAMERA_GRID);
+    EXPECT_FALSE(listed.count(3)) << "the sphere behind the eye";
+    ASSERT_TRUE(listed.count(1) && listed.count(2));
+    // Its outline is about 15 pixels across and the camera's cells start at a pixel: its box's
+    // cells, a few hundred, not the window's.
+    EXPECT_LT(listed.at(1), 1000u);
+    EXPECT_GT(cellCount(*lists, gpu::CAMERA_GRID), 2 * listed.at(1));
+}
+
+TEST(CandidateLists, ListASphereAroundTheEyeOrALightOrFillingTheViewInEveryCell) {
+    Scene scene = handMadeScene();
+    const glm::dvec3 light = scene.lights.at(0).position;
+    scene.nodes.push_back(Node{Sphere{scene.camera.position + glm::dvec3(1.0, 0.0, 0.0), 3.0}, 1});  // 4: the eye's
+    scene.nodes.push_back(Node{Sphere{light + glm::dvec3(0.0, 0.5, 0.0), 1.0}, 1});                   // 5: the light's
+    scene.nodes.push_back(Node{Sphere{{0.0, 2.0, 1e6 + 60.0}, 1e6}, 1});                              // 6: a wall ahead
+    for (const Formulation formulation : {Formulation::Robust, Formulation::Textbook}) {
+        for (const FloatWidth width : {FloatWidth::F32, FloatWidth::F64}) {
+            const auto lists = buildCandidateLists(scene, placementFor(scene, formulation), width, formulation);
+            ASSERT_TRUE(lists);
+            const std::map<std::uint32_t, std::size_t> camera = cellsListing(*lists, gpu::CAMERA_GRID);
+            EXPECT_EQ(camera.at(4), cellCount(*lists, gpu::CAMERA_GRID));
+            EXPECT_EQ(camera.at(6), cellCount(*lists, gpu::CAMERA_GRID));
+            for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+                const std::uint32_t grid = gpu::CAMERA_GRID + 1 + face;  // light 0's faces
+                EXPECT_EQ(cellsListing(*lists, grid).at(5), cellCount(*lists, grid)) << "face " << face;
+            }
+        }
+    }
 }
 
 }  // namespace

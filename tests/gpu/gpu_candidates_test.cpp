@@ -3,13 +3,16 @@
 // for bit, in every precision, also where spheres are far smaller than a pixel, straddle the eye's
 // plane or a light's cube faces, or hold the eye or a light; and it agrees with the CPU reference.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <random>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "camera/camera.h"
 #include "compare/compare.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
@@ -109,6 +112,24 @@ Scene insideScene() {
     return scene;
 }
 
+// Spheres in front of a huge one that fills most of the view, and a huge one under the floor whose
+// top pokes through it.
+Scene hugeScene() {
+    Scene scene = makeRandomSpheresScene(300, 29);
+    scene.image.width = 128;
+    scene.image.height = 72;
+    const glm::dvec3 forward = cameraForward(scene.camera);
+    double farthest = 0.0;
+    for (const Node& node : scene.nodes) {
+        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+            farthest = std::max(farthest, glm::distance(sphere->center, scene.camera.position) + sphere->radius);
+        }
+    }
+    scene.nodes.push_back(Node{Sphere{scene.camera.position + forward * (farthest + 1e6), 1e6}, 4});
+    scene.nodes.push_back(Node{Sphere{{0.0, -1e5 + 0.5, farthest / 2}, 1e5}, 3});
+    return scene;
+}
+
 void expectSameAsEveryNode(GpuRenderer& renderer, const Scene& scene, Precision precision) {
     const GpuRenderResult every = renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::None);
     const GpuRenderResult listed = renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::Always);
@@ -152,6 +173,10 @@ TEST_P(GpuCandidatesTest, GiveTheSameImageAtTheEdgeCases) {
     {
         SCOPED_TRACE("the eye inside a sphere");
         expectSameAsEveryNode(renderer, insideScene(), GetParam());
+    }
+    {
+        SCOPED_TRACE("huge spheres");
+        expectSameAsEveryNode(renderer, hugeScene(), GetParam());
     }
 }
 
