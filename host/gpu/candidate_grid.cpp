@@ -3,17 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/candidate_tunables.h"
 #include "util/parallel_parts.h"
 
 namespace hexray {
 namespace {
 
-// The shader looks cells up in float whatever its precision: its tangent coordinates err by a
-// few units of float roundoff of their size, and its cell index by a few units of roundoff of the
-// grid's size; a box reaches this far past its computed edges.
-constexpr double kLookupPad = 16.0 * 0x1p-24;
-constexpr double kCellSlack = 0.02;
-constexpr double kMaxCellsAcross = 65536;
+using namespace candidates;  // the tunables
 
 // Rounding to float moves a number by at most half a unit in its last place (2^-24 of it); moving
 // it by more than that first rounds outward, without a look at the result.

@@ -10,6 +10,7 @@
 
 #include "camera/camera.h"
 #include "gpu/candidate_grid.h"
+#include "gpu/candidate_tunables.h"
 #include "gpu/morton_order.h"
 #include "gpu/sphere_footprint.h"
 #include "shader_interface.h"
@@ -19,26 +20,7 @@
 namespace hexray {
 namespace {
 
-// ---------------------------------------------------------------- tunables
-// A bound on the rounding of the shader's tests, in units of its roundoff of the magnitudes
-// involved. The error estimates in shaders/intersect.glsl put the robust discriminant within
-// about 6 units of the line distance and the textbook b^2 - 4ac within about 30 units of |f|^2;
-// this leaves a margin of two and more.
-constexpr double kRoundingUnits = 64.0;
-// Camera rays land up to half a pixel past the image's edge (the sample pattern); the camera's
-// view covers a margin of this many pixels.
-constexpr double kImageMarginPixels = 2.0;
-// A cube face's window reaches this far past the face, for directions the shader may give to
-// either of two faces.
-constexpr double kFaceMargin = 1e-6;
-// f32-naive shadow rays start at the surface, and their rounding grows with their length: a
-// light's lists hold rays up to this many times the farthest sphere or the eye from the light;
-// a longer ray (off a far plane) takes a list of every sphere.
-constexpr double kTextbookReachFactor = 2.0;
-// A light's cells start at about the median footprint's larger side (each sphere then covers a
-// few cells, each cell holds a few spheres); the footprints of every this many records are sampled
-// for it.
-constexpr std::size_t kSideSampleStride = 8;
+using namespace candidates;  // the tunables
 
 double roundoff(FloatWidth width) {
     return width == FloatWidth::F64 ? 0x1p-53 : 0x1p-24;
@@ -432,12 +414,12 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     const bool textbook = formulation == Formulation::Textbook;
     const std::size_t fixedEntries = placed.planes.size() + (textbook ? lightCount * placed.spheres.size() : 0);
     std::size_t cells = 1 + (textbook ? lightCount : 0);
-    if (fixedEntries > kMaxCandidateEntries) {
+    if (fixedEntries > kMaxEntries) {
         return std::nullopt;
     }
     const double pixel = glm::length(makePixelSheet(scene.camera, sheetAspect(scene)).right) / scene.image.width;
-    auto camera = chooseGrids(sightings, {0, 1}, pixel, (kMaxCandidateEntries - fixedEntries) / 2,
-                              (kMaxCandidateCells - cells) / 2);
+    auto camera = chooseGrids(sightings, {0, 1}, pixel, (kMaxEntries - fixedEntries) / kCameraBudgetShareDivisor,
+                              (kMaxCells - cells) / kCameraBudgetShareDivisor);
     if (!camera) {
         return std::nullopt;
     }
@@ -446,8 +428,8 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     std::vector<GridChoice> lightGrids;
     for (std::size_t light = 0; light < lightCount; ++light) {
         const ViewSet set{1 + light * gpu::CUBE_FACES, gpu::CUBE_FACES};
-        const std::size_t entryBudget = (kMaxCandidateEntries - entries) / (lightCount - light);
-        const std::size_t cellBudget = (kMaxCandidateCells - cells) / (lightCount - light);
+        const std::size_t entryBudget = (kMaxEntries - entries) / (lightCount - light);
+        const std::size_t cellBudget = (kMaxCells - cells) / (lightCount - light);
         auto choice = chooseGrids(sightings, set, lightCellSide(sightings, set, cellBudget), entryBudget, cellBudget);
         if (!choice) {
             return std::nullopt;

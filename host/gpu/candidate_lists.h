@@ -27,10 +27,6 @@
 
 namespace hexray {
 
-// At most this many list entries in all (4 bytes each, in one storage buffer) and as many cells.
-inline constexpr std::size_t kMaxCandidateEntries = std::size_t{24} << 20;
-inline constexpr std::size_t kMaxCandidateCells = std::size_t{8} << 20;
-
 struct CandidateLists {
     gpu::GpuCandidateAxes cameraAxes{};
     std::vector<gpu::GpuCandidateGrid> grids;  // the camera's, then gpu::CUBE_FACES per light
@@ -49,8 +45,8 @@ struct CandidateLists {
 };
 
 // The lists for `scene` in the shader's placement, float width and formulation, built by
-// `threadCount` threads (0: one per core); nothing when they would not fit kMaxCandidateEntries or
-// kMaxCandidateCells (the scene is then traced testing every node). Deterministic: the same
+// `threadCount` threads (0: one per core); nothing when they would not fit candidates::kMaxEntries or
+// candidates::kMaxCells (candidate_tunables.h) (the scene is then traced testing every node). Deterministic: the same
 // scene gives the same lists on any number of threads.
 std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Placement& placement, FloatWidth width,
                                                   Formulation formulation, unsigned threadCount = 0);

@@ -6,12 +6,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "gpu/candidate_tunables.h"
+
 namespace hexray {
 namespace {
 
-// Slack for this file's own rounding, in tangent units: a few hundred units of double roundoff of
-// the magnitudes involved, far below any float the shader computes.
-constexpr double kSlack = 1e-12;
+using namespace candidates;  // the tunables
 
 // The range of t = x / z over the tangent planes through the origin that touch a ball centred at
 // (x, ., z), z > radius: the roots of (x - t z)^2 = radius^2 (1 + t^2).
@@ -19,7 +19,7 @@ void tangentRange(double x, double z, double radius, double& low, double& high) 
     const double denominator = (z - radius) * (z + radius);
     const double inverse = 1.0 / denominator;
     const double half = radius * std::sqrt(x * x + denominator);
-    const double slack = kSlack * (1.0 + (x * x + z * z) * inverse);
+    const double slack = kFootprintSlack * (1.0 + (x * x + z * z) * inverse);
     low = (x * z - half) * inverse - slack;
     high = (x * z + half) * inverse + slack;
 }
@@ -36,7 +36,7 @@ void componentRange(double angle, double halfAngle, double& low, double& high) {
 double TangentView::minForward() const {
     const double u = std::max(std::abs(window.u0), std::abs(window.u1));
     const double v = std::max(std::abs(window.v0), std::abs(window.v1));
-    return (1.0 - kSlack) / std::sqrt(1.0 + u * u + v * v);
+    return (1.0 - kFootprintSlack) / std::sqrt(1.0 + u * u + v * v);
 }
 
 std::optional<TangentBox> ballFootprint(const TangentView& view, const glm::dvec3& center, double radius) {
