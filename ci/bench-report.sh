@@ -132,7 +132,7 @@ grows as √N (the density stays the same), two lights, camera looking down over
 the rounds, each backend renders every N once at a fraction of the resolution; a backend
 whose full frame that predicts to exceed \`--max-frame-seconds\` (30) is not measured at that
 N (the notes under the table say which). **host plan ms** = the GPU's planning (the structures
-it builds on the host for the scene, such as its BVH), **upload ms** = packing and uploading
+it builds on the host for the scene: its candidate lists), **upload ms** = packing and uploading
 them: both are in frame ms, not in the render time. **core-ns per pixel** = render time ×
 threads / pixels. **vs Embree** = this row's Mpix/s over the faster Embree mode's at the same N
 (above 1: faster than Embree). The error columns here are against the CPU reference at the same

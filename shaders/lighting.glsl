@@ -29,8 +29,8 @@ LightPath lightPath(Surface s, vec3r lightPosition) {
     path.facing = path.r2 > 0.0 && cosTheta > 0.0;
     path.cosTheta = path.r2 == 0.0 ? 0.0 : cosTheta;
     path.shadowRay = Ray(s.shadowOrigin, toLight * inverseDistance);
-    // A surface facing away asks about an empty segment: the answer is unused, and a BVH walk
-    // opens no box for it (straight-line code, as lavapipe runs a skipped branch anyway).
+    // A surface facing away asks about an empty segment, whose answer is unused (straight-line
+    // code: lavapipe runs a skipped branch anyway).
     path.shadowLength = path.facing ? path.r2 * inverseDistance : 0.0;
     return path;
 }

@@ -44,7 +44,7 @@ struct BenchConfiguration {
 struct BenchMeasurement {
     std::vector<double> renderMilliseconds;  // the backend's own timing of the render (see the report)
     std::vector<double> frameMilliseconds;   // the whole frame in-process: planning, upload, render
-    std::vector<double> planMilliseconds;    // GPU: planning (structures it builds on the host: a BVH)
+    std::vector<double> planMilliseconds;    // GPU: planning (structures it builds on the host: candidate lists)
     std::vector<double> uploadMilliseconds;  // GPU: packing and uploading the scene
     Image image;                             // CPU reference and Embree: linear
     Rgb8Image encoded;                       // GPU: the 8-bit output `render` writes

@@ -1,5 +1,5 @@
 #pragma once
-// A deterministic scene of many spheres, for benchmarks and tests of the BVH.
+// A deterministic scene of many spheres, for benchmarks and tests of the BVH and candidate lists.
 
 #include <cstdint>
 

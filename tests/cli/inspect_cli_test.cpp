@@ -217,8 +217,8 @@ TEST_F(InspectCliTest, CompareMaskHasNoRedWhenTheRendersAgree) {
     EXPECT_GT(blue, 0u);  // the shadow's edge and the silhouettes have ambiguous pixels
 }
 
-// A scene large enough for the BVH: the GPU trace follows the tree, the table lists only the
-// nodes some backend hits and counts the rest.
+// A scene large enough for the data-driven kernel: the GPU trace follows its candidate lists and
+// the CPU reference its BVH; the table lists only the nodes some backend hits and counts the rest.
 TEST_F(InspectCliTest, PixelListsOnlyTheNodesHitInAManySphereScene) {
     // A 21 x 15 wall of spheres (radius 0.9, 2 apart) at z = 50 behind a floor at y = -5; the
     // centre pixel's ray passes within 0.5 of the sphere at (0, 14, 50): node 1 + 10 * 15 + 7.

@@ -206,9 +206,9 @@ TEST_F(PixelTraceTest, AovModeGivesDepthAndNormalsAndTheSameImage) {
     EXPECT_GT(compared, 479000u);  // of 480000
 }
 
-// A scene large enough for the BVH layout: the trace and AOV modes follow the tree there too,
-// and agree with the CPU reference.
-TEST_F(PixelTraceTest, TraceAndAovModesFollowTheBvhInAManySphereScene) {
+// A scene large enough for the candidate lists: the trace and AOV modes follow the lists there
+// too, and agree with the CPU reference.
+TEST_F(PixelTraceTest, TraceAndAovModesFollowTheCandidateListsInAManySphereScene) {
     Scene scene = makeRandomSpheresScene(500, 1);
     overrideImageSize(scene, 96, 54, "test");
     GpuRenderer renderer(context());
