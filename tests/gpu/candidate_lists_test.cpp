@@ -16,6 +16,7 @@
 #include "camera/camera.h"
 #include "gpu/candidate_lists.h"
 #include "scene/random_spheres.h"
+#include "support/floor_scene.h"
 
 namespace hexray {
 namespace {
@@ -188,12 +189,7 @@ std::size_t cellCount(const CandidateLists& lists, std::uint32_t grid) {
 // The floor, then the eye looking along +z at a sphere on its left and one on its right, with one
 // behind it.
 Scene handMadeScene() {
-    Scene scene = makeRandomSpheresScene(0, 1);
-    scene.image.width = 320;
-    scene.image.height = 180;
-    scene.camera.position = {0.0, 2.0, -10.0};
-    scene.camera.pitchDegrees = 0.0;
-    scene.camera.fovDegrees = 70.0;
+    Scene scene = test::floorSeenFrom({0.0, 2.0, -10.0}, 0.0, 70.0, 320, 180);
     scene.lights = {PointLight{{0.0, 30.0, 20.0}, Color(1.0), 900.0}};
     for (const glm::dvec3& center : {glm::dvec3(-8.0, 2.0, 20.0), glm::dvec3(8.0, 2.0, 20.0), glm::dvec3(0.0, 2.0, -30.0)}) {
         scene.nodes.push_back(Node{Sphere{center, 1.0}, 1});

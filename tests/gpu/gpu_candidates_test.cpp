@@ -17,6 +17,7 @@
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
 #include "scene/random_spheres.h"
+#include "support/floor_scene.h"
 #include "validated_vulkan.h"
 
 namespace hexray {
@@ -47,12 +48,7 @@ Scene randomScene(std::uint32_t spheres, std::uint64_t seed) {
 // beside and behind the eye across its plane, spheres on the diagonals between a light's cube
 // faces, a light inside a sphere and one among small spheres.
 Scene edgeCaseScene() {
-    Scene scene = makeRandomSpheresScene(0, 1);
-    scene.image.width = 192;
-    scene.image.height = 108;
-    scene.camera.position = {0.0, 2.0, -10.0};
-    scene.camera.pitchDegrees = 0.0;
-    scene.camera.fovDegrees = 70.0;
+    Scene scene = test::floorSeenFrom({0.0, 2.0, -10.0}, 0.0, 70.0, 192, 108);
     scene.lights = {PointLight{{0.0, 30.0, 20.0}, Color(1.0), 900.0}, PointLight{{-5.0, 3.5, 8.0}, Color(1.0), 50.0},
                     PointLight{{4.0, 1.0, 5.0}, Color(0.5), 40.0}};
     std::mt19937_64 engine(17);
@@ -85,12 +81,7 @@ Scene edgeCaseScene() {
 // floor (the rows next to the horizon lie tens of thousands of units out) are longer than the
 // light's lists hold (their rounding grows with their length) and take the list of every sphere.
 Scene horizonScene() {
-    Scene scene = makeRandomSpheresScene(0, 1);
-    scene.image.width = 192;
-    scene.image.height = 108;
-    scene.camera.position = {0.0, 100.0, -300.0};
-    scene.camera.pitchDegrees = -5.0;
-    scene.camera.fovDegrees = 60.0;
+    Scene scene = test::floorSeenFrom({0.0, 100.0, -300.0}, -5.0, 60.0, 192, 108);
     scene.lights = {PointLight{{0.0, 100.0, 0.0}, Color(1.0), 40000.0}};
     std::mt19937_64 engine(29);
     for (int i = 0; i < 300; ++i) {
