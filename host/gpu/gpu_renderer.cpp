@@ -199,7 +199,7 @@ GpuRenderer::~GpuRenderer() {
 
 DeviceAbilities GpuRenderer::abilities() const {
     const DeviceInfo& device = context_.selected();
-    return DeviceAbilities{device.name, device.hasFloat64};
+    return DeviceAbilities{device.name, device.hasFloat64, device.maxTexelBufferElements};
 }
 
 RenderPlan GpuRenderer::plan(const Scene& scene, const PlanRequest& request) const {

@@ -112,6 +112,17 @@ bool wantsCandidates(const Scene& scene, Acceleration acceleration) {
     return acceleration == Acceleration::Always || !isSmallScene(scene);
 }
 
+// Whether the device holds each of the lists' texel buffers (candidate_buffers.h).
+bool fitsDevice(const CandidateLists& lists, FloatWidth width, const DeviceAbilities& device) {
+    const std::size_t record = width == FloatWidth::F64 ? sizeof(gpu::GpuCandidateSphere<double>)
+                                                        : sizeof(gpu::GpuCandidateSphere<float>);
+    constexpr std::size_t kTexelBytes = 16;  // RGBA32UI
+    const std::size_t largest = std::max({lists.entries.size(), lists.cellStarts.size(),
+                                          lists.sphereNodes.size() * record / kTexelBytes,
+                                          lists.gridBytes().size() / kTexelBytes});
+    return largest <= device.maxTexelBufferElements;
+}
+
 // Textbook kernels are never culled: they show what a course's renderer does.
 bool cullingPays(const Scene& scene, const RenderPlan& plan, Culling culling) {
     if (culling == Culling::Off || plan.formulation == Formulation::Textbook) {
@@ -193,7 +204,8 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
     plan.placement = placementFor(scene, plan.formulation);
     plan.layout = isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
     if (wantsCandidates(scene, request.acceleration)) {
-        if (auto lists = buildCandidateLists(scene, plan.placement, plan.width, plan.formulation)) {
+        auto lists = buildCandidateLists(scene, plan.placement, plan.width, plan.formulation);
+        if (lists && fitsDevice(*lists, plan.width, device)) {
             plan.candidates = std::make_shared<const CandidateLists>(std::move(*lists));
             plan.layout = SceneLayout::StorageCandidates;
         }

@@ -109,6 +109,7 @@ struct Kernel {
 struct DeviceAbilities {
     std::string name;            // for messages
     bool float64 = false;        // shaderFloat64
+    std::uint32_t maxTexelBufferElements = UINT32_MAX;  // candidate lists: their largest texel buffer
 };
 
 // Whether a generated kernel's tiles are classified by the work their rays can need, each class

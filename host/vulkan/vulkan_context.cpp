@@ -119,6 +119,7 @@ DeviceInfo describe(const vk::raii::PhysicalDevice& device, std::uint32_t index)
     }
     info.hasComputeQueue = computeQueueFamily(device).has_value();
     info.hasFloat64 = device.getFeatures().shaderFloat64 == VK_TRUE && !injected(InjectedFault::NoFloat64);
+    info.maxTexelBufferElements = device.getProperties().limits.maxTexelBufferElements;
     return info;
 }
 

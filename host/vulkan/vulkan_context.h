@@ -51,6 +51,7 @@ struct DeviceInfo {
     std::string apiVersion;
     bool hasComputeQueue = false;
     bool hasFloat64 = false;
+    std::uint32_t maxTexelBufferElements = 0;
 };
 
 // Counts the validation layer's warnings and errors (each is also printed to stderr). Owned by

@@ -1,6 +1,8 @@
 // The render plan's decisions (host/gpu/render_plan.h), one place for each: the precision and what
 // it implies, the layout, and per node and light which formulation a generated kernel uses.
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <variant>
 #include <vector>
@@ -104,6 +106,21 @@ TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
     EXPECT_EQ(everyNode.layout, SceneLayout::Storage);
     EXPECT_FALSE(everyNode.candidates);
     EXPECT_EQ(everyNode.kernel.name, "render.comp f32 storage");
+}
+
+TEST(RenderPlan, ListsTheDeviceCannotHoldAreNotUsed) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    for (int i = 0; i < 40; ++i) {
+        scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
+    }
+    const RenderPlan fits = planRender(scene, {Precision::F32}, kLavapipe);
+    ASSERT_TRUE(fits.candidates);
+    const auto largest = std::uint32_t(std::max(fits.candidates->entries.size(), fits.candidates->cellStarts.size()));
+    EXPECT_EQ(planRender(scene, {Precision::F32}, DeviceAbilities{"just enough", true, largest}).layout,
+              SceneLayout::StorageCandidates);
+    const RenderPlan tooSmall = planRender(scene, {Precision::F32}, DeviceAbilities{"small", true, largest - 1});
+    EXPECT_EQ(tooSmall.layout, SceneLayout::Storage);
+    EXPECT_FALSE(tooSmall.candidates);
 }
 
 TEST(RenderPlan, LargeScenesWithoutSpheresTestEveryNode) {
