@@ -121,13 +121,41 @@ inline bool rejectionNamesPlace(const std::string& message, const std::string& s
         const std::string kSyntax = ": JSON syntax error: ";
         return i > columnStart && rest.compare(i, kSyntax.size(), kSyntax) == 0 && hasReasonAfter(i + kSyntax.size());
     }
-    // PATH
+    // PATH: (root), or a key followed by .key, [index] and ["any key"] (a JSON string, maybe cut
+    // short with ...), as scene/json_path.h writes them; a quoted key may itself hold ": ".
     if (rest.size() < 2 || rest[0] != ' ') return false;
-    const char first = rest[1];
-    const bool pathStart = rest.compare(1, 6, "(root)") == 0 || first == '[' || first == '_' ||
-                           (first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z');
-    const std::size_t separator = rest.find(": ", 2);
-    return pathStart && separator != std::string::npos && hasReasonAfter(separator + 2);
+    std::size_t at = 1;
+    if (rest.compare(at, 6, "(root)") == 0) {
+        at += 6;
+    } else {
+        const auto isLetter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+        const auto skipIdentifier = [&] {
+            const std::size_t start = at;
+            while (at < rest.size() && (isLetter(rest[at]) || (at > start && isDigit(rest[at])))) ++at;
+            return at > start;
+        };
+        const auto skipBracket = [&] {  // at the '['
+            ++at;
+            if (at < rest.size() && rest[at] == '"') {
+                for (++at; at < rest.size() && rest[at] != '"'; ++at) {
+                    if (rest[at] == '\\') ++at;
+                }
+                if (at >= rest.size()) return false;
+                ++at;
+                if (rest.compare(at, 3, "...") == 0) at += 3;
+            } else {
+                const std::size_t start = at;
+                while (at < rest.size() && isDigit(rest[at])) ++at;
+                if (at == start) return false;
+            }
+            return at < rest.size() && rest[at++] == ']';
+        };
+        if (!(rest[at] == '[' ? skipBracket() : skipIdentifier())) return false;
+        while (at < rest.size() && (rest[at] == '[' || rest[at] == '.')) {
+            if (!(rest[at] == '[' ? skipBracket() : (++at, skipIdentifier()))) return false;
+        }
+    }
+    return rest.compare(at, 2, ": ") == 0 && hasReasonAfter(at + 2);
 }
 
 }  // namespace hexray::test
