@@ -8,6 +8,7 @@
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
 #include "scene/random_spheres.h"
+#include "reference_comparison.h"
 #include "validated_vulkan.h"
 
 namespace hexray {
@@ -57,9 +58,7 @@ TEST_P(GpuBvhAgreementTest, AgreesWithTheCpuReference) {
     GpuRenderer renderer(context());
     const GpuRenderResult gpu = renderer.render(scene, GetParam());
     ASSERT_TRUE(gpu.usedBvh) << "Auto must choose the BVH for 2000 spheres";
-    const CpuRender cpu = renderOnCpu(scene);
-    const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
-                                              gpu.image, gpu.classes, scene.image.encoding);
+    const RenderComparison c = test::compareWithReference(scene, gpu);
     const Tolerance tolerance;
     EXPECT_LE(c.topology.ambiguousShare(), 0.2);
     EXPECT_EQ(c.topology.mismatches, tolerance.maxTopologyMismatches);
