@@ -10,22 +10,25 @@ bash ci/build.sh --bench >/dev/null
 start_seconds=$(date +%s)
 
 # The sphere curve: N random spheres over a plane at 1080p, one sample per pixel, three rounds
-# (a 100k-sphere frame of the CPU reference alone takes several seconds here).
-curve_counts=1,10,100,1000,10000,100000
+# (a million-sphere frame of the CPU reference alone takes several seconds here).
+curve_counts=1,10,100,1000,10000,100000,1000000
 curve_rounds=3
 
 hexray=./build/hexray
 bench_demo=$($hexray bench scenes/lecture-demo.json --width 1920 --height 1080 --csv docs/performance-demo.csv 2>/dev/null)
-bench_spheres=$($hexray bench scenes/spheres-and-lights.json --csv docs/performance-spheres.csv 2>/dev/null)
+bench_spheres=$($hexray bench scenes/spheres-and-lights.json --width 960 --height 540 \
+  --csv docs/performance-spheres.csv 2>/dev/null)
 bench_curve=$($hexray bench --spheres $curve_counts --width 1920 --height 1080 --samples 1 --rounds $curve_rounds --max-frame-seconds 30 \
   --csv docs/performance-curve.csv 2>/dev/null)
 { cat docs/performance-demo.csv; tail -n +2 docs/performance-spheres.csv; tail -n +2 docs/performance-curve.csv; } \
   > docs/performance.csv
 rm docs/performance-demo.csv docs/performance-spheres.csv docs/performance-curve.csv
 /usr/bin/python3 ci/plot-pareto.py docs/performance.csv docs/performance.png
+targets=$(/usr/bin/python3 ci/performance-targets.py docs/performance.csv)
 
-# Whole process: `hexray render` of the demo at 1080p to PNG, warm (Mesa's shader cache filled)
-# and cold (cache disabled); seven runs each, interleaved; milliseconds.
+# Whole process: `hexray render` of the demo at 1080p to PNG, warm (hexray's kernel cache and
+# Mesa's shader cache filled), cold (Mesa's cache disabled) and new (a scene never seen: both
+# caches empty or disabled); seven runs each, interleaved; milliseconds.
 output=$(mktemp -d)
 whole_process() {
   local start end
@@ -34,14 +37,23 @@ whole_process() {
   end=$(date +%s%N)
   echo $(((end - start) / 1000000))
 }
-$hexray render scenes/lecture-demo.json --backend gpu --width 1920 --height 1080 -o "$output/demo.png" >/dev/null  # fill the cache
-warm=() cold=()
+export XDG_CACHE_HOME="$output/cache"
+$hexray render scenes/lecture-demo.json --backend gpu --width 1920 --height 1080 -o "$output/demo.png" >/dev/null  # fill the caches
+warm=() cold=() new=()
 for _ in 1 2 3 4 5 6 7; do
   warm+=("$(whole_process env)")
   cold+=("$(whole_process env MESA_SHADER_CACHE_DISABLE=true)")
+  new+=("$(whole_process env MESA_SHADER_CACHE_DISABLE=true XDG_CACHE_HOME="$output/empty-$RANDOM")")
 done
+unset XDG_CACHE_HOME
 rm -rf "$output"
 median() { printf '%s\n' "$@" | sort -n | sed -n 4p; }
+
+# Many scenes in one process against one process each (ci/batch-bench.sh prints its own table).
+batch=""
+if [ -f ci/batch-bench.sh ]; then
+  batch=$(bash ci/batch-bench.sh)
+fi
 elapsed=$(( $(date +%s) - start_seconds ))
 
 device=$($hexray devices | sed -n 's/^\* [0-9]*: //p')
@@ -55,40 +67,60 @@ Regenerate with \`bash ci/bench-report.sh\` (it installs and builds first). It r
 \`hexray bench\` (five interleaved rounds of every configuration in one process) on the demo
 scene at 1920×1080 and on spheres-and-lights at 960×540, then the scaling curve (random
 spheres over a plane, N = ${curve_counts//,/, }, at 1920×1080, ${curve_rounds} rounds), writes
-[performance.csv](performance.csv) and the plot below, and times whole processes.
+[performance.csv](performance.csv) and the plot below, and times whole processes and batches.
 Device: ${device}. ${embree_line} Generated $(date -u +%Y-%m-%d); the three benches and the
 whole-process runs took ${elapsed} s. The machine is shared and noisy: compare figures from
 the same run only.
 
-Backends: **lavapipe** = the compute shader on Mesa's CPU Vulkan driver, timing the pipeline
-\`hexray render\` uses (the 8-bit image encoded on the device; the pixel classes for the
-topology column come from one untimed run of the comparison pipeline); **cpu-reference** =
-the double-precision reference (\`host/cpu\`), which also computes every decision's margin
-and is built for clarity, not speed; **embree** = Intel's Embree 3 on the same scenes, camera
-rays and shading (\`host/embree\`: spheres as Embree sphere points in float, camera-relative;
-planes analytic; one ray at a time with \`rtcIntersect1\` / \`rtcOccluded1\`; hit points
-rebuilt and shaded in double), as a yardstick for what a tuned CPU tracer does here;
-**lavapipe hand-written** (demo scene only) = \`shaders/lecture_demo_ceiling.comp\`, a
-straight-line kernel with that scene's values as literals and textbook float arithmetic, as
-the yardstick for the data-driven shader: lavapipe's ceiling for this scene on this machine
-(it writes no pixel classes, so its topology column is empty).
+Backends: **lavapipe** = the compute shader on Mesa's CPU Vulkan driver, as \`hexray render\`
+runs it (the 8-bit image encoded on the device; the pixel classes for the topology column come
+from one untimed run that writes them), for each precision with **culling** off (the kernel
+generated for the whole scene) and on (a kernel per class of screen tiles, each with only the
+tests its rays can need; the same image, see the README); "(auto)" marks the precision \`auto\`
+picks; **lavapipe hand-written** (demo scene only) = \`host/bench/lecture_demo_ceiling.comp\`, the
+demo scene as straight-line code with its values as literals and textbook float arithmetic, run
+through the renderer's public interface: the yardstick for what lavapipe can do for that scene;
+**cpu-reference** = the double-precision reference (\`host/cpu\`), which also computes every
+decision's margin and is built for clarity, not speed; **embree** = Intel's Embree 3 on the
+same scenes, camera rays and shading (\`host/embree\`: spheres as Embree sphere points in
+float, camera-relative; planes analytic; hit points rebuilt and shaded in double), one ray at a
+time (\`rtcIntersect1\`/\`rtcOccluded1\`) and in coherent 8-ray packets of 4×2 pixels
+(\`rtcIntersect8\`/\`rtcOccluded8\`).
 
 Columns: **Mpix/s** = pixels / render time (lavapipe: dispatch time from timestamps, after a
-warm-up dispatch; CPU reference: wall time, all cores, BVH build included; Embree: tracing and
-shading wall time, all cores, its BVH build excluded), median and best of the rounds;
-**frame ms** = median wall time of the whole frame in-process (upload, render, read back;
-Embree: with its BVH build); **RMSE**, **max abs** and **> 1 level** = 8-bit error against
-the CPU reference at 64 samples per pixel (the converged image); **topology mismatches** =
-pixels whose node, checker cell or lit lights differ from the CPU reference at the same
-sample count, outside its ambiguous pixels.
+warm-up dispatch of each kernel; CPU reference: wall time, all cores, BVH build included;
+Embree: tracing and shading wall time, all cores, its BVH build excluded), median and best of
+the rounds; **frame ms** = median wall time of the whole frame in-process (planning, upload,
+render, read back); **vs hand-written** / **vs Embree** = this row's Mpix/s over the
+hand-written kernel's / the faster Embree mode's at the same scene and sample count;
+**primary tests/px**, **shadow rays/px**, **shadow tests/px** = what the row's generated kernel
+runs per pixel on average (lavapipe runs every test a straight-line kernel contains, whatever
+the pixel): camera-ray node tests, lights with a shadow test, and shadow node tests;
+**sampling error** = 8-bit RMSE against the CPU reference at 64 samples per pixel (the
+converged image): at 1 spp almost all of it is aliasing, the same for every backend;
+**precision error** = 8-bit RMSE (and the share of pixels more than one level off) against the
+CPU reference at the **same** sample count, on the pixels whose decisions it calls clear of
+rounding: what the backend's arithmetic costs; **topology mismatches** = pixels whose node,
+checker cell or lit lights differ from that reference, outside its ambiguous pixels.
+
+## Targets
+
+Each performance target of the current issues against this run's figures
+(\`ci/performance-targets.py docs/performance.csv\`):
+
+$targets
 
 ![Speed against error; speed and cost per pixel against the number of spheres](performance.png)
 
 ## Demo scene, 1920×1080
 
+\`hexray bench scenes/lecture-demo.json --width 1920 --height 1080\`
+
 $bench_demo
 
 ## spheres-and-lights, 960×540
+
+\`hexray bench scenes/spheres-and-lights.json --width 960 --height 540\`
 
 $bench_spheres
 
@@ -99,12 +131,12 @@ $bench_spheres
 grows as √N (the density stays the same), two lights, camera looking down over it. Before
 the rounds, each backend renders every N once at a fraction of the resolution; a backend
 whose full frame that predicts to exceed \`--max-frame-seconds\` (30) is not measured at that
-N (the notes under the table say which). **core-ns per pixel** = render time × threads /
-pixels: with log N traversal it grows by a constant step per decade of N. **vs Embree** =
-this row's Mpix/s over Embree's at the same N (above 1: faster than Embree). The error
-columns here are against the CPU reference at the **same** sample count (1 spp), not a
-converged one (which at 100k spheres would take longer than the whole report), so the
-cpu-reference rows read 0 by construction.
+N (the notes under the table say which). **host plan ms** = the GPU's planning (the structures
+it builds on the host for the scene, such as its BVH), **upload ms** = packing and uploading
+them: both are in frame ms, not in the render time. **core-ns per pixel** = render time ×
+threads / pixels. **vs Embree** = this row's Mpix/s over the faster Embree mode's at the same N
+(above 1: faster than Embree). The error columns here are against the CPU reference at the same
+sample count (1 spp), so the cpu-reference rows read 0 by construction.
 
 $bench_curve
 
@@ -113,10 +145,15 @@ $bench_curve
 \`hexray render scenes/lecture-demo.json --backend gpu --width 1920 --height 1080 -o demo.png\`, from exec
 to exit, seven interleaved runs (median; all runs in ms):
 
-| Mesa shader cache | median ms | runs |
+| caches | median ms | runs |
 |---|---:|---|
-| warm | $(median "${warm[@]}") | ${warm[*]} |
-| cold (\`MESA_SHADER_CACHE_DISABLE=true\`) | $(median "${cold[@]}") | ${cold[*]} |
+| warm (hexray's kernel cache and Mesa's shader cache filled) | $(median "${warm[@]}") | ${warm[*]} |
+| cold driver (\`MESA_SHADER_CACHE_DISABLE=true\`; the kernel's SPIR-V cached) | $(median "${cold[@]}") | ${cold[*]} |
+| a scene never seen (an empty kernel cache, Mesa's disabled: glslang and the driver compile) | $(median "${new[@]}") | ${new[*]} |
+
+## Many scenes in one process
+
+$batch
 HEADER
 } > docs/performance.md
 echo "wrote docs/performance.md, docs/performance.csv, docs/performance.png"

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Speed against error, from `hexray bench --csv`: one panel per scene, time per frame
-(median, log scale) against RMSE to the converged reference (levels), with the
-non-dominated configurations joined as the Pareto frontier. Rows of the sphere curve
+(median, log scale) against the precision error (RMSE against the CPU reference at the same
+sample count, unambiguous pixels, levels), with the non-dominated configurations joined as the
+Pareto frontier. Rows of the sphere curve
 (`--spheres`, the `spheres` column set) get two panels of their own: Mpix/s against the
 sphere count (log-log), and core-ns per pixel against it (log x, so cost growing like log N
 shows as a straight line).
@@ -30,10 +31,12 @@ def pareto_panel(axis, scene, rows):
     points = []
     for row in rows:
         time = float(row["median_render_ms"])
-        error = float(row["rmse_levels"])
-        label = f'{row["backend"]} {row["precision"]} {row["spp"]}spp'
+        error = float(row["precision_rmse_levels"])
+        culled = " culled" if row["culling"] == "on" else ""
+        label = f'{row["backend"]} {row["precision"]}{culled} {row["spp"]}spp'
         points.append((time, error, label))
-        marker = {"cpu-reference": "s", "embree": "^"}.get(row["backend"], "D" if "hand-written" in row["backend"] else "o")
+        marker = "s" if row["backend"] == "cpu-reference" else "^" if row["backend"].startswith("embree") else (
+            "D" if "hand-written" in row["backend"] else "o")
         axis.scatter(time, error, marker=marker)
         axis.annotate(label, (time, error), fontsize=7, xytext=(4, 3), textcoords="offset points")
     frontier = pareto(points)
@@ -41,7 +44,8 @@ def pareto_panel(axis, scene, rows):
     axis.set_title(f'{scene} ({rows[0]["width"]}x{rows[0]["height"]})')
     axis.set_xscale("log")
     axis.set_xlabel("render time per frame, ms (median)")
-    axis.set_ylabel("RMSE against the converged reference, 8-bit levels")
+    axis.set_yscale("symlog", linthresh=0.01)
+    axis.set_ylabel("precision error: RMSE against the CPU reference, same spp, 8-bit levels")
     axis.grid(True, which="both", linewidth=0.3)
     axis.legend(fontsize=8)
 

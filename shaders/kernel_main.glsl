@@ -13,6 +13,12 @@
 #include "scene_data.glsl"
 #include "surface.glsl"
 
+// The background colour: a generated kernel has it as a specialization constant, and then a tile
+// of sky compiles to a constant store.
+#ifndef SCENE_BACKGROUND
+#define SCENE_BACKGROUND frame.background.rgb
+#endif
+
 Hit findNearestHit(Ray ray);
 // The colour of a hit and its pixel-class flags (ODD_CHECKER_BIT, a bit per lit light).
 vec3 shade(Ray ray, Hit hit, out uint flags);
@@ -49,7 +55,7 @@ void traceMain() {
             traceSurface(hitSurface(ray, hit), nodes[hit.node].color1.rgb);
         }
         uint flags = 0u;
-        vec3 color = hit.node == NO_NODE ? frame.background.rgb : shade(ray, hit, flags);
+        vec3 color = hit.node == NO_NODE ? SCENE_BACKGROUND : shade(ray, hit, flags);
         sum += color;
         if (traceActive) {
             trace.header.rayOrigin.xyz = ray.origin;
@@ -73,8 +79,8 @@ void main() {
         traceMain();
         return;
     }
-    uvec2 bandPixel = gl_GlobalInvocationID.xy;
-    if (bandPixel.x >= frame.imageSize.x || bandPixel.y >= band.rowCount) {
+    uvec2 pixel = bandPixel();
+    if (pixel.x >= frame.imageSize.x || pixel.y >= band.rowCount) {
         return;
     }
     // The pixel is classified by its first sample (as the CPU reference does).
@@ -84,14 +90,14 @@ void main() {
     Hit firstHit;
     vec3 sum = vec3(0.0);
     for (uint sampleIndex = 0u; sampleIndex < SAMPLES_PER_PIXEL; ++sampleIndex) {
-        Ray ray = primaryRay(uvec2(bandPixel.x, band.firstRow + bandPixel.y), sampleIndex);
+        Ray ray = primaryRay(uvec2(pixel.x, band.firstRow + pixel.y), sampleIndex);
         Hit hit = findNearestHit(ray);
         uint sampleFlags = 0u;
         // Shaded whatever the hit: lavapipe runs both sides of a branch anyway, and a select
         // costs it less than the branch's bookkeeping.
         vec3 shaded = shade(ray, hit, sampleFlags);
         bool background = hit.node == NO_NODE;
-        sum += background ? frame.background.rgb : shaded;
+        sum += background ? SCENE_BACKGROUND : shaded;
         if (sampleIndex == 0u) {
             node = hit.node;
             flags = background ? 0u : sampleFlags;
@@ -100,7 +106,7 @@ void main() {
         }
     }
     vec3 color = sum / float(SAMPLES_PER_PIXEL);
-    uint index = bandPixel.y * frame.imageSize.x + bandPixel.x;
+    uint index = pixel.y * frame.imageSize.x + pixel.x;
     if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
         pixels[index] = vec4(color, 1.0);
         classes[index] = uvec2(node, flags);

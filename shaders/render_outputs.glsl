@@ -28,6 +28,24 @@ layout(std430, set = 0, binding = ENCODED_BINDING) writeonly buffer EncodedBlock
 layout(push_constant) uniform BandBlock {
     uint firstRow;
     uint rowCount;
+    uint firstTile;
+    uint unused;
 } band;
+
+// The pixel of the band this invocation renders: one workgroup per WORKGROUP_SIZE^2 tile, all the
+// band's tiles in a grid, or (a tile class's kernel, HEXRAY_TILE_LIST) the class's tiles, listed.
+#ifdef HEXRAY_TILE_LIST
+layout(std430, set = 0, binding = TILE_BINDING) readonly buffer TileBlock {
+    uvec2 tiles[];  // (column, row) of tiles in the band
+};
+
+uvec2 bandPixel() {
+    return tiles[band.firstTile + gl_WorkGroupID.x] * WORKGROUP_SIZE + gl_LocalInvocationID.xy;
+}
+#else
+uvec2 bandPixel() {
+    return gl_GlobalInvocationID.xy;
+}
+#endif
 
 #endif  // HEXRAY_RENDER_OUTPUTS_GLSL

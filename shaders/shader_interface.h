@@ -28,7 +28,8 @@ HEXRAY_CONSTANT uint BVH_BINDING = 6u;      // BVH scenes: the tree's nodes
 HEXRAY_CONSTANT uint PRIMITIVE_BINDING = 7u;  // BVH scenes: planes, then spheres in leaf order
 HEXRAY_CONSTANT uint AOV_BINDING = 8u;      // inspection: per-pixel depth and normal
 HEXRAY_CONSTANT uint TRACE_BINDING = 9u;    // inspection: one pixel explained
-HEXRAY_CONSTANT uint BINDING_COUNT = 10u;
+HEXRAY_CONSTANT uint TILE_BINDING = 10u;    // a tile class's kernel: the tiles it renders
+HEXRAY_CONSTANT uint BINDING_COUNT = 11u;
 
 // Node kinds (GpuNode::kinds.x and .y).
 HEXRAY_CONSTANT uint GEOMETRY_PLANE = 0u;

@@ -33,11 +33,11 @@ float ballDistance(vec3 origin, vec3 direction) {
 }
 
 void main() {
-    uvec2 bandPixel = gl_GlobalInvocationID.xy;
-    if (bandPixel.x >= frame.imageSize.x || bandPixel.y >= band.rowCount) {
+    uvec2 pixel = bandPixel();
+    if (pixel.x >= frame.imageSize.x || pixel.y >= band.rowCount) {
         return;
     }
-    vec2 s = (vec2(bandPixel.x, band.firstRow + bandPixel.y) + frame.samplingOffset) / vec2(frame.imageSize);
+    vec2 s = (vec2(pixel.x, band.firstRow + pixel.y) + frame.samplingOffset) / vec2(frame.imageSize);
     vec3 d = normalize(frame.sheetTopLeft.xyz + frame.sheetRight.xyz * s.x + frame.sheetDown.xyz * s.y);
 
     float floorT = -EYE.y / d.y;
@@ -61,5 +61,5 @@ void main() {
     bool blocked = ballDistance(shadowOrigin, shadowPath / shadowLength) < shadowLength;
     float irradiance = AMBIENT + (cosTheta > 0.0 && !blocked ? LIGHT_INTENSITY * cosTheta / r2 : 0.0);
     vec3 color = t < FAR ? albedo * irradiance : vec3(0.0);
-    encodedPixels[bandPixel.y * frame.imageSize.x + bandPixel.x] = encode8(color);
+    encodedPixels[pixel.y * frame.imageSize.x + pixel.x] = encode8(color);
 }

@@ -49,7 +49,7 @@ RenderPlan lectureDemoCeilingPlan(const GpuRenderer& renderer, const Scene& scen
     if (!isLectureDemoScene(scene)) {
         throw std::invalid_argument("the lecture demo's hand-written kernel renders only that scene");
     }
-    RenderPlan plan = renderer.plan(scene, {Precision::F32});
+    RenderPlan plan = renderer.plan(scene, {Precision::F32, Acceleration::Auto, Culling::Off});
     // Its blocks are the uniform layout's, which the demo scene (2 nodes) is planned with.
     plan.kernel = Kernel{"lecture demo, hand-written", nullptr, kLectureDemoCeilingSpv};
     return plan;

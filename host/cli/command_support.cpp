@@ -62,6 +62,11 @@ int guarded(const std::function<int()>& command) {
 
 Scene loadScene(const std::string& path, const ImageOverride& image) {
     Scene scene = loadSceneFile(path);
+    applyImageOverride(scene, image);
+    return scene;
+}
+
+void applyImageOverride(Scene& scene, const ImageOverride& image) {
     if (image.width || image.height) {
         const char* source = !image.height ? "--width" : !image.width ? "--height" : "--width/--height";
         overrideImageSize(scene, image.width.value_or(scene.image.width), image.height.value_or(scene.image.height),
@@ -70,7 +75,6 @@ Scene loadScene(const std::string& path, const ImageOverride& image) {
     if (image.samplesPerPixel) {
         overrideSamplesPerPixel(scene, *image.samplesPerPixel, "--spp");
     }
-    return scene;
 }
 
 int withValidationVerdict(int commandCode, const ValidationLog& log) {

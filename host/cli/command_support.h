@@ -28,6 +28,9 @@ int guarded(const std::function<int()>& command);
 
 Scene loadScene(const std::string& path, const ImageOverride& image);
 
+// The command line's replacements for the scene's image size and samples, checked like the file's.
+void applyImageOverride(Scene& scene, const ImageOverride& image);
+
 // Validation messages fail the command: a tester's run must be clean, not merely finish.
 // `commandCode` wins when it is already a failure.
 int withValidationVerdict(int commandCode, const ValidationLog& log);

@@ -8,6 +8,7 @@
 
 #include "compare/compare.h"
 #include "gpu/precision.h"
+#include "gpu/render_plan.h"
 
 namespace hexray::cli {
 
@@ -44,6 +45,7 @@ struct RenderOptions {
     VulkanOptions vulkan;
     Backend backend = Backend::Auto;
     Precision precision = Precision::Auto;
+    Culling culling = Culling::Auto;
     std::string outputPath;  // empty: <scene name>.png in the current directory
     unsigned threads = 0;    // CPU backend; 0 = all cores
     std::string aovDirectory;  // empty: no AOVs (see image/aov.h)

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
     RenderOptions render;
     std::string renderBackend = "auto";
     std::string renderPrecision = "auto";
+    std::string renderCulling = "auto";
     CLI::App* renderCommand = app.add_subcommand("render", "Render a scene to a PNG image");
     renderCommand->add_option("scene", render.scenePath, "Scene file (JSON), see README.md")->required();
     renderCommand
@@ -112,6 +113,13 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
         ->capture_default_str();
     addPrecisionOption(*renderCommand, renderPrecision);
+    renderCommand
+        ->add_option("--culling", renderCulling,
+                     "GPU: render screen tiles with kernels that leave out the tests their rays cannot need "
+                     "(the same image): on, off, or auto (for renders of at least 32 million samples, where it "
+                     "repays compiling the extra kernels)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
     addImageOptions(*renderCommand, render.image);
     addDeviceOption(*renderCommand, render.vulkan);
     addThreadsOption(*renderCommand, render.threads, "CPU backend");
@@ -180,7 +188,8 @@ int main(int argc, char** argv) {
         "Measure speed against error: interleaved rounds of every backend, precision and sample count on each "
         "scene, against a converged CPU reference, and the scaling curve over random-sphere scenes; prints "
         "tables and optionally writes CSV");
-    benchCommand->add_option("scenes", bench.scenePaths, "Scene files");
+    benchCommand->add_option("scenes", bench.scenePaths,
+                             "Scene files (none, and no --spheres: the shipped demo scene, lecture-demo)");
     benchCommand->add_option("--spheres", bench.sphereCounts,
                              "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
                              "scene each, measured on every backend")
@@ -238,9 +247,6 @@ int main(int argc, char** argv) {
         if (cpuOnlyWithPrecision) {
             throw CLI::ValidationError("--precision", "applies to the GPU backend only");
         }
-        if (benchCommand->parsed() && bench.scenePaths.empty() && bench.sphereCounts.empty()) {
-            throw CLI::ValidationError("bench", "needs scene files, --spheres, or both");
-        }
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);
         return code == 0 ? kSuccess : kBadInput;
@@ -259,6 +265,7 @@ int main(int argc, char** argv) {
         render.vulkan.validate = validate;
         render.backend = renderBackend == "cpu" ? Backend::Cpu : renderBackend == "gpu" ? Backend::Gpu : Backend::Auto;
         render.precision = *parsePrecision(renderPrecision);
+        render.culling = renderCulling == "on" ? Culling::On : renderCulling == "off" ? Culling::Off : Culling::Auto;
         return runRender(render);
     }
     if (compareCommand->parsed()) {

@@ -13,6 +13,7 @@
 #include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "gpu/shader_compiler.h"
 #include "image/aov.h"
 #include "image/image_io.h"
 #include "io/output_plan.h"
@@ -51,12 +52,15 @@ private:
 };
 
 // "generated for the scene, written in 0.12 ms, glslang 9.8 ms", for the summary line.
-std::string describeKernel(const Kernel& kernel, const KernelBuild& build) {
-    if (!kernel.code) {
-        return kernel.name + " (prebuilt)";
+std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
+    if (!plan.kernel.code) {
+        return plan.kernel.name + " (prebuilt)";
     }
+    const std::size_t classes = plan.tileClasses.kernels.size();
+    const std::string name = classes ? "generated for each of " + std::to_string(classes) + " tile classes"
+                                     : plan.kernel.name;
     char text[160];
-    std::snprintf(text, sizeof text, "%s, written in %.2f ms, %s", kernel.name.c_str(), build.generateMilliseconds,
+    std::snprintf(text, sizeof text, "%s, written in %.2f ms, %s", name.c_str(), build.generateMilliseconds,
                   build.fromDiskCache ? "SPIR-V from the kernel cache" : "");
     std::string description = text;
     if (!build.fromDiskCache) {
@@ -74,12 +78,17 @@ AovLayout aovLayout(const Scene& scene) {
 // by band too. Returns how, for the summary line.
 std::string renderOnGpu(const RenderOptions& options, const Scene& scene, ValidationLog& log, PngRowWriter& writer,
                         std::optional<StagedAovs>& aovs) {
+    // glslang sets itself up while the Vulkan instance and device are created.
+    std::optional<ShaderCompilerWarmUp> compilerWarmUp;
+    if (isSmallScene(scene)) {
+        compilerWarmUp.emplace();
+    }
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
     Progress progress(scene.image.height);
     // Rows go from the device to the PNG encoder band by band: a 16384 x 16384 image never
     // sits whole in memory.
-    const RenderPlan plan = renderer.plan(scene, {options.precision});
+    const RenderPlan plan = renderer.plan(scene, {options.precision, Acceleration::Auto, options.culling});
     for (const std::string& warning : plan.warnings) {
         std::fprintf(stderr, "hexray: warning: %s\n", warning.c_str());
     }
@@ -93,7 +102,7 @@ std::string renderOnGpu(const RenderOptions& options, const Scene& scene, Valida
                   "compile",
                   std::string(precisionName(result.precision)).c_str(), context.selected().name.c_str(),
                   result.timing.renderMilliseconds, result.timing.fromTimestamps ? "" : " (wall clock)",
-                  describeKernel(plan.kernel, result.timing.kernel).c_str(), result.timing.firstDispatchMilliseconds);
+                  describeKernel(plan, result.timing.kernel).c_str(), result.timing.firstDispatchMilliseconds);
     if (!options.aovDirectory.empty()) {
         // A second pass in the shader's AOV mode, so that the image is the one a render
         // without --aov writes (encoded on the device). Its rows come back as floats: smaller bands.

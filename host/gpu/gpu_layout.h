@@ -75,6 +75,8 @@ struct alignas(4 * sizeof(Real)) GpuBvhNode {
 struct GpuBand {
     std::uint32_t firstRow;
     std::uint32_t rowCount;
+    std::uint32_t firstTile;  // a tile class's kernel: where its tiles start in the tile buffer
+    std::uint32_t unused;
 };
 
 // One output pixel: linear RGB in .rgb, .a unused.
@@ -217,7 +219,7 @@ static_assert(offsetof(GpuTraceEntry<double>, color) == 32);
 static_assert(offsetof(GpuTraceEntry<double>, status) == 48);
 static_assert(sizeof(GpuTraceEntry<double>) == 64);
 
-static_assert(sizeof(GpuBand) == 8);
+static_assert(sizeof(GpuBand) == 16);
 static_assert(sizeof(GpuPixel) == 16);
 static_assert(sizeof(GpuPixelClass) == 8);
 

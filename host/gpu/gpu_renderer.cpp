@@ -15,6 +15,7 @@
 #include "gpu/gpu_layout.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/scene_constants.h"
+#include "gpu/tile_classes.h"
 #include "util/milliseconds_since.h"
 #include "vulkan/host_visible_buffer.h"
 
@@ -382,6 +383,45 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan
     return trace;
 }
 
+namespace {
+
+// One dispatch of a band: which pipeline, the push constants, and its workgroups.
+struct Dispatch {
+    const vk::raii::Pipeline* pipeline;
+    GpuBand band;
+    std::uint32_t groupsX;
+    std::uint32_t groupsY;
+};
+
+// Each tile class's tiles in the rows [firstRow, firstRow + rows), band-relative, one class after
+// the other; `firsts[c]` is where class c's start and `counts[c]` how many it has.
+struct BandTiles {
+    std::vector<glm::uvec2> tiles;
+    std::vector<std::uint32_t> firsts;
+    std::vector<std::uint32_t> counts;
+};
+
+BandTiles bandTiles(const TileClassification& classification, std::uint32_t firstRow, std::uint32_t rows) {
+    const std::uint32_t firstTileRow = firstRow / WORKGROUP_SIZE;
+    const std::uint32_t tileRows = groupsFor(rows);
+    std::vector<std::vector<glm::uvec2>> byClass(classification.classes.size());
+    for (std::uint32_t y = 0; y < tileRows; ++y) {
+        for (std::uint32_t x = 0; x < classification.tilesX; ++x) {
+            const std::uint32_t tile = (firstTileRow + y) * classification.tilesX + x;
+            byClass[classification.classOfTile[tile]].emplace_back(x, y);
+        }
+    }
+    BandTiles band;
+    for (const std::vector<glm::uvec2>& tiles : byClass) {
+        band.firsts.push_back(std::uint32_t(band.tiles.size()));
+        band.counts.push_back(std::uint32_t(tiles.size()));
+        band.tiles.insert(band.tiles.end(), tiles.begin(), tiles.end());
+    }
+    return band;
+}
+
+}  // namespace
+
 void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
                               const std::function<void(const Band&)>& consume,
                               std::span<const std::byte> traceRequest) {
@@ -389,6 +429,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
     const bool linear = output != GpuOutput::Encoded8 && !tracing;
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
+    const auto uploadStart = std::chrono::steady_clock::now();
     const PackedScene packed = packFor(scene, plan);
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     result.precision = plan.precision;
@@ -396,19 +437,32 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
 
     const vk::raii::Device& device = context_.device();
     const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
-    const std::span<const std::uint32_t> spirv = kernels_.spirv(plan.kernel, &result.timing.kernel);
-    const vk::raii::Pipeline& computePipeline =
-        pipeline(spirv, plan.layout, specialization, packed.constants, packed.constantSizes);
+    // The kernels: the plan's, or (culling, not for a traced pixel) one per tile class.
+    const TileClassification* classification = tracing ? nullptr : plan.tileClasses.classification.get();
+    const std::span<const Kernel> kernels = classification ? std::span<const Kernel>(plan.tileClasses.kernels)
+                                                           : std::span<const Kernel>(&plan.kernel, 1);
+    std::vector<const vk::raii::Pipeline*> pipelines;
+    for (const Kernel& kernel : kernels) {
+        KernelBuild build;
+        const std::span<const std::uint32_t> spirv = kernels_.spirv(kernel, &build);
+        result.timing.kernel.generateMilliseconds += build.generateMilliseconds;
+        result.timing.kernel.compileMilliseconds += build.compileMilliseconds;
+        result.timing.kernel.fromDiskCache = build.fromDiskCache;
+        pipelines.push_back(&pipeline(spirv, plan.layout, specialization, packed.constants, packed.constantSizes));
+    }
     const SceneBindings& sceneBindings = bindings(plan.layout);
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
 
-    // Large images render in bands of rows so the pixel buffer stays within the device's limit.
+    // Large images render in bands of rows so the pixel buffer stays within the device's limit; a
+    // band is whole rows of tiles.
     const vk::DeviceSize rowBytes = vk::DeviceSize{width} * sizeof(GpuPixel);
     const vk::DeviceSize bandBytes =
         std::min<vk::DeviceSize>(physicalDevice.getProperties().limits.maxStorageBufferRange, maxBandBytes_);
-    const std::uint32_t rowsPerBand = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
+    const std::uint32_t fitting = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
+    const std::uint32_t rowsPerBand = fitting >= height ? height : std::max(WORKGROUP_SIZE, fitting / WORKGROUP_SIZE * WORKGROUP_SIZE);
     const std::size_t bandPixels = std::size_t(rowsPerBand) * width;
+    const std::size_t bandTileCount = std::size_t(groupsFor(width)) * groupsFor(rowsPerBand);
 
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
     const vk::BufferUsageFlags sceneUsage = uniformScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
@@ -427,11 +481,14 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     }
     HostVisibleBuffer bvhBuffer(device, physicalDevice, packed.bvhNodes.size(), storage);
     HostVisibleBuffer primitiveBuffer(device, physicalDevice, packed.primitives.size(), storage);
+    HostVisibleBuffer tileBuffer(device, physicalDevice, classification ? bandTileCount * sizeof(glm::uvec2) : 0,
+                                 storage);
     frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
     bvhBuffer.upload(std::span(packed.bvhNodes));
     primitiveBuffer.upload(std::span(packed.primitives));
+    result.timing.uploadMilliseconds = millisecondsSince(uploadStart);
 
     const std::array<vk::DescriptorPoolSize, 2> poolSizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, gpu::BINDING_COUNT),
@@ -442,9 +499,9 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
     const vk::raii::DescriptorSet& set = sets[0];
     // In binding order (shader_interface.h).
-    const std::array<const HostVisibleBuffer*, gpu::BINDING_COUNT> buffers = {
-        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
-        &encodedBuffer, &bvhBuffer, &primitiveBuffer, &aovBuffer, &traceBuffer};
+    const std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> buffers = {
+        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer, &encodedBuffer,
+        &bvhBuffer,   &primitiveBuffer, &aovBuffer, &traceBuffer, &tileBuffer};
     for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
         const vk::DescriptorBufferInfo info(*buffers[binding]->buffer(), 0, buffers[binding]->size());
         device.updateDescriptorSets(
@@ -458,8 +515,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     // Destroyed first when a hang unwinds this scope: the hung dispatch may still be using the
     // objects above, so they are leaked with the device instead (VulkanContext::abandoned()).
     const LeakIfAbandoned leakIfAbandoned{context_, [&] {
-        for (HostVisibleBuffer* buffer : {&frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer,
-                                          &encodedBuffer, &aovBuffer, &traceBuffer, &bvhBuffer, &primitiveBuffer}) {
+        for (HostVisibleBuffer* buffer : buffers) {
             buffer->abandon();
         }
         sets[0].release();
@@ -468,8 +524,8 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
         done.release();
     }};
 
-    // Records, submits and waits for one dispatch; returns its duration in milliseconds.
-    const auto runDispatch = [&](GpuBand band, std::uint32_t groupsX, std::uint32_t groupsY, bool timed) {
+    // Records, submits and waits for a band's dispatches; returns their duration in milliseconds.
+    const auto run = [&](std::span<const Dispatch> dispatches, bool timed) {
         const bool useTimestamps = timed && *timestamps_;
         commands.reset();
         commands.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
@@ -477,10 +533,23 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
             commands.resetQueryPool(*timestamps_, 0, 2);
             commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
         }
-        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *computePipeline);
         commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *sceneBindings.pipelineLayout, 0, *set, nullptr);
-        commands.pushConstants<GpuBand>(*sceneBindings.pipelineLayout, vk::ShaderStageFlagBits::eCompute, 0, band);
-        commands.dispatch(groupsX, groupsY, 1);
+        std::uint64_t samples = 0;
+        for (std::size_t i = 0; i < dispatches.size(); ++i) {
+            const Dispatch& dispatch = dispatches[i];
+            if (i > 0) {
+                // The classes write different pixels of the same buffers: ordered all the same.
+                const vk::MemoryBarrier between(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderWrite);
+                commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                                         vk::PipelineStageFlagBits::eComputeShader, {}, between, nullptr, nullptr);
+            }
+            commands.bindPipeline(vk::PipelineBindPoint::eCompute, **dispatch.pipeline);
+            commands.pushConstants<GpuBand>(*sceneBindings.pipelineLayout, vk::ShaderStageFlagBits::eCompute, 0,
+                                            dispatch.band);
+            commands.dispatch(dispatch.groupsX, dispatch.groupsY, 1);
+            samples += std::uint64_t(dispatch.groupsX) * dispatch.groupsY * WORKGROUP_SIZE * WORKGROUP_SIZE *
+                       scene.image.samplesPerPixel;
+        }
         if (useTimestamps) {
             commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
         }
@@ -491,35 +560,56 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
         commands.end();
 
         const auto start = std::chrono::steady_clock::now();
-        const std::uint64_t samples = std::uint64_t(groupsX) * groupsY * WORKGROUP_SIZE * WORKGROUP_SIZE *
-                                      scene.image.samplesPerPixel;
         context_.submitAndWait(commands, done, dispatchTimeout(scene, samples));  // throws VulkanError
         device.resetFences(*done);
         const double wallMilliseconds = millisecondsSince(start);
         if (!useTimestamps) {
             return wallMilliseconds;
         }
-        const auto [result, ticks] = timestamps_.getResults<std::uint64_t>(
+        const auto [status, ticks] = timestamps_.getResults<std::uint64_t>(
             0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         return double((ticks[1] - ticks[0]) & timestampMask_) * nanosecondsPerTick_ * 1e-6;
+    };
+
+    // The dispatches of the band [firstRow, firstRow + rows): the whole grid of tiles, or each
+    // tile class's listed tiles with its kernel (the lists uploaded here).
+    const auto bandDispatches = [&](std::uint32_t firstRow, std::uint32_t rows) {
+        std::vector<Dispatch> dispatches;
+        if (!classification) {
+            dispatches.push_back({pipelines[0], GpuBand{firstRow, rows, 0, 0}, groupsFor(width), groupsFor(rows)});
+            return dispatches;
+        }
+        const BandTiles tiles = bandTiles(*classification, firstRow, rows);
+        tileBuffer.upload(std::as_bytes(std::span(tiles.tiles)));
+        for (std::size_t c = 0; c < pipelines.size(); ++c) {
+            if (tiles.counts[c] > 0) {
+                dispatches.push_back({pipelines[c], GpuBand{firstRow, rows, tiles.firsts[c], 0}, tiles.counts[c], 1});
+            }
+        }
+        return dispatches;
     };
 
     GpuTiming& timing = result.timing;
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
     if (tracing) {
         // One invocation does the work; the pixel is in the request, not in the dispatch.
-        timing.renderMilliseconds = runDispatch(GpuBand{0, 1}, 1, 1, false);
+        const Dispatch trace{pipelines[0], GpuBand{0, 1, 0, 0}, 1, 1};
+        timing.renderMilliseconds = run(std::span(&trace, 1), false);
         consume(Band{0, 0, nullptr, nullptr, nullptr, nullptr, traceBuffer.data()});
         return;
     }
-    // Warm-up: one workgroup, so the driver's shader compile (lavapipe JITs at the first
-    // dispatch) is not counted as render time.
-    timing.firstDispatchMilliseconds = runDispatch(GpuBand{0, std::min(rowsPerBand, WORKGROUP_SIZE)}, 1, 1, false);
+    // Warm-up: one workgroup of each kernel, so the driver's compile of it (lavapipe JITs at the
+    // first dispatch) is not counted as render time.
+    std::vector<Dispatch> warmUp = bandDispatches(0, std::min(rowsPerBand, height));
+    for (Dispatch& dispatch : warmUp) {
+        dispatch.groupsX = dispatch.groupsY = 1;
+    }
+    timing.firstDispatchMilliseconds = run(warmUp, false);
 
     for (std::uint32_t firstRow = 0; firstRow < height; firstRow += rowsPerBand) {
         const std::uint32_t rows = std::min(rowsPerBand, height - firstRow);
-        timing.renderMilliseconds += runDispatch(GpuBand{firstRow, rows}, groupsFor(width), groupsFor(rows), true);
+        timing.renderMilliseconds += run(bandDispatches(firstRow, rows), true);
         consume(Band{firstRow, rows, reinterpret_cast<const GpuPixel*>(pixelBuffer.data()),
                      reinterpret_cast<const GpuPixelClass*>(classBuffer.data()),
                      reinterpret_cast<const gpu::GpuEncodedPixel*>(encodedBuffer.data()),

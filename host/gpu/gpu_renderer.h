@@ -25,6 +25,7 @@ struct GpuTiming {
     double renderMilliseconds = 0;         // all bands, measured after the warm-up dispatch
     double firstDispatchMilliseconds = 0;  // the warm-up: includes the driver's compile (lavapipe's JIT)
     bool fromTimestamps = false;           // false: host wall time (no timestamp support)
+    double uploadMilliseconds = 0;         // packing the scene and uploading it (and its BVH) to the device
     KernelBuild kernel;                    // generating and compiling the kernel (when not yet built)
 };
 

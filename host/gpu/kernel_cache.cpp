@@ -99,7 +99,11 @@ void KernelCache::store(const std::string& key, std::span<const std::uint32_t> s
     std::error_code error;
     fs::create_directories(directory_, error);
     const fs::path target = fileFor(key);
-    std::string temporary = (directory_ / ("." + target.filename().string() + ".XXXXXX")).string();
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about "." + string + "...".
+    std::string name = ".";
+    name += target.filename().string();
+    name += ".XXXXXX";
+    std::string temporary = (directory_ / name).string();
     const int fd = ::mkstemp(temporary.data());
     if (fd < 0) {
         return;  // an unwritable cache is no cache

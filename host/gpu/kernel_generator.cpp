@@ -78,8 +78,9 @@ private:
         }
         return set;
     }
-    NodeSet all() const { return where([](const NodeCode&) { return true; }); }
-    NodeSet lit() const { return where([](const NodeCode& n) { return n.shader != gpu::SHADER_CONSTANT; }); }
+    // The nodes camera rays test: every node, but in a kernel for a tile class.
+    NodeSet all() const { return where([](const NodeCode& n) { return n.cameraTested; }); }
+    NodeSet lit() const { return all() & where([](const NodeCode& n) { return n.shader != gpu::SHADER_CONSTANT; }); }
     NodeSet planes(NodeSet within) const {
         return within & where([](const NodeCode& n) { return n.geometry == gpu::GEOMETRY_PLANE; });
     }
@@ -89,7 +90,7 @@ private:
                });
     }
     NodeSet shaded(std::uint32_t shader) const {
-        return where([shader](const NodeCode& n) { return n.shader == shader; });
+        return all() & where([shader](const NodeCode& n) { return n.shader == shader; });
     }
     bool textbook() const { return code_.formulation == Formulation::Textbook; }
 
@@ -123,6 +124,9 @@ private:
         if (code_.eyeAtOrigin) {
             out_ << "#define HEXRAY_EYE_AT_ORIGIN\n";
         }
+        if (code_.tileList) {
+            out_ << "#define HEXRAY_TILE_LIST\n";
+        }
         out_ << "#include \"checker.glsl\"\n"
                 "#include \"intersect.glsl\"\n"
                 "#include \"lighting.glsl\"\n"
@@ -151,7 +155,7 @@ private:
             const std::string vector = "vec" + std::to_string(constant.components) + (constant.real ? "r" : "");
             out_ << "#define " << constant.name << " " << vector << "(" << parts << ")\n";
         }
-        out_ << "\n";
+        out_ << "#define SCENE_BACKGROUND BACKGROUND_COLOR\n\n";
     }
 
     // The distance along a camera ray to node i, as an expression.
@@ -175,6 +179,9 @@ private:
         out_ << "Hit findNearestHit(Ray ray) {\n"
                 "    Hit hit = Hit(NO_HIT, NO_NODE);\n";
         for (std::uint32_t i = 0; i < code_.nodes.size(); ++i) {
+            if (!code_.nodes[i].cameraTested) {
+                continue;
+            }
             // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
             out_ << "    real t" << i << " = " << cameraDistance(i) << ";\n"
                  << "    hit = t" << i << " < hit.t ? Hit(t" << i << ", " << u(i) << ") : hit;\n";
@@ -186,7 +193,9 @@ private:
         out_ << "real candidateDistance(Ray ray, uint node) {\n"
                 "    switch (node) {\n";
         for (std::uint32_t i = 0; i < code_.nodes.size(); ++i) {
-            out_ << "    case " << u(i) << ": return " << cameraDistance(i) << ";\n";
+            if (code_.nodes[i].cameraTested) {
+                out_ << "    case " << u(i) << ": return " << cameraDistance(i) << ";\n";
+            }
         }
         out_ << "    }\n"
                 "    return NO_HIT;\n}\n\n";
@@ -278,6 +287,9 @@ private:
              << ");\n"
                 "        bool shadowed = false;\n";
         for (const ShadowTest& test : code_.shadowTests[light]) {
+            if (!test.tested) {
+                continue;
+            }
             const std::string name = "blockedBy" + std::to_string(test.node);
             out_ << "        bool " << name << " = " << shadowTest(light, test) << ";\n";
             // A sphere the camera sees from outside cannot shadow its own visible points.

@@ -9,6 +9,7 @@
 
 #include "camera/camera.h"
 #include "gpu/prebuilt_kernels.h"
+#include "gpu/tile_classes.h"
 #include "shader_interface.h"
 #include "vulkan/vulkan_context.h"
 
@@ -28,6 +29,12 @@ namespace {
 constexpr double kFastMinOutside = 1.25;
 constexpr double kFastMaxInside = 0.5;
 constexpr double kFastMaxShadowOutside = 32.0;
+// Culling: at most this many tile classes, each a kernel that glslang and the driver compile
+// (cached on disk by both). Auto culls only renders of at least kCullingMinSamples samples: on
+// lavapipe a class kernel's compile costs about as much as culling saves on 5 to 50 million samples
+// (warm or cold driver cache), so a single frame of ordinary size renders faster whole.
+constexpr std::size_t kMaxTileClasses = 12;
+constexpr std::uint64_t kCullingMinSamples = std::uint64_t{32} << 20;
 
 // How a ray from `origin`, the same for every pixel (the eye, or a light), meets the sphere.
 SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formulation formulation, double maxOutside) {
@@ -114,6 +121,37 @@ SceneLayout chooseLayout(const Scene& scene, Acceleration acceleration, const De
     return isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
 }
 
+// Textbook kernels are never culled: they show what a course's renderer does.
+bool cullingPays(const Scene& scene, const RenderPlan& plan, Culling culling) {
+    if (culling == Culling::Off || plan.formulation == Formulation::Textbook) {
+        return false;
+    }
+    const std::uint64_t samples =
+        std::uint64_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
+    return culling == Culling::On || samples >= kCullingMinSamples;
+}
+
+// A kernel per tile class; none when every tile needs the whole scene's work.
+TileClasses tileClassesFor(const Scene& scene, const SceneCode& code) {
+    auto classification = std::make_shared<TileClassification>(classifyTiles(scene, code, kMaxTileClasses));
+    TileClasses classes;
+    const bool culls = std::any_of(classification->classes.begin(), classification->classes.end(),
+                                   [&](const TileWork& work) { return workPerPixel(codeForClass(code, work)) !=
+                                                                      workPerPixel(code); });
+    if (!culls) {
+        return classes;
+    }
+    for (std::size_t c = 0; c < classification->classes.size(); ++c) {
+        SceneCode classCode = codeForClass(code, classification->classes[c]);
+        classCode.tileList = true;
+        classes.kernels.push_back(Kernel{"generated for tile class " + std::to_string(c + 1) + " of " +
+                                             std::to_string(classification->classes.size()),
+                                         std::make_shared<const SceneCode>(std::move(classCode)), {}});
+    }
+    classes.classification = std::move(classification);
+    return classes;
+}
+
 }  // namespace
 
 Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device,
@@ -172,7 +210,11 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         }
     }
     if (plan.layout == SceneLayout::Uniform) {
-        plan.kernel = Kernel{"generated for the scene", std::make_shared<const SceneCode>(sceneCodeFor(scene, plan)), {}};
+        const SceneCode code = sceneCodeFor(scene, plan);
+        plan.kernel = Kernel{"generated for the scene", std::make_shared<const SceneCode>(code), {}};
+        if (cullingPays(scene, plan, request.culling)) {
+            plan.tileClasses = tileClassesFor(scene, code);
+        }
     } else {
         const bool bvh = plan.layout == SceneLayout::StorageBvh;
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, bvh), nullptr,

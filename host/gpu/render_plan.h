@@ -61,6 +61,9 @@ struct NodeCode {
     // Spheres: the eye is outside, so a point the camera sees on it faces away from the sphere
     // and the sphere cannot shadow it (convexity); its shadow rays skip it.
     bool cameraOutside = false;
+    // Whether camera rays test it: false in a tile class none of whose rays can hit it
+    // (tile_classes.h); its values may still serve shadow tests.
+    bool cameraTested = true;
 };
 
 // One shadow test a light needs (generated kernels): whether `node` lies strictly between a lit
@@ -71,6 +74,9 @@ struct ShadowTest {
     std::uint32_t node = 0;
     SphereTest sphereTest = SphereTest::Robust;  // spheres only
     bool lightOutside = true;                    // spheres: the light lies outside the sphere
+    // False in a tile class no point of which it can shadow (tile_classes.h): the kernel leaves the
+    // test out, while its values stay among the specialization constants, the same for every class.
+    bool tested = true;
 };
 
 // A kernel written for one scene's structure (host/gpu/kernel_generator.h): the node tests
@@ -86,6 +92,7 @@ struct SceneCode {
     FloatWidth width = FloatWidth::F32;
     Formulation formulation = Formulation::Robust;
     bool eyeAtOrigin = true;  // camera-relative placement: camera rays start at exactly 0
+    bool tileList = false;    // a tile class's kernel: it renders the tiles listed for it
 };
 
 // The program a plan runs: GLSL written for the scene (compiled at run time and cached), or
@@ -103,10 +110,24 @@ struct DeviceAbilities {
     bool subgroupVote = false;   // subgroup vote and ballot in compute: BVH traversal
 };
 
+// Whether a generated kernel's tiles are classified by the work their rays can need, each class
+// rendered by a kernel with just that work (tile_classes.h). Auto: when the render is large enough
+// to repay the extra kernels' compile (render_plan.cpp).
+enum class Culling { Auto, On, Off };
+
 // What the caller asks for; planRender decides the rest.
 struct PlanRequest {
     Precision precision = Precision::Auto;
     Acceleration acceleration = Acceleration::Auto;  // BVH or not, for scenes too large for a generated kernel
+    Culling culling = Culling::Auto;
+};
+
+struct TileClassification;
+
+// A render by tile classes: which class each tile is in, and each class's kernel.
+struct TileClasses {
+    std::shared_ptr<const TileClassification> classification;
+    std::vector<Kernel> kernels;  // one per class
 };
 
 struct RenderPlan {
@@ -116,7 +137,8 @@ struct RenderPlan {
     Placement placement;
     SceneLayout layout = SceneLayout::Uniform;
     std::shared_ptr<const Bvh> bvh;  // StorageBvh only: the tree the kernel walks
-    Kernel kernel;
+    Kernel kernel;                   // for the whole image (and for a traced pixel)
+    TileClasses tileClasses;         // when culling: the kernels that render the image instead
     std::vector<std::string> warnings;  // what `render` tells the user: a precision overruled
 };
 

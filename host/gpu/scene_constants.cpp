@@ -63,6 +63,7 @@ std::vector<SceneConstant> sceneConstants(const SceneCode& code) {
         }
     }
     constants.push_back({Field::Ambient, 0, 0, 3, false, "AMBIENT"});
+    constants.push_back({Field::Background, 0, 0, 3, false, "BACKGROUND_COLOR"});
     return constants;
 }
 
@@ -84,6 +85,7 @@ std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& con
                     append<Real>(bytes, Real(lightNodePower(scene.lights[i], scene.nodes[constant.node])));
                     break;
                 case Field::Ambient: append<float>(bytes, scene.frame.ambient[c]); break;
+                case Field::Background: append<float>(bytes, scene.frame.background[c]); break;
             }
         }
     }

@@ -1,7 +1,7 @@
 #pragma once
 // The values a generated kernel takes as specialization constants (after the ones every kernel
 // takes, see shader_interface.h), in id order: each node's geometry and shader parameters, each
-// light's position and power, the ambient light, and for robust shadow tests the light's power
+// light's position and power, the ambient light and background, and for robust shadow tests the light's power
 // with respect to the sphere. lavapipe compiles a specialization constant in as a literal, where a
 // uniform-buffer value costs a load (about a fifth of the demo scene's frame). One list, read by
 // both the generator (declarations) and the renderer (values), so the two cannot disagree.
@@ -27,6 +27,7 @@ struct SceneConstant {
         LightPower,      // light .rgb: colour x intensity
         LightNodePower,  // light and sphere node: the light's power with respect to the sphere
         Ambient,         // .rgb
+        Background,      // .rgb
     };
     Field field;
     std::uint32_t index = 0;  // the node, or the light

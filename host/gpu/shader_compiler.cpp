@@ -63,6 +63,19 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& source, const
     return spirv;
 }
 
+ShaderCompilerWarmUp::ShaderCompilerWarmUp()
+    : thread_([] {
+          try {
+              compileComputeShader("#version 450\nlayout(local_size_x = 1) in;\nvoid main() {}\n", "warm-up");
+          } catch (const std::exception&) {
+              // Nothing is lost: the real compile reports its own problems.
+          }
+      }) {}
+
+ShaderCompilerWarmUp::~ShaderCompilerWarmUp() {
+    thread_.join();
+}
+
 const std::string& shaderCompilerFingerprint() {
     static const std::string fingerprint = [] {
         const glslang::Version version = glslang::GetVersion();

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace hexray {
@@ -18,6 +19,20 @@ public:
 // A compute shader's SPIR-V for Vulkan 1.1. Throws ShaderCompileError with glslang's log.
 // Thread-safe.
 std::vector<std::uint32_t> compileComputeShader(const std::string& source, const std::string& name);
+
+// Runs glslang's one-off set-up (its built-in symbol tables: tens of milliseconds, against a few for
+// each compile after it) on another thread while the caller goes on, e.g. to create the Vulkan
+// instance and device. Joined on destruction.
+class ShaderCompilerWarmUp {
+public:
+    ShaderCompilerWarmUp();
+    ~ShaderCompilerWarmUp();
+    ShaderCompilerWarmUp(const ShaderCompilerWarmUp&) = delete;
+    ShaderCompilerWarmUp& operator=(const ShaderCompilerWarmUp&) = delete;
+
+private:
+    std::thread thread_;
+};
 
 // Changes whenever the same source could compile to different SPIR-V: glslang's version and the
 // embedded library's text. Part of every kernel cache key.

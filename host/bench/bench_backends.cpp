@@ -1,0 +1,134 @@
+#include "bench/bench_backends.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+
+#include "bench/lecture_demo_ceiling.h"
+#include "cpu/cpu_renderer.h"
+#include "util/milliseconds_since.h"
+#ifdef HEXRAY_WITH_EMBREE
+#include "embree/embree_renderer.h"
+#endif
+
+namespace hexray {
+namespace {
+
+// The threads lavapipe renders with: Mesa's own override, else one per core.
+unsigned lavapipeThreads() {
+    if (const char* value = std::getenv("LP_NUM_THREADS")) {
+        return unsigned(std::max(1L, std::strtol(value, nullptr, 10)));
+    }
+    return cpuThreadCount(0);
+}
+
+}  // namespace
+
+#ifdef HEXRAY_WITH_EMBREE
+BenchBackends::BenchBackends(const VulkanContext::Options& vulkan)
+    : context_(vulkan), gpu_(context_), embree_(std::make_unique<EmbreeRenderer>(cpuThreadCount(0))) {
+#else
+BenchBackends::BenchBackends(const VulkanContext::Options& vulkan) : context_(vulkan), gpu_(context_) {
+#endif
+    isLavapipe_ = context_.selected().name.find("llvmpipe") != std::string::npos;
+    gpuName_ = isLavapipe_ ? "lavapipe" : context_.selected().name;
+}
+
+BenchBackends::~BenchBackends() = default;
+
+std::string BenchBackends::embreeVersion() const {
+#ifdef HEXRAY_WITH_EMBREE
+    return embree_->version();
+#else
+    return "";
+#endif
+}
+
+std::string BenchBackends::name(BenchBackend backend) const {
+    switch (backend) {
+        case BenchBackend::Gpu: return gpuName_;
+        case BenchBackend::GpuHandWritten: return gpuName_ + " hand-written";
+        case BenchBackend::Cpu: return "cpu-reference";
+        case BenchBackend::EmbreeSingle: return "embree single rays";
+        case BenchBackend::EmbreePackets: return "embree 8-ray packets";
+    }
+    return "";
+}
+
+unsigned BenchBackends::threads(BenchBackend backend) const {
+    switch (backend) {
+        case BenchBackend::Gpu:
+        case BenchBackend::GpuHandWritten: return isLavapipe_ ? lavapipeThreads() : 0;
+        case BenchBackend::Cpu:
+        case BenchBackend::EmbreeSingle:
+        case BenchBackend::EmbreePackets: return cpuThreadCount(0);
+    }
+    return 0;
+}
+
+void BenchBackends::measureGpu(const Scene& scene, const BenchConfiguration& configuration, bool withClasses,
+                               BenchMeasurement& measurement) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool handWritten = configuration.backend == BenchBackend::GpuHandWritten;
+    const RenderPlan plan = handWritten ? lectureDemoCeilingPlan(gpu_, scene)
+                                        : gpu_.plan(scene, {configuration.precision, Acceleration::Auto,
+                                                            configuration.culling});
+    measurement.planMilliseconds.push_back(millisecondsSince(start));
+    GpuRenderResult render = gpu_.render(scene, plan, GpuOutput::Encoded8);
+    measurement.renderMilliseconds.push_back(render.timing.renderMilliseconds);
+    measurement.frameMilliseconds.push_back(millisecondsSince(start));
+    measurement.uploadMilliseconds.push_back(render.timing.uploadMilliseconds);
+    measurement.encoded = std::move(render.encoded);
+    measurement.precision = plan.precision;
+    if (withClasses && !handWritten) {
+        measurement.classes = gpu_.render(scene, plan, GpuOutput::LinearAndClasses).classes;
+    }
+}
+
+void BenchBackends::measure(const Scene& scene, const BenchConfiguration& configuration, bool withClasses,
+                            BenchMeasurement& measurement) {
+    const auto start = std::chrono::steady_clock::now();
+    switch (configuration.backend) {
+        case BenchBackend::Gpu:
+        case BenchBackend::GpuHandWritten: measureGpu(scene, configuration, withClasses, measurement); return;
+        case BenchBackend::Cpu: {
+            CpuRender render = renderOnCpu(scene);
+            measurement.renderMilliseconds.push_back(millisecondsSince(start));
+            measurement.frameMilliseconds.push_back(measurement.renderMilliseconds.back());
+            measurement.image = std::move(render.image);
+            measurement.classes = std::move(render.classes);
+            measurement.margins = std::move(render.margins);
+            return;
+        }
+        case BenchBackend::EmbreeSingle:
+        case BenchBackend::EmbreePackets: {
+#ifdef HEXRAY_WITH_EMBREE
+            const EmbreeTracing tracing = configuration.backend == BenchBackend::EmbreeSingle
+                                              ? EmbreeTracing::SingleRays
+                                              : EmbreeTracing::Packets;
+            EmbreeRender render = embree_->render(scene, tracing);
+            measurement.renderMilliseconds.push_back(render.renderMilliseconds);
+            measurement.frameMilliseconds.push_back(millisecondsSince(start));
+            measurement.image = std::move(render.image);
+            measurement.classes = std::move(render.classes);
+#endif
+            return;
+        }
+    }
+}
+
+std::optional<WorkPerPixel> BenchBackends::work(const Scene& scene, const BenchConfiguration& configuration) const {
+    if (configuration.backend != BenchBackend::Gpu) {
+        return std::nullopt;
+    }
+    const RenderPlan plan = gpu_.plan(scene, {configuration.precision, Acceleration::Auto, configuration.culling});
+    if (!plan.kernel.code) {
+        return std::nullopt;
+    }
+    if (plan.tileClasses.classification) {
+        return workPerPixel(*plan.kernel.code, *plan.tileClasses.classification, scene.image);
+    }
+    return workPerPixel(*plan.kernel.code);
+}
+
+}  // namespace hexray

@@ -1,0 +1,92 @@
+#pragma once
+// What `hexray bench` measures: each backend it can time, rendering one scene once per call, and
+// what a render is timed and judged by. The renderers themselves are the project's own; the
+// bench's yardsticks (the hand-written kernel, Embree) live beside it.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gpu/gpu_renderer.h"
+#include "gpu/render_plan.h"
+#include "gpu/tile_classes.h"
+#include "image/image.h"
+#include "image/image_io.h"
+#include "image/pixel_class.h"
+#include "scene/scene.h"
+#include "vulkan/vulkan_context.h"
+
+namespace hexray {
+
+class EmbreeRenderer;
+
+enum class BenchBackend {
+    Gpu,             // the renderer, as planRender decides for a precision and culling
+    GpuHandWritten,  // the lecture demo's hand-written kernel (bench/lecture_demo_ceiling.h)
+    Cpu,             // the CPU reference
+    EmbreeSingle,    // Embree 3, one ray at a time
+    EmbreePackets,   // Embree 3, coherent 8-ray packets
+};
+
+// One thing to measure: a backend (with a precision and culling for the GPU) at a sample count on
+// one scene.
+struct BenchConfiguration {
+    std::size_t scene = 0;  // into the bench's scene list
+    BenchBackend backend = BenchBackend::Gpu;
+    Precision precision = Precision::Auto;
+    Culling culling = Culling::Off;
+    std::uint32_t samplesPerPixel = 1;
+};
+
+// Every render of one configuration.
+struct BenchMeasurement {
+    std::vector<double> renderMilliseconds;  // the backend's own timing of the render (see the report)
+    std::vector<double> frameMilliseconds;   // the whole frame in-process: planning, upload, render
+    std::vector<double> planMilliseconds;    // GPU: planning (structures it builds on the host: a BVH)
+    std::vector<double> uploadMilliseconds;  // GPU: packing and uploading the scene
+    Image image;                             // CPU reference and Embree: linear
+    Rgb8Image encoded;                       // GPU: the 8-bit output `render` writes
+    std::vector<PixelClass> classes;         // empty for the hand-written kernel, which writes none
+    std::vector<float> margins;              // CPU reference only
+    Precision precision = Precision::Auto;   // GPU: the plan's
+};
+
+class BenchBackends {
+public:
+    BenchBackends(const VulkanContext::Options& vulkan);
+    ~BenchBackends();
+
+    bool hasFloat64() const { return context_.selected().hasFloat64; }
+    bool hasEmbree() const { return embree_ != nullptr; }
+    std::string embreeVersion() const;
+    std::string gpuName() const { return gpuName_; }
+    Precision autoPrecision(const Scene& scene) const { return gpu_.resolve(scene, Precision::Auto); }
+
+    // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree single rays", "embree 8-ray packets".
+    std::string name(BenchBackend backend) const;
+    // The threads the backend renders with, for the per-pixel cost; 0 for a real GPU.
+    unsigned threads(BenchBackend backend) const;
+
+    // Renders once into `measurement`, appending its times. `withClasses`: the GPU also renders,
+    // untimed, the pixel classes its 8-bit output does not carry.
+    void measure(const Scene& scene, const BenchConfiguration& configuration, bool withClasses,
+                 BenchMeasurement& measurement);
+
+    // The tests a GPU configuration's kernel runs per pixel; nothing for a data-driven kernel or
+    // another backend.
+    std::optional<WorkPerPixel> work(const Scene& scene, const BenchConfiguration& configuration) const;
+
+private:
+    void measureGpu(const Scene& scene, const BenchConfiguration& configuration, bool withClasses,
+                    BenchMeasurement& measurement);
+
+    VulkanContext context_;
+    GpuRenderer gpu_;
+    bool isLavapipe_ = false;
+    std::string gpuName_;
+    std::unique_ptr<EmbreeRenderer> embree_;  // null without Embree
+};
+
+}  // namespace hexray

@@ -1,0 +1,238 @@
+#include "bench/bench_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace hexray {
+namespace {
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+bool isGpu(BenchBackend backend) {
+    return backend == BenchBackend::Gpu || backend == BenchBackend::GpuHandWritten;
+}
+
+bool isEmbree(BenchBackend backend) {
+    return backend == BenchBackend::EmbreeSingle || backend == BenchBackend::EmbreePackets;
+}
+
+BenchRow rowFor(const BenchScene& bench, const BenchConfiguration& configuration, const BenchMeasurement& measurement,
+                BenchBackends& backends) {
+    BenchRow row;
+    row.configuration = configuration;
+    const double pixels = double(bench.scene.image.width) * bench.scene.image.height;
+    row.medianMs = median(measurement.renderMilliseconds);
+    const double bestMs = *std::min_element(measurement.renderMilliseconds.begin(), measurement.renderMilliseconds.end());
+    row.medianMpix = pixels * 1e-3 / row.medianMs;
+    row.bestMpix = pixels * 1e-3 / bestMs;
+    row.frameMs = median(measurement.frameMilliseconds);
+    row.planMs = median(measurement.planMilliseconds);
+    row.uploadMs = median(measurement.uploadMilliseconds);
+    row.threads = backends.threads(configuration.backend);
+    row.coreNsPerPixel = row.medianMs * 1e6 * std::max(1u, row.threads) / pixels;
+    row.precision = measurement.precision;
+
+    Scene sampled = bench.scene;
+    sampled.image.samplesPerPixel = configuration.samplesPerPixel;
+    const Encoding encoding = bench.scene.image.encoding;
+    const Rgb8Image encoded =
+        isGpu(configuration.backend) ? measurement.encoded : encodeImage(measurement.image, encoding);
+    const CpuRender& reference = bench.reference.bySamples.at(configuration.samplesPerPixel);
+    // Precision error where the reference's decisions are clear of rounding (compare's rule).
+    const PixelMask ambiguous = marginsBelow(reference.margins, kAmbiguityMargin);
+    PixelMask unambiguous(ambiguous.size());
+    std::transform(ambiguous.begin(), ambiguous.end(), unambiguous.begin(), [](bool a) { return !a; });
+    row.precisionError = compareEncoded(encodeImage(reference.image, encoding), encoded, unambiguous);
+    if (!bench.reference.converged.bytes.empty()) {
+        row.samplingError = compareEncoded(bench.reference.converged, encoded);
+    }
+    if (!measurement.classes.empty()) {
+        row.topology = compareTopology(reference.classes, measurement.classes, ambiguous);
+    }
+    row.work = backends.work(sampled, configuration);
+    return row;
+}
+
+// The ratio of each row's speed to a yardstick row's at the same scene and sample count.
+void addRatios(std::vector<BenchRow>& rows) {
+    std::map<std::pair<std::size_t, std::uint32_t>, double> handWritten;
+    std::map<std::pair<std::size_t, std::uint32_t>, double> embree;  // the faster mode
+    for (const BenchRow& row : rows) {
+        const auto key = std::pair(row.configuration.scene, row.configuration.samplesPerPixel);
+        if (row.configuration.backend == BenchBackend::GpuHandWritten) {
+            handWritten[key] = row.medianMpix;
+        } else if (isEmbree(row.configuration.backend)) {
+            embree[key] = std::max(embree[key], row.medianMpix);
+        }
+    }
+    for (BenchRow& row : rows) {
+        const auto key = std::pair(row.configuration.scene, row.configuration.samplesPerPixel);
+        if (const auto found = handWritten.find(key); found != handWritten.end()) {
+            row.versusHandWritten = row.medianMpix / found->second;
+        }
+        if (const auto found = embree.find(key); found != embree.end()) {
+            row.versusEmbree = row.medianMpix / found->second;
+        }
+    }
+}
+
+std::string format(const char* pattern, double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+std::string optional(const std::optional<double>& value, const char* pattern) {
+    return value ? format(pattern, *value) : "–";
+}
+
+std::string precisionText(const BenchRow& row) {
+    switch (row.configuration.backend) {
+        case BenchBackend::Gpu:
+            return std::string(precisionName(row.precision)) + (row.chosenByAuto ? " (auto)" : "");
+        case BenchBackend::GpuHandWritten: return "f32 textbook";
+        case BenchBackend::Cpu: return "f64 (double)";
+        case BenchBackend::EmbreeSingle:
+        case BenchBackend::EmbreePackets: return "f32 (Embree)";
+    }
+    return "";
+}
+
+std::string cullingText(const BenchRow& row) {
+    if (row.configuration.backend != BenchBackend::Gpu || !row.work) {
+        return "–";
+    }
+    return row.configuration.culling == Culling::On ? "on" : "off";
+}
+
+std::string mismatches(const BenchRow& row) {
+    return row.topology ? std::to_string(row.topology->mismatches) : "–";
+}
+
+// The rows of the file scenes or of the curve, grouped by scene and sample count.
+std::vector<const BenchRow*> rowsOf(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows, bool curve) {
+    std::vector<const BenchRow*> selected;
+    for (const BenchRow& row : rows) {
+        if (scenes[row.configuration.scene].spheres.has_value() == curve) {
+            selected.push_back(&row);
+        }
+    }
+    std::stable_sort(selected.begin(), selected.end(), [](const BenchRow* a, const BenchRow* b) {
+        return std::pair(a->configuration.scene, a->configuration.samplesPerPixel) <
+               std::pair(b->configuration.scene, b->configuration.samplesPerPixel);
+    });
+    return selected;
+}
+
+void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
+                    const BenchBackends& backends) {
+    std::printf("| scene | resolution | backend | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
+                "| vs hand-written | primary tests/px | shadow rays/px | shadow tests/px | sampling error: RMSE vs "
+                "converged (levels) | precision error: RMSE vs CPU ref, same spp, unambiguous px (levels) | "
+                "> 1 level, same spp | topology mismatches |\n");
+    std::printf("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const BenchRow* row : rowsOf(scenes, rows, false)) {
+        const BenchScene& bench = scenes[row->configuration.scene];
+        const auto work = [&](double WorkPerPixel::*field) {
+            return row->work ? format("%.2f", (*row->work).*field) : "–";
+        };
+        std::printf("| %s | %ux%u | %s | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %s | %s | %s | %.3f | %.3f%% "
+                    "| %s |\n",
+                    bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
+                    backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
+                    cullingText(*row).c_str(), row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix,
+                    row->frameMs, optional(row->versusHandWritten, "%.2f").c_str(),
+                    work(&WorkPerPixel::primaryTests).c_str(), work(&WorkPerPixel::shadowRays).c_str(),
+                    work(&WorkPerPixel::shadowTests).c_str(),
+                    optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f")
+                        .c_str(),
+                    row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+    }
+}
+
+void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
+                     const BenchBackends& backends) {
+    std::printf("| spheres | resolution | backend | precision | spp | Mpix/s median | Mpix/s best | frame ms | host plan "
+                "ms | upload ms | threads | core-ns per pixel | vs Embree (faster mode) | RMSE vs CPU ref, same spp, "
+                "unambiguous px (levels) | > 1 level | topology mismatches |\n");
+    std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const BenchRow* row : rowsOf(scenes, rows, true)) {
+        const BenchScene& bench = scenes[row->configuration.scene];
+        const bool gpu = isGpu(row->configuration.backend);
+        std::printf("| %u | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
+                    *bench.spheres, bench.scene.image.width, bench.scene.image.height,
+                    backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
+                    row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix, row->frameMs,
+                    gpu ? format("%.1f", row->planMs).c_str() : "–", gpu ? format("%.1f", row->uploadMs).c_str() : "–",
+                    row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(),
+                    row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+    }
+}
+
+}  // namespace
+
+std::vector<BenchRow> benchRows(const std::vector<BenchScene>& scenes,
+                                const std::vector<BenchConfiguration>& configurations,
+                                const std::vector<BenchMeasurement>& measurements, BenchBackends& backends) {
+    std::vector<BenchRow> rows;
+    for (std::size_t i = 0; i < configurations.size(); ++i) {
+        const BenchScene& bench = scenes[configurations[i].scene];
+        BenchRow row = rowFor(bench, configurations[i], measurements[i], backends);
+        row.chosenByAuto = configurations[i].backend == BenchBackend::Gpu &&
+                           row.precision == backends.autoPrecision(bench.scene);
+        rows.push_back(std::move(row));
+    }
+    addRatios(rows);
+    return rows;
+}
+
+void printBenchTables(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
+                      const BenchBackends& backends, const std::vector<std::string>& notes) {
+    const bool files = std::any_of(scenes.begin(), scenes.end(), [](const BenchScene& s) { return !s.spheres; });
+    const bool curve = std::any_of(scenes.begin(), scenes.end(), [](const BenchScene& s) { return s.spheres; });
+    if (files) {
+        printFileTable(scenes, rows, backends);
+    }
+    if (curve) {
+        std::printf(files ? "\n" : "");
+        printCurveTable(scenes, rows, backends);
+    }
+    std::printf("\n");
+    for (const std::string& note : notes) {
+        std::printf("%s\n", note.c_str());
+    }
+}
+
+std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
+                     const BenchBackends& backends) {
+    std::ostringstream csv;
+    csv << "scene,width,height,backend,precision,culling,spp,median_mpix_s,best_mpix_s,median_render_ms,"
+           "median_frame_ms,plan_ms,upload_ms,vs_hand_written,vs_embree,primary_tests_per_pixel,"
+           "shadow_rays_per_pixel,shadow_tests_per_pixel,sampling_rmse_levels,precision_rmse_levels,"
+           "precision_max_abs_levels,pixels_over_one_level,topology_mismatches,spheres,threads,core_ns_per_pixel\n";
+    const auto value = [](const std::optional<double>& v) { return v ? std::to_string(*v) : std::string(); };
+    for (const BenchRow& row : rows) {
+        const BenchScene& bench = scenes[row.configuration.scene];
+        csv << bench.name << ',' << bench.scene.image.width << ',' << bench.scene.image.height << ','
+            << backends.name(row.configuration.backend) << ',' << precisionText(row) << ',' << cullingText(row) << ','
+            << row.configuration.samplesPerPixel << ',' << row.medianMpix << ',' << row.bestMpix << ','
+            << row.medianMs << ',' << row.frameMs << ',' << row.planMs << ',' << row.uploadMs << ','
+            << value(row.versusHandWritten) << ',' << value(row.versusEmbree) << ','
+            << value(row.work ? std::optional(row.work->primaryTests) : std::nullopt) << ','
+            << value(row.work ? std::optional(row.work->shadowRays) : std::nullopt) << ','
+            << value(row.work ? std::optional(row.work->shadowTests) : std::nullopt) << ','
+            << value(row.samplingError ? std::optional(row.samplingError->rmse) : std::nullopt) << ','
+            << row.precisionError.rmse << ',' << row.precisionError.maxAbs << ','
+            << row.precisionError.pixelsOverOneLevel << ','
+            << (row.topology ? std::to_string(row.topology->mismatches) : "") << ','
+            << (bench.spheres ? std::to_string(*bench.spheres) : "") << ',' << row.threads << ','
+            << row.coreNsPerPixel << '\n';
+    }
+    return csv.str();
+}
+
+}  // namespace hexray

@@ -1,0 +1,99 @@
+// The render plan's decisions (host/gpu/render_plan.h), one place for each: the precision and what
+// it implies, the layout, and per node and light which formulation a generated kernel uses.
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "gpu/kernel_generator.h"
+#include "gpu/render_plan.h"
+#include "scene/scene_loader.h"
+#include "shader_interface.h"
+#include "support/test_paths.h"
+#include "vulkan/vulkan_context.h"
+
+namespace hexray {
+namespace {
+
+const DeviceAbilities kLavapipe{"lavapipe", true, true};
+
+Scene twoSpheres(const Sphere& first, const Sphere& second, const glm::dvec3& light) {
+    Scene scene;
+    scene.camera.position = {0, 0, 0};
+    scene.shaderNames = {"matte"};
+    scene.shaders = {LambertShader{Color(0.5)}};
+    scene.nodes = {Node{first, 0}, Node{second, 0}};
+    scene.lights = {PointLight{light, Color(1), 1000}};
+    return scene;
+}
+
+TEST(RenderPlan, PrecisionDecidesWidthFormulationAndPlacement) {
+    const Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    const RenderPlan f32 = planRender(scene, {Precision::F32}, kLavapipe);
+    EXPECT_EQ(f32.width, FloatWidth::F32);
+    EXPECT_EQ(f32.formulation, Formulation::Robust);
+    EXPECT_TRUE(f32.placement.cameraRelative);
+    EXPECT_EQ(f32.placement.origin, scene.camera.position);
+    const RenderPlan f64 = planRender(scene, {Precision::F64}, kLavapipe);
+    EXPECT_EQ(f64.width, FloatWidth::F64);
+    const RenderPlan naive = planRender(scene, {Precision::F32Naive}, kLavapipe);
+    EXPECT_EQ(naive.formulation, Formulation::Textbook);
+    EXPECT_FALSE(naive.placement.cameraRelative);
+    EXPECT_EQ(naive.placement.scale, 1.0);
+    // Auto is decided here, never passed on.
+    EXPECT_EQ(planRender(scene, {Precision::Auto}, kLavapipe).precision, Precision::F32);
+    EXPECT_EQ(planRender(scene, {Precision::Auto}, kLavapipe).layout, SceneLayout::Uniform);
+}
+
+TEST(RenderPlan, F64OnADeviceWithoutItIsRefused) {
+    const Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    EXPECT_THROW(planRender(scene, {Precision::F64}, DeviceAbilities{"no-f64", false, true}), VulkanError);
+}
+
+// The camera test is the robust one only for a sphere whose surface the eye is close to (here a
+// ground of radius 1e6 seen from 1 above it), the fast one for an ordinary sphere; the shadow
+// test from the light likewise: fast for a sphere a few radii from the light, robust for a tiny
+// one 1e4 radii away.
+TEST(RenderPlan, EachNodeGetsTheFormulationItsConditioningNeeds) {
+    const Scene ground = twoSpheres(Sphere{{0, -1e6 - 1, 0}, 1e6}, Sphere{{0, 0, 50}, 10}, {0, 20, 50});
+    const RenderPlan plan = planRender(ground, {Precision::F64}, kLavapipe);
+    ASSERT_TRUE(plan.kernel.code);
+    EXPECT_EQ(plan.kernel.code->nodes[0].sphereTest, SphereTest::Robust);
+    EXPECT_EQ(plan.kernel.code->nodes[1].sphereTest, SphereTest::Fast);
+
+    const Scene shadows = twoSpheres(Sphere{{0, 0, 100}, 10}, Sphere{{3e4, 0, 100}, 1}, {0, 40, 100});
+    const RenderPlan shadowPlan = planRender(shadows, {Precision::F64}, kLavapipe);
+    const auto& tests = shadowPlan.kernel.code->shadowTests[0];
+    ASSERT_EQ(tests.size(), 2u);
+    EXPECT_EQ(tests[0].sphereTest, SphereTest::Fast);    // the light is 4 radii from it
+    EXPECT_EQ(tests[1].sphereTest, SphereTest::Robust);  // 3e4 radii away
+    const std::string source = generateKernel(*shadowPlan.kernel.code);
+    EXPECT_NE(source.find("sphereCrossesSegmentFromOutside(LIGHT0_POSITION - NODE0_GEOMETRY.xyz"), std::string::npos);
+    EXPECT_NE(source.find("sphereCrossesSegment(LIGHT0_POSITION - NODE1_GEOMETRY.xyz"), std::string::npos);
+}
+
+TEST(RenderPlan, APlaneWithTheEyeAndTheLightOnOneSideCastsNoShadowTest) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    const RenderPlan above = planRender(scene, {Precision::F32}, kLavapipe);
+    ASSERT_EQ(above.kernel.code->shadowTests[0].size(), 1u);  // the ball only
+    EXPECT_EQ(above.kernel.code->shadowTests[0][0].node, 1u);
+    scene.lights[0].position.y = -10;  // below the floor, the eye above it
+    const RenderPlan below = planRender(scene, {Precision::F32}, kLavapipe);
+    EXPECT_EQ(below.kernel.code->shadowTests[0].size(), 2u);
+    // The textbook formulation tests every node, as a course would.
+    EXPECT_EQ(planRender(scene, {Precision::F32Naive}, kLavapipe).kernel.code->shadowTests[0].size(), 2u);
+}
+
+TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    for (int i = 0; i < 40; ++i) {
+        scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
+    }
+    const RenderPlan plan = planRender(scene, {Precision::F32}, kLavapipe);
+    EXPECT_NE(plan.layout, SceneLayout::Uniform);
+    EXPECT_FALSE(plan.kernel.code);
+    EXPECT_FALSE(plan.kernel.spirv.empty());
+}
+
+}  // namespace
+}  // namespace hexray
