@@ -13,17 +13,54 @@ device=$(./build/hexray devices | sed -n 's/^\* [0-9]*: //p')
 Regenerate with \`bash ci/accuracy-report.sh\` (runs \`build/hexray compare --all scenes/\`).
 Device: ${device}. Generated $(date -u +%Y-%m-%d).
 
-Columns: **topology mismatches** = pixels the CPU reference calls unambiguous whose visible
-node, checker cell or set of lit lights differs on the GPU (must be 0 for f32 and f64);
-**ambiguous** = share of pixels where some decision lies within float32 rounding of flipping
-(the CPU reference's margin test, see README); **max abs** and **RMSE** = 8-bit colour error
-on the unambiguous pixels, in levels; **> 1 level** = share of unambiguous pixels more than
-one level off; **GPU ms** = dispatch time (timestamps, after a warm-up); **auto** = the
-precision \`--precision auto\` picks. f32-naive rows are the textbook formulation, kept to
-show what the robust one buys; they are reported, not judged.
+Columns: **topology mismatches** = pixels whose visible node, checker cell or set of lit lights
+differs on the GPU in a decision the CPU reference did not find near-tied (must be 0 for f32
+and f64); **ambiguous** = share of pixels with some decision within its error bound of
+flipping, at the row's precision (the CPU reference's margins, see README); **excused** = share
+of pixels left partly unchecked (a near-tied decision went the other way, or the colour was not
+comparable); **max abs** and **RMSE** = 8-bit colour error on the pixels whose colours are
+compared, in levels; **> 1 level** = share of those more than one level off; **GPU ms** =
+dispatch time (timestamps, after a warm-up); **auto** = the precision \`--precision auto\`
+picks. f32-naive rows are the textbook formulation, kept to show what the robust one buys; they
+are reported, not judged. "FAIL (too ambiguous)": more than 5 % of the pixels are near-tied,
+so \`compare\` will not call the rows verified; the hard scenes that fail so are built on knife
+edges (rows exactly on checker edges, a light in the floor or on a sphere, rays grazing a plane,
+a sphere float32 cannot resolve) and are checked against analytic truth below instead.
 
 HEADER
   echo "$table"
+  cat <<SHARES
+
+## Ambiguous share, before and after per-decision bounds (issue 12)
+
+Before: one margin per pixel, the smallest of its decisions, against one bound of 128 float32
+units (2⁻¹⁷) at every precision; an ambiguous pixel was left out whole. After: a bound per
+decision (twice the camera direction's roundoff plus 16 units, at the compared precision: see
+README), a plane's checker cell measured per axis, the margin of a sphere holding the camera
+against its own points, and a near-tie excusing only its own part of the pixel. Before, measured
+at main 2c1cb24 with \`hexray compare scenes/lecture-demo.json\` and \`hexray compare\` of
+\`makeRandomSpheresScene(3000, 1)\` written as a scene file (320 x 180; \`--spp 4\`):
+
+| scene | before: ambiguous | after: ambiguous (f32, f64) |
+|---|---:|---:|
+SHARES
+  ./build/tests/hexray_unit_tests --gtest_filter='RandomSpheresMargins.*:*ShippedSceneMargins*lecture_demo' |
+    awk '/\[ ambiguous \] lecture-demo.json/ {demo=$5}
+         /\[ ambiguous \] 3000 random spheres, 1 spp, f32/ {r1f32=$10} /1 spp, f64/ {r1f64=$10}
+         /\[ ambiguous \] 3000 random spheres, 4 spp, f32/ {r4f32=$10} /4 spp, f64/ {r4f64=$10}
+         END {
+           printf "| lecture-demo (f32 by auto) | 2.149 %% | %s %% (f64: see the table above) |\n", demo
+           printf "| 3000 random spheres, 1 spp | 1.358 %% | %s %%, %s %% |\n", r1f32, r1f64
+           printf "| 3000 random spheres, 4 spp | 4.309 %% | %s %%, %s %% |\n", r4f32, r4f64
+         }'
+  cat <<SHARES2
+
+The excused share (what the comparison really leaves unchecked) is in the table above: on the
+demo scene in f32 0.62 % (the rows on checker edges near the horizon, where the GPU takes the
+other side), against 2.15 % of pixels left out whole before. Issue 12 quotes 7.8 % for a
+3000-sphere scene; the scene of \`makeRandomSpheresScene(3000, 1)\` measured 1.36 % (4.31 % at
+4 samples per pixel) on the same code, so that figure came from another configuration.
+SHARES2
   cat <<HARD
 
 ## Hard cases against analytic ground truth

@@ -65,12 +65,15 @@ glm::dvec2 sampleOffset(std::uint32_t index, std::uint32_t count, Sampling sampl
     return glm::dvec2(u, v) - (0.5 - samplingOffset(sampling));
 }
 
+glm::dvec2 sheetPosition(const ImageSettings& image, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
+    const glm::dvec2 offset = sampleOffset(sample, image.samplesPerPixel, image.sampling);
+    return {(double(x) + offset.x) / double(image.width), (double(y) + offset.y) / double(image.height)};
+}
+
 glm::dvec3 sampleDirection(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
                            std::uint32_t sample) {
-    const glm::dvec2 offset = sampleOffset(sample, image.samplesPerPixel, image.sampling);
-    const glm::dvec3 aim = sheet.topLeft + sheet.right * ((double(x) + offset.x) / double(image.width)) +
-                           sheet.down * ((double(y) + offset.y) / double(image.height));
-    return glm::normalize(aim);
+    const glm::dvec2 s = sheetPosition(image, x, y, sample);
+    return glm::normalize(sheet.topLeft + sheet.right * s.x + sheet.down * s.y);
 }
 
 }  // namespace hexray

@@ -54,6 +54,10 @@ inline double samplingOffset(Sampling sampling) {
 // exactly samplingOffset. The shader computes the same pattern (shaders/camera_ray.glsl).
 glm::dvec2 sampleOffset(std::uint32_t index, std::uint32_t count, Sampling sampling);
 
+// Where sample `sample` of pixel (x, y) lies on the sheet, as fractions (s.x, s.y) of its width
+// and height: the ray aims at topLeft + right * s.x + down * s.y.
+glm::dvec2 sheetPosition(const ImageSettings& image, std::uint32_t x, std::uint32_t y, std::uint32_t sample);
+
 // The unit direction from the eye through sample `sample` of pixel (x, y), in double: what the
 // CPU reference's (and the bench's Embree renderer's) camera rays follow.
 glm::dvec3 sampleDirection(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,

@@ -8,6 +8,7 @@
 #include "cli/command_support.h"
 #include "cli/progress.h"
 #include "cli/scene_files.h"
+#include "compare/decision_roundoff.h"
 #include "compare/render_comparator.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
@@ -56,42 +57,61 @@ void printDetailed(const std::string& path, const Scene& scene, const Row& row, 
     std::printf("scene %s: %ux%u, %s output\n", path.c_str(), scene.image.width, scene.image.height,
                 scene.image.encoding == Encoding::Srgb ? "sRGB" : "linear");
     std::printf("  %s\n  %s\n", gpuHow.c_str(), cpuHow.c_str());
-    std::printf("  ambiguous pixels (a decision within float32 rounding of flipping): %llu (%.4f%%)\n",
+    std::printf("  ambiguous pixels (a decision within rounding of flipping): %llu (%.4f%%)\n",
                 static_cast<unsigned long long>(t.ambiguous), 100.0 * t.ambiguousShare());
-    std::printf("  topology mismatches on unambiguous pixels: %llu (node %llu, checker cell %llu, lights %llu)\n",
+    std::printf("  excused pixels (differ only in near-tied decisions, or colour not comparable): %llu (%.4f%%)\n",
+                static_cast<unsigned long long>(t.excused), 100.0 * t.excusedShare());
+    std::printf("  topology mismatches in decisions not near-tied: %llu (node %llu, checker cell %llu, lights %llu)\n",
                 static_cast<unsigned long long>(t.mismatches), static_cast<unsigned long long>(t.nodeMismatches),
                 static_cast<unsigned long long>(t.checkerMismatches), static_cast<unsigned long long>(t.lightMismatches));
-    std::printf("  %-16s %10s %10s %10s %16s  %s\n", "unambiguous px", "max abs", "mean abs", "RMSE", "PSNR dB",
+    std::printf("  colours NaN, infinite or negative (either render, any pixel): %llu\n",
+                static_cast<unsigned long long>(row.comparison.invalidColours));
+    std::printf("  %-16s %10s %10s %10s %16s  %s\n", "compared colours", "max abs", "mean abs", "RMSE", "PSNR dB",
                 "pixels > 1 level");
     printMetrics("linear [0,1]", row.comparison.linear, 6);
     printMetrics("8-bit [levels]", row.comparison.encoded, 0);
-    std::printf("  tolerance: topology mismatches %llu <= %llu %s; pixels > 1 level %.4f%% <= %.4f%% %s; "
-                "8-bit RMSE %.4f <= %.4f levels %s\n",
+    std::printf("  tolerance: invalid colours %llu <= 0 %s; topology mismatches %llu <= %llu %s; ambiguous pixels "
+                "%.4f%% <= %.4f%% %s; pixels > 1 level %.4f%% <= %.4f%% %s; 8-bit RMSE %.4f <= %.4f levels %s\n",
+                static_cast<unsigned long long>(row.comparison.invalidColours), okText(row.verdict.valuesOk),
                 static_cast<unsigned long long>(t.mismatches),
                 static_cast<unsigned long long>(tolerance.maxTopologyMismatches), okText(row.verdict.topologyOk),
+                100.0 * t.ambiguousShare(), tolerance.maxAmbiguousPercent, okText(row.verdict.ambiguousOk),
                 100.0 * row.comparison.encoded.shareOverOneLevel, tolerance.maxSharePercent,
                 okText(row.verdict.shareOk), row.comparison.encoded.rmse, tolerance.maxRmseLevels,
                 okText(row.verdict.rmseOk));
     std::printf("%s\n", row.verdict.passed() ? "PASS" : "FAIL");
 }
 
+// A judged row's verdict names what failed: an ambiguous share over the limit makes the rest moot.
+std::string verdictText(const Row& row) {
+    if (!row.judged) {
+        return row.verdict.passed() ? "(pass)" : "(fail, not judged)";
+    }
+    if (row.verdict.passed()) {
+        return "pass";
+    }
+    const Verdict& v = row.verdict;
+    return v.topologyOk && v.shareOk && v.rmseOk && v.valuesOk ? "FAIL (too ambiguous)" : "FAIL";
+}
+
 void printTableHeader() {
-    std::printf("| scene | precision | auto | topology mismatches | ambiguous | max abs (levels) | RMSE (levels) "
-                "| > 1 level | GPU ms | verdict |\n");
-    std::printf("|---|---|:-:|---:|---:|---:|---:|---:|---:|---|\n");
+    std::printf("| scene | precision | auto | topology mismatches | ambiguous | excused | max abs (levels) "
+                "| RMSE (levels) | > 1 level | GPU ms | verdict |\n");
+    std::printf("|---|---|:-:|---:|---:|---:|---:|---:|---:|---:|---|\n");
 }
 
 void printTableRow(const std::string& scene, const Row& row) {
     const RenderComparison& c = row.comparison;
-    std::printf("| %s | %s | %s | %llu | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n", scene.c_str(),
+    std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n", scene.c_str(),
                 std::string(precisionName(row.precision)).c_str(), row.chosenByAuto ? "✓" : "",
                 static_cast<unsigned long long>(c.topology.mismatches), 100.0 * c.topology.ambiguousShare(),
-                c.encoded.maxAbs, c.encoded.rmse, 100.0 * c.encoded.shareOverOneLevel, row.gpuMilliseconds,
-                !row.judged ? (row.verdict.passed() ? "(pass)" : "(fail, not judged)") : row.verdict.passed() ? "pass" : "FAIL");
+                100.0 * c.topology.excusedShare(), c.encoded.maxAbs, c.encoded.rmse,
+                100.0 * c.encoded.shareOverOneLevel, row.gpuMilliseconds, verdictText(row).c_str());
 }
 
 void printFailedRow(const std::string& scene) {
-    std::printf("| %s | – | | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n", scene.c_str());
+    std::printf("| %s | – | | – | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n",
+                scene.c_str());
 }
 
 // The files a single-scene comparison writes besides its report: the heat map, the mask and
@@ -117,13 +137,15 @@ public:
 
     bool withAovs() const { return gpuAovs_.has_value(); }
 
-    void writeRows(const CpuRender& reference, const GpuRenderResult& gpu, const PixelMask& ambiguous,
-                   const Rgb8Image& reference8, const Rgb8Image& gpu8) {
+    void writeRows(const CpuRender& reference, const GpuRenderResult& gpu, const Rgb8Image& reference8,
+                   const Rgb8Image& gpu8) {
         if (diff_) {
             diff_->writeRows(diffHeatMap(reference8, gpu8).bytes);
         }
         if (mask_) {
-            mask_->writeRows(mismatchMask(reference.classes, gpu.classes, ambiguous, reference8, gpu8).bytes);
+            mask_->writeRows(mismatchMask(reference.classes, gpu.classes, reference.ambiguity, reference8, gpu8,
+                                          &reference.image, &gpu.image)
+                                 .bytes);
         }
         if (gpuAovs_) {
             gpuAovs_->writeRows({gpu.image.height, gpu.depth, gpu.normals, gpu.classes, {}});
@@ -140,7 +162,8 @@ public:
         }
         if (mask_) {
             mask_->finish();
-            std::printf("wrote mismatch mask %s (red topology, yellow colour > 1 level, blue ambiguous)\n",
+            std::printf("wrote mismatch mask %s (magenta invalid colour, red topology, blue excused, yellow "
+                        "colour > 1 level, navy near-tied but agreeing)\n",
                         displayName(options_.maskPath).c_str());
         }
         if (gpuAovs_) {
@@ -175,23 +198,24 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
                                 Precision requested, unsigned threads, BandOutputs* outputs) {
     const bool aov = outputs && outputs->withAovs();
     Progress progress("comparing " + path, scene.image.height);
-    const CpuBandRenderer reference(scene, threads, Acceleration::Auto, aov);
+    const RenderPlan plan = renderer.plan(scene, {requested});
+    // The reference's margins are read against the arithmetic of the render it is compared with.
+    const CpuBandRenderer reference(scene, threads, Acceleration::Auto, aov, decisionRoundoff(plan.precision));
     RenderComparator comparator;
     CpuRender cpu;
     double cpuMilliseconds = 0;
     const Encoding encoding = scene.image.encoding;
     const GpuRenderResult gpu = renderer.renderLinearRows(
-        scene, renderer.plan(scene, {requested}), aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses,
+        scene, plan, aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses,
         [&](std::uint32_t firstRow, const GpuRenderResult& band) {
             const auto start = std::chrono::steady_clock::now();
             reference.render(firstRow, band.image.height, cpu);
             cpuMilliseconds += millisecondsSince(start);
-            const PixelMask ambiguous = marginsBelow(cpu.margins, kAmbiguityMargin);
             const Rgb8Image reference8 = encodeImage(cpu.image, encoding);
             const Rgb8Image gpu8 = encodeImage(band.image, encoding);
-            comparator.add({cpu.image, cpu.classes, reference8}, {band.image, band.classes, gpu8}, ambiguous);
+            comparator.add({cpu.image, cpu.classes, reference8}, {band.image, band.classes, gpu8}, cpu.ambiguity);
             if (outputs) {
-                outputs->writeRows(cpu, band, ambiguous, reference8, gpu8);
+                outputs->writeRows(cpu, band, reference8, gpu8);
             }
             progress.update(firstRow + band.image.height);
         });

@@ -151,7 +151,8 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
     CLI::App* command = app.add_subcommand(
         "compare",
         "Render scenes on the GPU and on the CPU reference and compare them: ambiguous pixels, topology "
-        "mismatches outside them, colour errors on the rest. Fails when the tolerance is exceeded");
+        "mismatches in the decisions not near-tied, colour errors where the classes agree. Fails when the "
+        "tolerance is exceeded");
     command->add_option("scenes", compare.scenePaths, "Scene files, or directories of them")->required();
     CLI::Option* precisionOption = addPrecisionOption(*command, line.comparePrecision);
     command
@@ -165,25 +166,32 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
         ->check(NotEmpty());
     command
         ->add_option("--max-topology-mismatches", compare.tolerance.maxTopologyMismatches,
-                     "Tolerance: unambiguous pixels whose node, checker cell or lit lights differ")
+                     "Tolerance: pixels whose node, checker cell or lit lights differ in a decision not near-tied")
         ->check(IntegerBetween<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
         ->capture_default_str();
     command
         ->add_option("--max-bad-pixels", compare.tolerance.maxSharePercent,
-                     "Tolerance: share of unambiguous pixels, in percent, whose 8-bit value may differ by more "
-                     "than one level")
+                     "Tolerance: share of the pixels whose colours are compared, in percent, whose 8-bit value "
+                     "may differ by more than one level")
+        ->check(FiniteNumberBetween(0.0, 100.0))
+        ->capture_default_str();
+    command
+        ->add_option("--max-ambiguous", compare.tolerance.maxAmbiguousPercent,
+                     "Tolerance: share of pixels, in percent, with a decision within rounding of flipping "
+                     "(a comparison of mostly such pixels proves little)")
         ->check(FiniteNumberBetween(0.0, 100.0))
         ->capture_default_str();
     command
         ->add_option("--max-rmse", compare.tolerance.maxRmseLevels,
-                     "Tolerance: RMSE of the 8-bit output over unambiguous pixels, in levels")
+                     "Tolerance: RMSE of the 8-bit output over the pixels whose colours are compared, in levels")
         ->check(FiniteNumberBetween(0.0, 255.0))
         ->capture_default_str();
     addThreadsOption(*command, compare.threads, "CPU reference");
     command
         ->add_option("--mask", compare.maskPath,
-                     "Write a PNG of where the renders disagree: red topology mismatch, yellow colour more "
-                     "than one level off, blue ambiguous, black agreement")
+                     "Write a PNG of where the renders disagree: magenta a colour not finite and >= 0, red "
+                     "topology mismatch, blue excused (differs only in near-tied decisions), yellow colour more "
+                     "than one level off, navy near-tied but agreeing, black agreement")
         ->check(NotEmpty());
     command
         ->add_option("--aov", compare.aovDirectory,

@@ -36,6 +36,16 @@ PixelMask marginsBelow(const std::vector<float>& margins, double threshold) {
     return mask;
 }
 
+Ambiguities wholePixels(const PixelMask& mask) {
+    Ambiguities ambiguity(mask.size());
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        if (mask[i]) {
+            ambiguity[i] = PixelAmbiguity::everything();
+        }
+    }
+    return ambiguity;
+}
+
 ErrorMetrics compareLinear(const Image& reference, const Image& test, const PixelMask& mask) {
     requireSameSize(reference.width, reference.height, test.width, test.height);
     ErrorAccumulator accumulator(1.0 / 255.0, 1.0);
@@ -59,38 +69,61 @@ ErrorMetrics compareEncoded(const Rgb8Image& reference, const Rgb8Image& test, c
     return accumulator.result();
 }
 
+PixelJudgement judgePixel(const PixelClass& reference, const PixelClass& test, const PixelAmbiguity& ambiguity) {
+    using Mismatch = PixelJudgement::Mismatch;
+    PixelJudgement judgement;
+    judgement.ambiguous = ambiguity.any();
+    bool nearTiedPartDiffers = false;
+    if (reference.node != test.node) {
+        nearTiedPartDiffers = ambiguity.node;
+        judgement.mismatch = ambiguity.node ? Mismatch::None : Mismatch::Node;
+    } else {
+        const std::uint32_t differing = reference.flags ^ test.flags;
+        const std::uint32_t settled = differing & ~ambiguity.flags;
+        nearTiedPartDiffers = (differing & ambiguity.flags) != 0;
+        judgement.mismatch = (settled & PixelClass::kOddCheckerBit) ? Mismatch::Checker
+                             : settled                              ? Mismatch::Lights
+                                                                    : Mismatch::None;
+    }
+    // A near-tied node leaves the colour unchecked too: a ray that grazes a silhouette, or meets a
+    // sphere at the limit of the precision, finds a hit point and normal no better than its node.
+    judgement.colourCompared = !nearTiedPartDiffers && !ambiguity.colour && !ambiguity.node;
+    judgement.excused = judgement.mismatch == Mismatch::None && !judgement.colourCompared;
+    return judgement;
+}
+
+void TopologyComparison::add(const PixelJudgement& judgement) {
+    using Mismatch = PixelJudgement::Mismatch;
+    ++pixels;
+    ambiguous += judgement.ambiguous;
+    excused += judgement.excused;
+    mismatches += judgement.mismatch != Mismatch::None;
+    nodeMismatches += judgement.mismatch == Mismatch::Node;
+    checkerMismatches += judgement.mismatch == Mismatch::Checker;
+    lightMismatches += judgement.mismatch == Mismatch::Lights;
+}
+
 TopologyComparison compareTopology(const std::vector<PixelClass>& reference, const std::vector<PixelClass>& test,
-                                   const PixelMask& ambiguous) {
-    if (reference.size() != test.size()) {
+                                   const Ambiguities& ambiguity) {
+    if (reference.size() != test.size() || (!ambiguity.empty() && ambiguity.size() != reference.size())) {
         throw std::invalid_argument("cannot compare classifications of different sizes");
     }
     TopologyComparison topology;
-    topology.pixels = reference.size();
     for (std::size_t i = 0; i < reference.size(); ++i) {
-        if (!ambiguous.empty() && ambiguous[i]) {
-            ++topology.ambiguous;
-            continue;
-        }
-        const PixelClass& expected = reference[i];
-        const PixelClass& actual = test[i];
-        if (expected == actual) {
-            continue;
-        }
-        ++topology.mismatches;
-        if (expected.node != actual.node) {
-            ++topology.nodeMismatches;
-        } else if ((expected.flags ^ actual.flags) & PixelClass::kOddCheckerBit) {
-            ++topology.checkerMismatches;
-        } else {
-            ++topology.lightMismatches;
-        }
+        topology.add(judgePixel(reference[i], test[i], ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]));
     }
     return topology;
+}
+
+TopologyComparison compareTopology(const std::vector<PixelClass>& reference, const std::vector<PixelClass>& test,
+                                   const PixelMask& excluded) {
+    return compareTopology(reference, test, wholePixels(excluded));
 }
 
 TopologyComparison& TopologyComparison::operator+=(const TopologyComparison& band) {
     pixels += band.pixels;
     ambiguous += band.ambiguous;
+    excused += band.excused;
     mismatches += band.mismatches;
     nodeMismatches += band.nodeMismatches;
     checkerMismatches += band.checkerMismatches;
@@ -99,19 +132,36 @@ TopologyComparison& TopologyComparison::operator+=(const TopologyComparison& ban
 }
 
 RenderComparison compareRenders(const Image& referenceImage, const std::vector<PixelClass>& referenceClasses,
-                                const PixelMask& ambiguous, const Image& testImage,
+                                const Ambiguities& ambiguity, const Image& testImage,
                                 const std::vector<PixelClass>& testClasses, Encoding encoding) {
     requireSameSize(referenceImage.width, referenceImage.height, testImage.width, testImage.height);
     RenderComparator comparator;
     comparator.add({referenceImage, referenceClasses, encodeImage(referenceImage, encoding)},
-                   {testImage, testClasses, encodeImage(testImage, encoding)}, ambiguous);
+                   {testImage, testClasses, encodeImage(testImage, encoding)}, ambiguity);
     return comparator.result();
+}
+
+RenderComparison compareRenders(const Image& referenceImage, const std::vector<PixelClass>& referenceClasses,
+                                const PixelMask& excluded, const Image& testImage,
+                                const std::vector<PixelClass>& testClasses, Encoding encoding) {
+    return compareRenders(referenceImage, referenceClasses, wholePixels(excluded), testImage, testClasses, encoding);
+}
+
+bool isValidColour(const glm::vec3& colour) {
+    for (int c = 0; c < 3; ++c) {
+        if (!(std::isfinite(colour[c]) && colour[c] >= 0.0f)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 Verdict judge(const RenderComparison& comparison, const Tolerance& tolerance) {
     return {comparison.topology.mismatches <= tolerance.maxTopologyMismatches,
             100.0 * comparison.encoded.shareOverOneLevel <= tolerance.maxSharePercent,
-            comparison.encoded.rmse <= tolerance.maxRmseLevels};
+            comparison.encoded.rmse <= tolerance.maxRmseLevels,
+            100.0 * comparison.topology.ambiguousShare() <= tolerance.maxAmbiguousPercent,
+            comparison.invalidColours == 0};
 }
 
 Rgb8Image diffHeatMap(const Rgb8Image& reference, const Rgb8Image& test) {
@@ -139,26 +189,28 @@ Rgb8Image diffHeatMap(const Rgb8Image& reference, const Rgb8Image& test) {
 }
 
 Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const std::vector<PixelClass>& testClasses,
-                       const PixelMask& ambiguous, const Rgb8Image& reference, const Rgb8Image& test) {
+                       const Ambiguities& ambiguity, const Rgb8Image& reference, const Rgb8Image& test,
+                       const Image* referenceLinear, const Image* testLinear) {
     requireSameSize(reference.width, reference.height, test.width, test.height);
     const std::size_t pixels = std::size_t(reference.width) * reference.height;
     if (referenceClasses.size() != pixels || testClasses.size() != pixels ||
-        (!ambiguous.empty() && ambiguous.size() != pixels)) {
-        throw std::invalid_argument("mismatchMask: classes or mask do not match the image size");
+        (!ambiguity.empty() && ambiguity.size() != pixels)) {
+        throw std::invalid_argument("mismatchMask: classes or ambiguities do not match the image size");
     }
     Rgb8Image mask{reference.width, reference.height, std::vector<std::uint8_t>(pixels * 3, 0)};
     for (std::size_t i = 0; i < pixels; ++i) {
-        const std::uint8_t* colour = nullptr;
-        if (!ambiguous.empty() && ambiguous[i]) {
-            colour = mask_colour::kAmbiguous;
-        } else if (referenceClasses[i] != testClasses[i]) {
-            colour = mask_colour::kTopology;
-        } else {
-            const glm::dvec3 difference = glm::abs(levelDifference(reference, test, i));
-            if (std::max({difference.x, difference.y, difference.z}) > 1.0) {
-                colour = mask_colour::kColour;
-            }
-        }
+        const PixelJudgement judgement = judgePixel(referenceClasses[i], testClasses[i],
+                                                    ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]);
+        const glm::dvec3 difference = glm::abs(levelDifference(reference, test, i));
+        const bool colourOff = std::max({difference.x, difference.y, difference.z}) > 1.0;
+        const bool invalid = (referenceLinear && !isValidColour(referenceLinear->pixels.at(i))) ||
+                             (testLinear && !isValidColour(testLinear->pixels.at(i)));
+        const std::uint8_t* colour = invalid                                               ? mask_colour::kInvalid
+                                     : judgement.mismatch != PixelJudgement::Mismatch::None ? mask_colour::kTopology
+                                     : judgement.excused                                   ? mask_colour::kExcused
+                                     : judgement.colourCompared && colourOff               ? mask_colour::kColour
+                                     : judgement.ambiguous                                 ? mask_colour::kNearTied
+                                                                                           : nullptr;
         if (colour) {
             std::copy(colour, colour + 3, mask.bytes.begin() + std::ptrdiff_t(3 * i));
         }

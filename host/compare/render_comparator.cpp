@@ -4,15 +4,19 @@
 
 namespace hexray {
 
-void RenderComparator::add(const RenderBand& reference, const RenderBand& test, const PixelMask& ambiguous) {
+void RenderComparator::add(const RenderBand& reference, const RenderBand& test, const Ambiguities& ambiguity) {
     const std::size_t pixels = reference.image.pixels.size();
-    if (test.image.pixels.size() != pixels || reference.encoded.bytes.size() != 3 * pixels ||
-        test.encoded.bytes.size() != 3 * pixels || (!ambiguous.empty() && ambiguous.size() != pixels)) {
+    if (test.image.pixels.size() != pixels || reference.classes.size() != pixels || test.classes.size() != pixels ||
+        reference.encoded.bytes.size() != 3 * pixels || test.encoded.bytes.size() != 3 * pixels ||
+        (!ambiguity.empty() && ambiguity.size() != pixels)) {
         throw std::invalid_argument("RenderComparator: bands of different sizes");
     }
-    topology_ += compareTopology(reference.classes, test.classes, ambiguous);
     for (std::size_t i = 0; i < pixels; ++i) {
-        if (ambiguous.empty() || !ambiguous[i]) {
+        const PixelJudgement judgement = judgePixel(reference.classes[i], test.classes[i],
+                                                    ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]);
+        topology_.add(judgement);
+        invalidColours_ += !isValidColour(reference.image.pixels[i]) || !isValidColour(test.image.pixels[i]);
+        if (judgement.colourCompared) {
             linear_.addPixel(displayedDifference(reference.image.pixels[i], test.image.pixels[i]));
             encoded_.addPixel(levelDifference(reference.encoded, test.encoded, i));
         }
@@ -20,7 +24,7 @@ void RenderComparator::add(const RenderBand& reference, const RenderBand& test, 
 }
 
 RenderComparison RenderComparator::result() const {
-    return {topology_, linear_.result(), encoded_.result()};
+    return {topology_, linear_.result(), encoded_.result(), invalidColours_};
 }
 
 }  // namespace hexray

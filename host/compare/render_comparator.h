@@ -19,14 +19,15 @@ struct RenderBand {
 
 class RenderComparator {
 public:
-    // `ambiguous`: the reference's ambiguous pixels in this band (empty: none).
-    void add(const RenderBand& reference, const RenderBand& test, const PixelMask& ambiguous);
+    // `ambiguity`: the reference's near-tied decisions in this band (empty: none).
+    void add(const RenderBand& reference, const RenderBand& test, const Ambiguities& ambiguity);
     RenderComparison result() const;
 
 private:
     TopologyComparison topology_;
     ErrorAccumulator linear_{1.0 / 255.0, 1.0};
     ErrorAccumulator encoded_{1.0, 255.0};
+    std::uint64_t invalidColours_ = 0;
 };
 
 }  // namespace hexray

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <variant>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -70,6 +71,33 @@ float MarginAccumulator::stored() const {
     return rounded;
 }
 
+double cameraDirectionRoundoff(const PixelSheet& sheet, const glm::dvec2& sheetPosition) {
+    const glm::dvec3 target = sheet.topLeft + sheet.right * sheetPosition.x + sheet.down * sheetPosition.y;
+    const glm::dvec3 terms = glm::abs(sheet.topLeft) + glm::abs(sheet.right) * std::abs(sheetPosition.x) +
+                             glm::abs(sheet.down) * std::abs(sheetPosition.y);
+    return 8.0 * std::max({terms.x, terms.y, terms.z}) / glm::length(target) + 5.0;
+}
+
+DecisionBounds decisionBounds(const DecisionRoundoff& roundoff, double directionRoundoff) {
+    constexpr double kFloat32AtanBound = 128.0 * 0x1p-24;
+    const double units = 2.0 * (directionRoundoff + 16.0);
+    return {units * roundoff.general, std::max(units * roundoff.sphereChecker, kFloat32AtanBound)};
+}
+
+void RayDecisions::add(double margin, const PixelAmbiguity& part) {
+    all.add(margin);
+    if (!(margin >= kAmbiguityMargin)) {  // NaN too
+        ambiguity |= part;
+    }
+}
+
+PixelAmbiguity lightPart(std::size_t index) {
+    if (index < PixelClass::kClassifiedLights) {
+        return {false, PixelClass::litBit(std::uint32_t(index)), false};
+    }
+    return {false, 0, true};
+}
+
 double sphereScale(const Sphere& sphere, const glm::dvec3& eye) {
     return glm::length(sphere.center - eye) + std::abs(sphere.radius);
 }
@@ -83,6 +111,11 @@ double hitPointScale(const Geometry& geometry, const Hit& hit, const Ray& camera
 }
 
 double sphereCrossingMargin(const Ray& ray, const Sphere& sphere, double tMax, double scale) {
+    const SphereCrossingMargins margins = sphereCrossingMargins(ray, sphere, tMax, scale);
+    return std::min(margins.line, margins.ends);
+}
+
+SphereCrossingMargins sphereCrossingMargins(const Ray& ray, const Sphere& sphere, double tMax, double scale) {
     const glm::dvec3& d = ray.direction;
     const double r = sphere.radius;
     const glm::dvec3 f = ray.origin - sphere.center;
@@ -93,7 +126,7 @@ double sphereCrossingMargin(const Ray& ray, const Sphere& sphere, double tMax, d
     if (lengthL > r) {
         // The line misses. Float32 makes it touch the range only if it both reaches the sphere
         // and touches it at a point of the range.
-        return std::max(clearance, distanceOutside(closestT, 0.0, tMax)) / scale;
+        return {std::max(clearance, distanceOutside(closestT, 0.0, tMax)) / scale, kInfinity};
     }
     const double halfChord = std::sqrt((r - lengthL) * (r + lengthL));
     double nearest = kInfinity;
@@ -104,10 +137,18 @@ double sphereCrossingMargin(const Ray& ray, const Sphere& sphere, double tMax, d
         }
     }
     const bool chordMeetsRange = closestT + halfChord > 0.0 && closestT - halfChord < tMax;
-    if (chordMeetsRange) {
-        nearest = std::min(nearest, clearance);  // the chord shrinking to nothing
-    }
-    return nearest / scale;
+    // The chord shrinking to nothing matters only where it meets the range.
+    return {chordMeetsRange ? clearance / scale : kInfinity, nearest / scale};
+}
+
+double ownSphereShadowMargin(const Ray& shadowRay, const Sphere& sphere, double tMax, double scale) {
+    const glm::dvec3 f = shadowRay.origin - sphere.center;
+    const double closestT = -glm::dot(f, shadowRay.direction);
+    const double lengthL = glm::length(f + closestT * shadowRay.direction);
+    const double r = sphere.radius;
+    // The origin lies on the sphere, so the line cuts it; rounding may put it a hair outside.
+    const double exit = closestT + std::sqrt(std::max(0.0, (r - lengthL) * (r + lengthL)));
+    return std::abs(exit - tMax) / scale;
 }
 
 double cameraRayPlaneMargin(double directionY, double heightAboveCamera) {
@@ -125,9 +166,19 @@ double nearestNodeMargin(double nearestT, double otherT, double scale) {
     return (otherT - nearestT) / scale;
 }
 
-double planeCheckerMargin(const glm::dvec2& uv, double size, double hitScale) {
-    const double edgeDistance = std::min(distanceToMultiple(uv.x, size), distanceToMultiple(uv.y, size));
-    return edgeDistance / (hitScale + size);
+glm::dvec2 planeTextureScales(const Hit& hit, const Ray& cameraRay) {
+    const double grazing = std::abs(cameraRay.direction.y);
+    if (!(grazing > 0.0)) {
+        return glm::dvec2(kInfinity);
+    }
+    const glm::dvec3 offset = hit.point - cameraRay.origin;
+    const double t = glm::length(offset);
+    return {t + std::abs(offset.x) / grazing, t + std::abs(offset.z) / grazing};
+}
+
+double planeCheckerMargin(const glm::dvec2& uv, double size, const glm::dvec2& uvScales) {
+    return std::min(distanceToMultiple(uv.x, size) / (uvScales.x + size),
+                    distanceToMultiple(uv.y, size) / (uvScales.y + size));
 }
 
 double sphereCheckerMargin(const glm::dvec3& outwardNormal, double size, double normalRoundoff) {

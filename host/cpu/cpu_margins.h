@@ -1,27 +1,59 @@
 #pragma once
 // How close each discrete decision of the CPU reference came to going the other way, so that a
-// comparison with the float32 shader can tell an honest disagreement (a ray within rounding
-// error of an edge) from a bug.
+// comparison with the shader can tell an honest disagreement (a ray within rounding error of an
+// edge) from a bug.
 //
-// Every margin here is dimensionless: the distance of the decision from its boundary, divided
-// by the length that float32 roundoff of that decision is proportional to (its "scale").
-// Roughly, a margin m survives any perturbation of the shader's inputs and intermediates of
-// relative size below m; kAmbiguityMargin (cpu_renderer.h) asks for 128 float32 units.
-// The shader works in camera-relative coordinates, so every scale is built from distances to
-// the camera (|p - eye|, never |p|); the distances to boundaries come from the same world-space
-// quantities the CPU intersection and shading use. Each function measures one decision.
+// Every margin function here gives a relative margin: the distance of the decision from its
+// boundary, divided by the length that roundoff of that decision is proportional to (its
+// "scale"), so that a relative perturbation of the shader's inputs and intermediates of size m
+// moves it by about m. The shader works in camera-relative coordinates, so every scale is built
+// from distances to the camera (|p - eye|, never |p|); the distances to boundaries come from the
+// same world-space quantities the CPU intersection and shading use. Each function measures one
+// decision; decisionBounds says how small a relative margin must be to count as near-tied.
 
 #include <limits>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
+#include "image/pixel_class.h"
 #include "scene/scene.h"
 
 namespace hexray {
 
-// The smallest margin over the decisions made for one pixel.
+// The unit roundoff of the arithmetic a comparison tests, per kind of decision: float32's 2^-24
+// by default; double's 2^-53 for what a float64 shader computes in double.
+struct DecisionRoundoff {
+    double general = 0x1p-24;
+    double sphereChecker = 0x1p-24;  // a sphere's checker cell, from its angular texture coordinates
+};
+
+// How far roundoff can move the unit direction of a camera ray as the shader forms it, in units
+// of roundoff: topLeft + right * s.x + down * s.y (`sheetPosition` = s) from float copies of the
+// sheet, each component off by up to 8 units of its terms' magnitudes (the copies, s itself, the
+// product, two sums), over the target's length; normalizing adds 5 (the dot product, a 2-ulp
+// inverse square root, the product). A wide field of view makes it large: the terms then nearly
+// cancel at the centre of the image.
+double cameraDirectionRoundoff(const PixelSheet& sheet, const glm::dvec2& sheetPosition);
+
+// The relative margins below which one camera ray's decisions are near-tied: twice a bound on
+// how far roundoff moves them, (direction + 16) units of roundoff (cameraDirectionRoundoff, and
+// 16 for the float copies of the scene and the decision's own chain of operations). Sphere
+// checker cells never less than 128 float32 units: they come from the driver's float atan,
+// whose accuracy the shader cannot state.
+struct DecisionBounds {
+    double general;
+    double sphereChecker;
+};
+DecisionBounds decisionBounds(const DecisionRoundoff& roundoff, double directionRoundoff);
+
+// A pixel's margin (CpuRender::margins) is its smallest relative margin in units of that
+// decision's bound: below 1 the decision is near-tied, and the pixel ambiguous.
+inline constexpr double kAmbiguityMargin = 1.0;
+
+// The smallest of a group of margins (the decisions about one part of a pixel's class).
 struct MarginAccumulator {
     double smallest = std::numeric_limits<double>::infinity();  // no decision yet
 
@@ -32,6 +64,19 @@ struct MarginAccumulator {
     // kAmbiguityMargin stays below it after rounding; infinity when no decision was made.
     float stored() const;
 };
+
+// The decisions made for one ray, by the part of the pixel's classification each decides.
+struct RayDecisions {
+    MarginAccumulator all;     // every margin, in units of its bound
+    PixelAmbiguity ambiguity;  // the parts with a margin below kAmbiguityMargin
+
+    // A margin in units of its bound; `part`: what it leaves undecided when it is near-tied.
+    void add(double margin, const PixelAmbiguity& part);
+};
+
+// The part of a pixel's class that a decision about light `index` decides: its lit bit, or for
+// a light beyond PixelClass::kClassifiedLights, the colour only.
+PixelAmbiguity lightPart(std::size_t index);
 
 // ---------------------------------------------------------------- scales
 
@@ -59,6 +104,21 @@ double hitPointScale(const Geometry& geometry, const Hit& hit, const Ray& camera
 // light's and the hit point's scales for a shadow ray.
 double sphereCrossingMargin(const Ray& ray, const Sphere& sphere, double tMax, double scale);
 
+// sphereCrossingMargin in its two parts: the line crossing the silhouette, and a root crossing
+// an end of the range (for a camera ray: its start, where the eye lies within roundoff of the
+// sphere, which then decides which of the sphere's surfaces the ray sees). Infinity where none.
+struct SphereCrossingMargins {
+    double line;
+    double ends;
+};
+SphereCrossingMargins sphereCrossingMargins(const Ray& ray, const Sphere& sphere, double tMax, double scale);
+
+// A shadow ray from a point of a sphere seen from inside (the sphere holds the camera) toward
+// a light: unlike a convex surface seen from outside, the sphere blocks its own points, when
+// the light lies outside it and the ray leaves the sphere before reaching the light. The
+// distance between that exit and the light (at tMax), over `scale`.
+double ownSphereShadowMargin(const Ray& shadowRay, const Sphere& sphere, double tMax, double scale);
+
 // A camera ray against the plane y = h: whether it hits is the sign of d.y (a plane through the
 // camera, h - eye.y == 0, is always missed: no decision, infinity). The shader's unit direction
 // carries an absolute error of a few units of roundoff, so the margin is |d.y|.
@@ -76,10 +136,18 @@ double nearestNodeMargin(double nearestT, double otherT, double scale);
 
 // ---------------------------------------------------------------- shading
 
+// How far float32 roundoff can move a plane hit's texture coordinates (x, z), per unit of
+// relative roundoff, each on its own: the hit eye + (h / d.y) d moves with the direction by
+// t = |p - eye| along its own axis and by |p_u - eye_u| / |d.y| through d.y. (So a line of cells
+// running away from the camera is sharper than one across the view.) Infinite for a ray
+// parallel to the plane.
+glm::dvec2 planeTextureScales(const Hit& hit, const Ray& cameraRay);
+
 // Which checker cell a plane hit is in: floor(u/size) and floor(v/size) flip when roundoff moves
-// (u, v) across a multiple of size. The distance (in length) to the nearest such line, over
-// the hit's scale plus size (the shader's cell coordinates carry roundoff of both).
-double planeCheckerMargin(const glm::dvec2& uv, double size, double hitScale);
+// (u, v) across a multiple of size. For each axis the distance (in length) to the nearest such
+// line, over that axis's scale (planeTextureScales) plus size (the shader's cell coordinates
+// carry roundoff of both); the smaller of the two.
+double planeCheckerMargin(const glm::dvec2& uv, double size, const glm::dvec2& uvScales);
 
 // Which checker cell a sphere hit is in, for (longitude, latitude) = (degrees(atan2(n.x, n.z)),
 // degrees(asin(n.y))) of the outward normal n. Measured in the space of n, where roundoff

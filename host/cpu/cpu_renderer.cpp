@@ -31,13 +31,17 @@ namespace {
 
 constexpr double kNoEnd = std::numeric_limits<double>::infinity();  // a camera ray's range
 
-// What the renderer reports for one pixel.
+// What the renderer reports for one ray.
 struct TracedPixel {
     Color color{0.0};
     PixelClass pixelClass;
-    float margin = 0.0f;
+    RayDecisions decisions;
     std::optional<Hit> hit;  // the nearest, for the AOVs
 };
+
+// The parts of a pixel's class that camera-ray decisions leave undecided.
+constexpr PixelAmbiguity kNodePart{true, 0, false};
+constexpr PixelAmbiguity kCheckerPart{false, PixelClass::kOddCheckerBit, false};
 
 // ---------------------------------------------------------------- margins through the BVH
 //
@@ -110,45 +114,62 @@ void forEachSphereThatMayMatter(const Bvh& bvh, const Ray& ray, const glm::dvec3
     }
 }
 
-// addIntersectionMargins with a BVH: planes in a loop, spheres through forEachSphereThatMayMatter.
+// What every ray of a render reads.
+struct RenderContext {
+    const Scene& scene;
+    const Bvh* bvh;
+    const PixelSheet& sheet;
+    DecisionRoundoff roundoff;
+};
+
+// The camera ray's margins: hit or miss of each node and which hit is nearest (`node`), and
+// the eye lying within roundoff of a sphere (`eye`, see sphereCrossingMargins).
+struct CameraRayMargins {
+    MarginAccumulator node;
+    MarginAccumulator eye;
+
+    void addSphere(const Ray& ray, const Sphere& sphere) {
+        const SphereCrossingMargins crossing =
+            sphereCrossingMargins(ray, sphere, kNoEnd, sphereScale(sphere, ray.origin));
+        node.add(crossing.line);
+        eye.add(crossing.ends);
+    }
+};
+
+// addIntersectionMargins with a BVH: planes in a loop, spheres through forEachSphereThatMayMatter
+// (pruned by the node margins: a sphere whose line misses has no eye margin).
 void addIntersectionMarginsBvh(const Scene& scene, const Bvh& bvh, const Ray& ray,
-                               const std::optional<SceneHit>& nearest, MarginAccumulator& margins) {
+                               const std::optional<SceneHit>& nearest, CameraRayMargins& margins) {
     const glm::dvec3& eye = ray.origin;
     const double nearestScale =
         nearest ? hitPointScale(scene.nodes[nearest->nodeIndex].geometry, nearest->hit, ray) : 0.0;
     const auto addNearestNodeMargin = [&](std::size_t index, const std::optional<Hit>& other) {
         if (nearest && other && index != nearest->nodeIndex) {
             const double scale = nearestScale + hitPointScale(scene.nodes[index].geometry, *other, ray);
-            margins.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
+            margins.node.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
         }
     };
     forEachPlane(scene, &bvh, [&](std::size_t index, const Plane& plane) {
-        margins.add(cameraRayPlaneMargin(ray.direction.y, plane.height - eye.y));
+        margins.node.add(cameraRayPlaneMargin(ray.direction.y, plane.height - eye.y));
         addNearestNodeMargin(index, intersectPlane(ray, plane));
     });
-    forEachSphereThatMayMatter(bvh, ray, eye, 0.0, margins, [&](std::uint32_t index) {
+    forEachSphereThatMayMatter(bvh, ray, eye, 0.0, margins.node, [&](std::uint32_t index) {
         const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
-        margins.add(sphereCrossingMargin(ray, sphere, kNoEnd, sphereScale(sphere, eye)));
+        margins.addSphere(ray, sphere);
         addNearestNodeMargin(index, intersectSphere(ray, sphere));
     });
 }
 
 // ---------------------------------------------------------------- margins, every node
 
-// The camera ray against every node: hit or miss for each, then which hit is nearest.
-void addIntersectionMargins(const Scene& scene, const Bvh* bvh, const Ray& ray,
-                            const std::optional<SceneHit>& nearest, MarginAccumulator& margins) {
-    if (bvh) {
-        addIntersectionMarginsBvh(scene, *bvh, ray, nearest, margins);
-        return;
-    }
-    const glm::dvec3& eye = ray.origin;
+// addIntersectionMargins without a BVH: every node.
+void addIntersectionMarginsLoop(const Scene& scene, const Ray& ray, const std::optional<SceneHit>& nearest,
+                                CameraRayMargins& margins) {
     for (const Node& node : scene.nodes) {
         if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
-            margins.add(cameraRayPlaneMargin(ray.direction.y, plane->height - eye.y));
+            margins.node.add(cameraRayPlaneMargin(ray.direction.y, plane->height - ray.origin.y));
         } else {
-            const Sphere& sphere = std::get<Sphere>(node.geometry);
-            margins.add(sphereCrossingMargin(ray, sphere, kNoEnd, sphereScale(sphere, eye)));
+            margins.addSphere(ray, std::get<Sphere>(node.geometry));
         }
     }
     if (!nearest) {
@@ -162,17 +183,33 @@ void addIntersectionMargins(const Scene& scene, const Bvh* bvh, const Ray& ray,
         const Geometry& geometry = scene.nodes[index].geometry;
         if (const std::optional<Hit> other = intersectGeometry(ray, geometry)) {
             const double scale = nearestScale + hitPointScale(geometry, *other, ray);
-            margins.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
+            margins.node.add(nearestNodeMargin(nearest->hit.t, other->t, scale));
         }
     }
 }
 
+// The camera ray against every node: hit or miss for each, then which hit is nearest. A near-tie
+// leaves the node undecided; the eye within roundoff of a sphere leaves everything undecided (it
+// decides which of the sphere's surfaces, if any, the ray sees).
+void addIntersectionMargins(const RenderContext& context, const DecisionBounds& bounds, const Ray& ray,
+                            const std::optional<SceneHit>& nearest, RayDecisions& decisions) {
+    CameraRayMargins margins;
+    if (context.bvh) {
+        addIntersectionMarginsBvh(context.scene, *context.bvh, ray, nearest, margins);
+    } else {
+        addIntersectionMarginsLoop(context.scene, ray, nearest, margins);
+    }
+    decisions.add(margins.node.smallest / bounds.general, kNodePart);
+    decisions.add(margins.eye.smallest / bounds.general, PixelAmbiguity::everything());
+}
+
 // The shadow ray from the hit toward a light that it faces, against every node that could
-// block it. The shaded node itself cannot: a sphere's lit side sees nothing of its own sphere
-// (convexity), and a shadow ray leaves its plane.
+// block it. A plane cannot block the rays that leave it, nor a sphere seen from outside those
+// from its lit side (convexity); a sphere seen from inside can (ownSphereShadowMargin).
 // With a BVH, the spheres that may matter (see forEachSphereThatMayMatter) stand for all of them.
-void addShadowMargins(const Scene& scene, const Bvh* bvh, std::size_t shadedNode, const Hit& hit,
-                      double hitScale, const glm::dvec3& eye, const PointLight& light, MarginAccumulator& margins) {
+void addShadowMargins(const RenderContext& context, std::size_t shadedNode, const Hit& hit, double hitScale,
+                      const glm::dvec3& eye, const PointLight& light, MarginAccumulator& margins) {
+    const Scene& scene = context.scene;
     const glm::dvec3 toLight = light.position - hit.point;
     const double distance = glm::length(toLight);
     const Ray shadowRay{hit.point, toLight / distance};
@@ -181,20 +218,25 @@ void addShadowMargins(const Scene& scene, const Bvh* bvh, std::size_t shadedNode
         const Sphere& sphere = std::get<Sphere>(scene.nodes[index].geometry);
         margins.add(sphereCrossingMargin(shadowRay, sphere, distance, segmentScale + sphereScale(sphere, eye)));
     };
-    forEachPlane(scene, bvh, [&](std::size_t index, const Plane& plane) {
+    forEachPlane(scene, context.bvh, [&](std::size_t index, const Plane& plane) {
         if (index != shadedNode) {
             margins.add(planeSegmentMargin(hit.point.y - plane.height, light.position.y - plane.height,
                                            segmentScale + std::abs(plane.height - eye.y)));
         }
     });
-    if (!bvh) {
+    const auto* shadedSphere = std::get_if<Sphere>(&scene.nodes[shadedNode].geometry);
+    if (shadedSphere && glm::dot(hit.facingNormal, hit.geometricNormal) < 0.0) {  // seen from inside
+        margins.add(ownSphereShadowMargin(shadowRay, *shadedSphere, distance,
+                                          segmentScale + sphereScale(*shadedSphere, eye)));
+    }
+    if (!context.bvh) {
         for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
             if (index != shadedNode && std::holds_alternative<Sphere>(scene.nodes[index].geometry)) {
                 addSphereMargin(index);
             }
         }
     } else {
-        forEachSphereThatMayMatter(*bvh, shadowRay, eye, segmentScale, margins, [&](std::uint32_t index) {
+        forEachSphereThatMayMatter(*context.bvh, shadowRay, eye, segmentScale, margins, [&](std::uint32_t index) {
             if (index != shadedNode) {
                 addSphereMargin(index);
             }
@@ -204,8 +246,9 @@ void addShadowMargins(const Scene& scene, const Bvh* bvh, std::size_t shadedNode
 
 // The decisions of a lit shader: the checker cell, and for each light whether the surface faces
 // it and, if so, whether anything blocks it. A constant shader makes none.
-void addShadingMargins(const Scene& scene, const Bvh* bvh, const Ray& ray, const SceneHit& nearest,
-                       MarginAccumulator& margins) {
+void addShadingMargins(const RenderContext& context, const DecisionBounds& bounds, const Ray& ray,
+                       const SceneHit& nearest, RayDecisions& decisions) {
+    const Scene& scene = context.scene;
     const Node& node = scene.nodes[nearest.nodeIndex];
     const Shader& shader = scene.shaders[node.shaderIndex];
     if (std::holds_alternative<ConstantShader>(shader)) {
@@ -218,41 +261,48 @@ void addShadingMargins(const Scene& scene, const Bvh* bvh, const Ray& ray, const
     const double normalRoundoff = sphere ? hitScale / std::abs(sphere->radius) : 0.0;  // a plane's is exact
 
     if (const auto* checker = std::get_if<CheckerShader>(&shader)) {
-        if (sphere) {
-            margins.add(sphereCheckerMargin(hit.geometricNormal, checker->size, normalRoundoff));
-        } else {
-            margins.add(planeCheckerMargin(textureCoordinates(node.geometry, hit), checker->size, hitScale));
-        }
+        const double margin =
+            sphere ? sphereCheckerMargin(hit.geometricNormal, checker->size, normalRoundoff) / bounds.sphereChecker
+                   : planeCheckerMargin(textureCoordinates(node.geometry, hit), checker->size,
+                                        planeTextureScales(hit, ray)) /
+                         bounds.general;
+        decisions.add(margin, kCheckerPart);
     }
-    for (const PointLight& light : scene.lights) {
+    for (std::size_t index = 0; index < scene.lights.size(); ++index) {
+        const PointLight& light = scene.lights[index];
+        MarginAccumulator margins;
         const glm::dvec3 toLight = light.position - hit.point;
         const double distance = glm::length(toLight);
         if (distance == 0.0) {
             margins.add(0.0);  // a light on the point: no direction to face, nothing to decide by
-            continue;
+        } else {
+            const double cosTheta = glm::dot(hit.facingNormal, toLight / distance);
+            const double directionRoundoff = (hitScale + glm::length(light.position - eye)) / distance;
+            margins.add(facingMargin(cosTheta, normalRoundoff, directionRoundoff));
+            if (cosTheta > 0.0) {
+                addShadowMargins(context, nearest.nodeIndex, hit, hitScale, eye, light, margins);
+            }
         }
-        const double cosTheta = glm::dot(hit.facingNormal, toLight / distance);
-        const double directionRoundoff = (hitScale + glm::length(light.position - eye)) / distance;
-        margins.add(facingMargin(cosTheta, normalRoundoff, directionRoundoff));
-        if (cosTheta > 0.0) {
-            addShadowMargins(scene, bvh, nearest.nodeIndex, hit, hitScale, eye, light, margins);
-        }
+        decisions.add(margins.smallest / bounds.general, lightPart(index));
     }
 }
 
-TracedPixel tracePixel(const Scene& scene, const Bvh* bvh, const Ray& ray) {
-    const std::optional<SceneHit> nearest = findNearestHit(ray, scene, bvh);
-    MarginAccumulator margins;
-    addIntersectionMargins(scene, bvh, ray, nearest, margins);
-    if (nearest) {
-        addShadingMargins(scene, bvh, ray, *nearest, margins);
-    }
+// Sample `sample` of pixel (x, y), its decisions measured against their bounds.
+TracedPixel tracePixel(const RenderContext& context, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
+    const Scene& scene = context.scene;
+    const Ray ray = cameraRay(context.sheet, scene.image, x, y, sample);
+    const DecisionBounds bounds = decisionBounds(
+        context.roundoff, cameraDirectionRoundoff(context.sheet, sheetPosition(scene.image, x, y, sample)));
+    const std::optional<SceneHit> nearest = findNearestHit(ray, scene, context.bvh);
+    RayDecisions decisions;
+    addIntersectionMargins(context, bounds, ray, nearest, decisions);
     if (!nearest) {
-        return {scene.background, PixelClass{}, margins.stored(), std::nullopt};
+        return {scene.background, PixelClass{}, decisions, std::nullopt};
     }
+    addShadingMargins(context, bounds, ray, *nearest, decisions);
     // The classification comes from the decisions that made the colour, not a second look.
-    const ShadedHit shaded = shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, bvh);
-    return {shaded.color, PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags}, margins.stored(), nearest->hit};
+    const ShadedHit shaded = shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, context.bvh);
+    return {shaded.color, PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags}, decisions, nearest->hit};
 }
 
 // One pixel: the average of its samples, classified by its first.
@@ -260,35 +310,37 @@ struct RenderedPixel {
     Color color;
     PixelClass pixelClass;
     float margin;
+    PixelAmbiguity ambiguity;
     std::optional<Hit> firstHit;
 };
 
-RenderedPixel renderPixel(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t x,
-                          std::uint32_t y) {
-    // With several samples the pixel is classified by its first and is as ambiguous as its
-    // closest call: only then do equal classes mean equal colours.
-    const std::uint32_t samples = scene.image.samplesPerPixel;
-    const TracedPixel first = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, 0));
+RenderedPixel renderPixel(const RenderContext& context, std::uint32_t x, std::uint32_t y) {
+    // With several samples the pixel is classified by its first, whose near-ties are the class's;
+    // a near-tie in any other sample may change the colour alone.
+    const ImageSettings& image = context.scene.image;
+    const TracedPixel first = tracePixel(context, x, y, 0);
     Color sum = first.color;
-    float margin = first.margin;
-    for (std::uint32_t sample = 1; sample < samples; ++sample) {
-        const TracedPixel pixel = tracePixel(scene, bvh, cameraRay(sheet, scene.image, x, y, sample));
+    MarginAccumulator margin = first.decisions.all;
+    PixelAmbiguity ambiguity = first.decisions.ambiguity;
+    for (std::uint32_t sample = 1; sample < image.samplesPerPixel; ++sample) {
+        const TracedPixel pixel = tracePixel(context, x, y, sample);
         sum += pixel.color;
-        margin = std::min(margin, pixel.margin);
+        margin.add(pixel.decisions.all.smallest);
+        ambiguity.colour = ambiguity.colour || pixel.decisions.ambiguity.any();
     }
-    return {sum / double(samples), first.pixelClass, margin, first.hit};
+    return {sum / double(image.samplesPerPixel), first.pixelClass, margin.stored(), ambiguity, first.hit};
 }
 
 // Row `y` of the image into row `y - firstRow` of `band`.
-void renderRow(const Scene& scene, const Bvh* bvh, const PixelSheet& sheet, std::uint32_t y, std::uint32_t firstRow,
-               CpuRender& band) {
+void renderRow(const RenderContext& context, std::uint32_t y, std::uint32_t firstRow, CpuRender& band) {
     const std::uint32_t width = band.image.width;
     for (std::uint32_t x = 0; x < width; ++x) {
-        const RenderedPixel pixel = renderPixel(scene, bvh, sheet, x, y);
+        const RenderedPixel pixel = renderPixel(context, x, y);
         const std::size_t index = std::size_t(y - firstRow) * width + x;
         band.image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
         band.classes[index] = pixel.pixelClass;
         band.margins[index] = pixel.margin;
+        band.ambiguity[index] = pixel.ambiguity;
         if (!band.depth.empty() && pixel.firstHit) {
             band.depth[index] = float(pixel.firstHit->t);
             band.normals[index] = glm::vec3(pixel.firstHit->facingNormal);
@@ -305,6 +357,7 @@ void prepareBand(CpuRender& band, std::uint32_t width, std::uint32_t rows, bool 
     band.image.pixels.resize(pixels);
     band.classes.resize(pixels);
     band.margins.resize(pixels);
+    band.ambiguity.resize(pixels);
     band.depth.assign(withAovs ? pixels : 0, std::numeric_limits<float>::infinity());
     band.normals.assign(withAovs ? pixels : 0, glm::vec3(0.0f));
 }
@@ -335,24 +388,27 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount) {
     return renderOnCpu(scene, threadCount, Acceleration::Auto);
 }
 
-CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs) {
-    const CpuBandRenderer renderer(scene, threadCount, acceleration, withAovs);
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs,
+                      DecisionRoundoff roundoff) {
+    const CpuBandRenderer renderer(scene, threadCount, acceleration, withAovs, roundoff);
     CpuRender render;
     renderer.render(0, scene.image.height, render);
     return render;
 }
 
-CpuBandRenderer::CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs)
+CpuBandRenderer::CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs,
+                                 DecisionRoundoff roundoff)
     : scene_(scene),
       sheet_(makePixelSheet(scene.camera, sheetAspect(scene))),
       threads_(std::min({cpuThreadCount(threadCount), kMaxCpuThreads, std::max(scene.image.height, 1u)})),
-      withAovs_(withAovs) {
+      withAovs_(withAovs),
+      roundoff_(roundoff) {
     checkShaderIndices(scene);
     bvh_ = bvhFor(scene, acceleration);  // built once and shared, read-only, by every worker
 }
 
 std::uint32_t CpuBandRenderer::rowsPerBand(std::size_t bandBytes) const {
-    const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float) +
+    const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float) + sizeof(PixelAmbiguity) +
                                    (withAovs_ ? sizeof(float) + sizeof(glm::vec3) : 0);
     const std::size_t rowBytes = pixelBytes * std::max(scene_.image.width, 1u);
     return std::uint32_t(std::clamp<std::size_t>(bandBytes / rowBytes, 1, std::max(scene_.image.height, 1u)));
@@ -363,13 +419,13 @@ void CpuBandRenderer::render(std::uint32_t firstRow, std::uint32_t rows, CpuRend
     if (scene_.image.width == 0 || rows == 0) {
         return;
     }
-    const Bvh* const bvh = bvh_ ? &*bvh_ : nullptr;
+    const RenderContext context{scene_, bvh_ ? &*bvh_ : nullptr, sheet_, roundoff_};
     const unsigned workers = std::min(threads_, rows);
     // Rows are interleaved (worker w takes rows w, w + n, ...) so that expensive regions of
     // the image are shared out; each row is written by exactly one worker, so no locking.
     const auto renderRows = [&](unsigned worker) {
         for (std::uint32_t y = firstRow + worker; y < firstRow + rows; y += workers) {
-            renderRow(scene_, bvh, sheet_, y, firstRow, band);
+            renderRow(context, y, firstRow, band);
         }
     };
     // jthread joins on destruction, also if starting a later worker throws. The calling
@@ -387,7 +443,7 @@ float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y) {
     checkShaderIndices(scene);
     const std::optional<Bvh> bvh = bvhFor(scene, Acceleration::Auto);
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
-    return renderPixel(scene, bvh ? &*bvh : nullptr, sheet, x, y).margin;
+    return renderPixel({scene, bvh ? &*bvh : nullptr, sheet, DecisionRoundoff{}}, x, y).margin;
 }
 
 }  // namespace hexray

@@ -11,30 +11,30 @@
 #include "accel/bvh.h"
 #include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
+#include "cpu/cpu_margins.h"
 #include "image/image.h"
 #include "image/pixel_class.h"
 #include "scene/scene.h"
 
 namespace hexray {
 
-// A decision whose relative margin is below this could go the other way under a
-// float32-sized perturbation of the shader's camera-relative arithmetic (2^-17: 128 float32
-// units of roundoff, room for the error of a chain of operations).
-inline constexpr double kAmbiguityMargin = 1.0 / 131072.0;
-
 struct CpuRender {
     Image image;
     std::vector<PixelClass> classes;  // per pixel, row-major like the image
-    // Per pixel, the smallest relative margin of any discrete decision made for it (hit or
-    // miss, which node, which checker cell, facing each light, shadowed or not); infinity
-    // when no decision was made. Below kAmbiguityMargin the pixel is ambiguous.
+    // Per pixel, the smallest relative margin, in float32 terms (see DecisionRoundoff), of any
+    // discrete decision made for it in any sample (hit or miss, which node, which checker cell,
+    // facing each light, shadowed or not); infinity when no decision was made. Below
+    // kAmbiguityMargin the pixel is ambiguous.
     std::vector<float> margins;
+    // Per pixel, which parts of its class are near-tied (from its first sample, whose decisions
+    // the class records; a near-tie in another sample marks the colour).
+    std::vector<PixelAmbiguity> ambiguity;
     // With AOVs asked for, from each pixel's first sample (as the classes): the hit distance
     // (+inf for the background) and the shading normal (facing the ray; 0 for the background).
     std::vector<float> depth;
     std::vector<glm::vec3> normals;
 
-    bool isAmbiguous(std::size_t pixel) const { return margins[pixel] < kAmbiguityMargin; }
+    bool isAmbiguous(std::size_t pixel) const { return ambiguity[pixel].any(); }
 };
 
 // The camera ray of sample `sample` of pixel (x, y).
@@ -54,10 +54,11 @@ unsigned cpuThreadCount(unsigned requested);
 class CpuBandRenderer {
 public:
     // `threadCount`: 0 = all cores; at most kMaxCpuThreads and the image's height are used.
-    // `withAovs`: also the depth and normals. Throws std::out_of_range for a node whose shader
-    // index is out of range.
+    // `withAovs`: also the depth and normals. `roundoff`: the arithmetic the margins are read
+    // against (that of the render to be compared). Throws std::out_of_range for a node whose
+    // shader index is out of range.
     CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration = Acceleration::Auto,
-                    bool withAovs = false);
+                    bool withAovs = false, DecisionRoundoff roundoff = {});
 
     // The threads each band is shared among (at most the band's rows).
     unsigned threadCount() const { return threads_; }
@@ -74,6 +75,7 @@ private:
     std::optional<Bvh> bvh_;
     unsigned threads_;
     bool withAovs_;
+    DecisionRoundoff roundoff_;
 };
 
 // Renders image.samplesPerPixel rays per pixel, rows spread over `threadCount` threads
@@ -83,9 +85,11 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount = 0);
 
 // How renderOnCpu finds what a ray meets (Auto: a BVH when bvhPays(scene)). Every choice
 // gives the same image, classes and margins bit for bit. `withAovs`: also the depth and normals.
-CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs = false);
+// `roundoff`: as for CpuBandRenderer.
+CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs = false,
+                      DecisionRoundoff roundoff = {});
 
-// The margin renderOnCpu would give pixel (x, y), without rendering the others.
+// The margin renderOnCpu would give pixel (x, y) (in float32 terms), without rendering the others.
 float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y);
 
 }  // namespace hexray

@@ -8,12 +8,14 @@
 //   object-id.exr   Y: node index; -1 for the background
 //   light-<i>.exr   Y: 1 where light i reaches the point, 0 where it is shadowed or faces away,
 //                   and 0 where lights do not apply (background, constant shaders); lights 0..30
-//   margin.exr      Y (compare only): the CPU reference's smallest decision margin; +inf where
-//                   no decision was made; below 2^-17 the pixel is ambiguous
+//   margin.exr      Y (compare only): the CPU reference's smallest decision margin, in units of
+//                   that decision's error bound at the compared precision (cpu_margins.h); +inf
+//                   where no decision was made; below 1 the pixel is ambiguous
 //
 // Previews: depth on a log scale from near = bright yellow to far = dark blue, background black; normal as
 // (n + 1) / 2 in RGB; object id a colour per node, background black; lights white where lit;
-// margin log10 from 1e-12 (dark) to 1 (bright), ambiguous pixels red, no decision black.
+// margin log10 from the ambiguity threshold (dark) to 1e9 times it (bright), ambiguous pixels red,
+// no decision black.
 
 #include <cstdint>
 #include <filesystem>

@@ -176,7 +176,7 @@ void AovSetWriter::writeMargins(const AovBand& band) {
         if (margin < layout_.ambiguityMargin) {
             return Rgb{255, 0, 0};
         }
-        return ramp((std::log10(std::max(margin, 1e-12)) + 12.0) / 12.0);
+        return ramp(std::log10(margin / layout_.ambiguityMargin) / 9.0);
     }));
 }
 

@@ -25,4 +25,29 @@ struct PixelClass {
     bool operator==(const PixelClass&) const = default;
 };
 
+// Which parts of a pixel's classification the CPU reference could not settle: each part whose
+// decision came within roundoff of going the other way ("near-tied"). A comparison excuses a
+// difference in those parts only; the others must still agree.
+struct PixelAmbiguity {
+    bool node = false;        // which node (or the background) the pixel shows
+    std::uint32_t flags = 0;  // PixelClass::flags bits: the checker cell, each classified light
+    // A near-tied decision the classification does not record: another sample's (the class
+    // comes from the first), or a light beyond the classified ones. The colour may then differ
+    // honestly even where the classes agree.
+    bool colour = false;
+
+    bool any() const { return node || flags != 0 || colour; }
+
+    // Every part: a pixel where nothing can be held against the test render.
+    static PixelAmbiguity everything() { return {true, ~0u, true}; }
+
+    PixelAmbiguity& operator|=(const PixelAmbiguity& other) {
+        node = node || other.node;
+        flags |= other.flags;
+        colour = colour || other.colour;
+        return *this;
+    }
+    bool operator==(const PixelAmbiguity&) const = default;
+};
+
 }  // namespace hexray

@@ -275,6 +275,7 @@ TEST(Bvh, RenderIsBitIdenticalWithAndWithout) {
     EXPECT_EQ(plain.classes, accelerated.classes);
     ASSERT_EQ(plain.margins.size(), accelerated.margins.size());
     EXPECT_EQ(0, std::memcmp(plain.margins.data(), accelerated.margins.data(), plain.margins.size() * sizeof(float)));
+    EXPECT_EQ(plain.ambiguity, accelerated.ambiguity);
     std::size_t spherePixels = 0;
     std::size_t ambiguous = 0;
     for (std::size_t pixel = 0; pixel < plain.classes.size(); ++pixel) {
@@ -304,6 +305,7 @@ TEST(Bvh, MarginsAreBitIdenticalWhereNearMissesDecideThem) {
         different += std::bit_cast<std::uint32_t>(plain.margins[pixel]) != std::bit_cast<std::uint32_t>(accelerated.margins[pixel]);
     }
     EXPECT_EQ(different, 0u);
+    EXPECT_EQ(plain.ambiguity, accelerated.ambiguity);
 }
 
 TEST(Bvh, PaysOnlyForManySpheres) {

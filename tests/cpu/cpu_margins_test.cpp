@@ -15,6 +15,7 @@
 #include "cpu/cpu_margins.h"
 #include "cpu/cpu_renderer.h"
 #include "cpu/cpu_shading.h"
+#include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
 
@@ -24,6 +25,9 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 const glm::dvec3 kOrigin(0.0);
+// The relative margin below which a float32 camera ray's decision is near-tied, for a typical
+// camera (a direction good to 18 units of roundoff).
+const double kFloat32Bound = decisionBounds({}, 18.0).general;
 
 Ray rayFrom(const glm::dvec3& origin, const glm::dvec3& toward) {
     return Ray{origin, glm::normalize(toward)};
@@ -89,8 +93,8 @@ TEST(MarginAccumulator, NaNCountsAsZero) {
 }
 
 TEST(MarginAccumulator, StoredFloatNeverRoundsUpAcrossTheThreshold) {
-    // Just below 2^-17 in double rounds to exactly 2^-17 as a float, which would read as
-    // unambiguous; the stored value must stay below.
+    // Just below the threshold in double rounds to exactly the threshold as a float, which would
+    // read as unambiguous; the stored value must stay below.
     MarginAccumulator margins;
     margins.add(kAmbiguityMargin * (1.0 - 0x1p-40));
     EXPECT_LT(margins.stored(), static_cast<float>(kAmbiguityMargin));
@@ -141,7 +145,7 @@ TEST(SphereCrossingMargin, RayThroughTheCentreIsRadiusOverDistancePlusRadius) {
     const Sphere sphere{{0, 0, 10}, 1.0};
     const double margin = sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, sphereScale(sphere, kOrigin));
     EXPECT_DOUBLE_EQ(margin, 1.0 / 11.0);
-    EXPECT_GE(margin, kAmbiguityMargin);
+    EXPECT_GE(margin, kFloat32Bound);
 }
 
 TEST(SphereCrossingMargin, NearMissIsItsClearance) {
@@ -189,12 +193,70 @@ TEST(SphereCrossingMargin, BlockerWellInsideTheSegment) {
     EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), 1.0 / 40.0);
 }
 
+TEST(SphereCrossingMargins, SeparateTheSilhouetteFromTheEnds) {
+    // Through the centre from 10 away: the chord shrinking by r is the line's part; the roots at
+    // 9 and 11 the ends'.
+    const Sphere sphere{{0, 0, 10}, 1.0};
+    const SphereCrossingMargins through = sphereCrossingMargins(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, 11.0);
+    EXPECT_DOUBLE_EQ(through.line, 1.0 / 11.0);
+    EXPECT_DOUBLE_EQ(through.ends, 9.0 / 11.0);
+    // From a point on the sphere, the root at 0 is an end, the silhouette is far.
+    const SphereCrossingMargins onSurface =
+        sphereCrossingMargins(rayFrom({0, 0, 9}, {0, 0, 1}), sphere, kInfinity, 10.0);
+    EXPECT_EQ(onSurface.ends, 0.0);
+    EXPECT_DOUBLE_EQ(onSurface.line, 1.0 / 10.0);
+    // A line that misses has no ends.
+    EXPECT_EQ(sphereCrossingMargins(rayFrom(kOrigin, {0, 1, 0}), sphere, kInfinity, 11.0).ends, kInfinity);
+}
+
+TEST(OwnSphereShadowMargin, IsTheGapBetweenTheExitAndTheLight) {
+    // From the inner point (0, 0, 10) of the sphere of radius 10 at the origin toward -Z: the
+    // ray leaves the sphere at t = 20; a light at t = 25 (outside) or 15 (inside) is 5 away.
+    const Sphere sphere{{0, 0, 0}, 10.0};
+    const Ray ray = rayFrom({0, 0, 10}, {0, 0, -1});
+    EXPECT_DOUBLE_EQ(ownSphereShadowMargin(ray, sphere, 25.0, 50.0), 5.0 / 50.0);
+    EXPECT_DOUBLE_EQ(ownSphereShadowMargin(ray, sphere, 15.0, 50.0), 5.0 / 50.0);
+    EXPECT_EQ(ownSphereShadowMargin(ray, sphere, 20.0, 50.0), 0.0);
+}
+
+// ---------------------------------------------------------------- bounds
+
+TEST(CameraDirectionRoundoff, GrowsAsAWideFieldOfViewCancelsAtTheCentre) {
+    CameraSettings camera;
+    camera.fovDegrees = 90.0;
+    const PixelSheet sheet = makePixelSheet(camera, 4.0 / 3.0);
+    // Corners at (+-0.8, +-0.6, 1): the centre's x is 8 units of 0.8 + 1.6 * 0.5 over length 1.
+    EXPECT_NEAR(cameraDirectionRoundoff(sheet, {0.5, 0.5}), 8.0 * 1.6 + 5.0, 1e-9);
+    // At 179 degrees the sheet is 100 times as wide, and so is the error at its centre.
+    camera.fovDegrees = 179.0;
+    EXPECT_GT(cameraDirectionRoundoff(makePixelSheet(camera, 4.0 / 3.0), {0.5, 0.5}), 1000.0);
+}
+
+TEST(DecisionBounds, TwiceTheDirectionAndSixteenUnitsOfTheArithmeticsRoundoff) {
+    const DecisionBounds f32 = decisionBounds({}, 18.0);
+    EXPECT_EQ(f32.general, 68.0 * 0x1p-24);
+    EXPECT_EQ(f32.sphereChecker, 128.0 * 0x1p-24);  // never below the float atan's allowance
+    const DecisionBounds f64 = decisionBounds({0x1p-53, 0x1p-24}, 18.0);
+    EXPECT_EQ(f64.general, 68.0 * 0x1p-53);
+    EXPECT_EQ(f64.sphereChecker, 128.0 * 0x1p-24);
+    EXPECT_EQ(decisionBounds({}, 100.0).sphereChecker, 232.0 * 0x1p-24);
+}
+
+TEST(RayDecisions, MarkOnlyThePartsWhoseMarginIsBelowOne) {
+    RayDecisions decisions;
+    decisions.add(3.0, PixelAmbiguity{true, 0, false});
+    decisions.add(0.5, lightPart(2));
+    decisions.add(std::numeric_limits<double>::quiet_NaN(), lightPart(40));  // beyond the classified lights
+    EXPECT_EQ(decisions.ambiguity, (PixelAmbiguity{false, PixelClass::litBit(2), true}));
+    EXPECT_EQ(decisions.all.smallest, 0.0);
+}
+
 // ---------------------------------------------------------------- planes
 
 TEST(CameraRayPlaneMargin, IsTheVerticalComponentOfTheDirection) {
     EXPECT_EQ(cameraRayPlaneMargin(1e-9, -5.0), 1e-9);
-    EXPECT_LT(cameraRayPlaneMargin(1e-9, -5.0), kAmbiguityMargin);
-    EXPECT_LT(cameraRayPlaneMargin(-1e-9, -5.0), kAmbiguityMargin);
+    EXPECT_LT(cameraRayPlaneMargin(1e-9, -5.0), kFloat32Bound);
+    EXPECT_LT(cameraRayPlaneMargin(-1e-9, -5.0), kFloat32Bound);
     EXPECT_EQ(cameraRayPlaneMargin(-0.5, -5.0), 0.5);
     EXPECT_EQ(cameraRayPlaneMargin(0.0, 3.0), 0.0);
 }
@@ -230,16 +292,37 @@ TEST(NearestNodeMargin, SphereTouchingThePlaneTiesAtTheContactPoint) {
     ASSERT_TRUE(ballHit);
     const double scale = hitPointScale(floor, *floorHit, ray) + hitPointScale(ball, *ballHit, ray);
     EXPECT_LT(nearestNodeMargin(std::min(floorHit->t, ballHit->t), std::max(floorHit->t, ballHit->t), scale),
-              kAmbiguityMargin);
+              kFloat32Bound);
 }
 
 // ---------------------------------------------------------------- checker cells
 
 TEST(PlaneCheckerMargin, OnAnEdgeIsZeroAndMidCellIsHalfASize) {
-    EXPECT_EQ(planeCheckerMargin({40.0, 7.0}, 20.0, 100.0), 0.0);
-    EXPECT_EQ(planeCheckerMargin({7.0, -60.0}, 20.0, 100.0), 0.0);
-    EXPECT_DOUBLE_EQ(planeCheckerMargin({10.0, 30.0}, 20.0, 100.0), 10.0 / 120.0);
-    EXPECT_DOUBLE_EQ(planeCheckerMargin({-13.0, 30.0}, 20.0, 100.0), 7.0 / 120.0);
+    const glm::dvec2 scales(100.0);
+    EXPECT_EQ(planeCheckerMargin({40.0, 7.0}, 20.0, scales), 0.0);
+    EXPECT_EQ(planeCheckerMargin({7.0, -60.0}, 20.0, scales), 0.0);
+    EXPECT_DOUBLE_EQ(planeCheckerMargin({10.0, 30.0}, 20.0, scales), 10.0 / 120.0);
+    EXPECT_DOUBLE_EQ(planeCheckerMargin({-13.0, 30.0}, 20.0, scales), 7.0 / 120.0);
+}
+
+TEST(PlaneCheckerMargin, EachAxisAgainstItsOwnScale) {
+    // 5 from an x edge, 10 from a z edge: the z edge is nearer in margin when its scale is
+    // more than three times x's (10 / (300 + 20) < 5 / (50 + 20)).
+    EXPECT_DOUBLE_EQ(planeCheckerMargin({25.0, 30.0}, 20.0, {50.0, 300.0}), 10.0 / 320.0);
+    EXPECT_DOUBLE_EQ(planeCheckerMargin({25.0, 30.0}, 20.0, {50.0, 100.0}), 5.0 / 70.0);
+}
+
+TEST(PlaneTextureScales, DistancePlusTheAxisOffsetOverGrazingCosine) {
+    // From (1, 10, 2) toward (3, -4, 12) (length 13): the hit 10 below is 32.5 away, at offset
+    // (7.5, -10, 30); |d.y| = 4/13.
+    const Ray ray = rayFrom({1, 10, 2}, {3, -4, 12});
+    const std::optional<Hit> hit = intersectGeometry(ray, Plane{0.0});
+    ASSERT_TRUE(hit);
+    const glm::dvec2 scales = planeTextureScales(*hit, ray);
+    EXPECT_NEAR(scales.x, 32.5 + 7.5 * 13.0 / 4.0, 1e-12);
+    EXPECT_NEAR(scales.y, 32.5 + 30.0 * 13.0 / 4.0, 1e-12);
+    // Parallel to the plane: no bound.
+    EXPECT_EQ(planeTextureScales(*hit, rayFrom({1, 10, 2}, {1, 0, 0})).x, kInfinity);
 }
 
 TEST(SphereCheckerMargin, MidCellIsTheNearestEdgeInNormalSpace) {
@@ -280,8 +363,8 @@ TEST(SphereCheckerMargin, AMultipleOfSizeBeyondThePoleIsNoEdge) {
 // ---------------------------------------------------------------- facing a light
 
 TEST(FacingMargin, TerminatorIsAmbiguous) {
-    EXPECT_LT(facingMargin(1e-12, 11.0, 2.0), kAmbiguityMargin);
-    EXPECT_LT(facingMargin(-1e-12, 0.0, 2.0), kAmbiguityMargin);
+    EXPECT_LT(facingMargin(1e-12, 11.0, 2.0), kFloat32Bound);
+    EXPECT_LT(facingMargin(-1e-12, 0.0, 2.0), kFloat32Bound);
     EXPECT_DOUBLE_EQ(facingMargin(0.5, 0.0, 2.0), 0.25);
     EXPECT_DOUBLE_EQ(facingMargin(-0.5, 3.0, 2.0), 0.1);
 }
@@ -305,8 +388,8 @@ TEST(RenderMargins, CheckerEdgeRowOfTheLectureSceneIsAmbiguous) {
     ASSERT_TRUE(edgeHit);
     EXPECT_NEAR(std::remainder(edgeHit->point.z, size), 0.0, 1e-9);
     EXPECT_LT(planeCheckerMargin(textureCoordinates(floor.geometry, *edgeHit), size,
-                                 hitPointScale(floor.geometry, *edgeHit, edgeRay)),
-              kAmbiguityMargin);
+                                 planeTextureScales(*edgeHit, edgeRay)),
+              kFloat32Bound);
 
     // Pixel (100, 500) aims at (-0.6, -0.4, 1) and lands at (-67.5, 15, -7.5): 7.5 from the
     // nearest edge in both directions, with nothing else close either.
@@ -363,6 +446,86 @@ TEST(RenderMargins, LightOnAPlaneMakesTheShadowTestAmbiguous) {
     EXPECT_FALSE(render.isAmbiguous(pixel)) << "margin " << render.margins[pixel];
 }
 
+TEST(RenderMargins, ASphereSeenFromInsideShadowsItsOwnPointsAndThatDecisionHasAMargin) {
+    // The camera at the centre of a ball of radius 10; pixel (4, 3) looks down +Z at the inner
+    // surface point (0, 0, 10), whose inward normal faces a light behind the camera. Whether the
+    // ball itself blocks that light is whether the light lies outside the ball.
+    Scene scene = smallScene({0, 0, 0});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 0}, 10.0}, 0});
+    scene.lights.push_back(PointLight{{0, 0, -10.0 - 1e-9}, Color(1.0), 100.0});
+    const std::size_t centre = pixelIndex(scene, 4, 3);
+    CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[centre], (PixelClass{0, 0}));  // just outside: shadowed by the ball
+    EXPECT_TRUE(render.isAmbiguous(centre)) << "margin " << render.margins[centre];
+
+    // Clearly outside, and clearly inside: decided either way, by a wide margin.
+    scene.lights[0].position = {0, 0, -15};
+    render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[centre], (PixelClass{0, 0}));
+    EXPECT_FALSE(render.isAmbiguous(centre)) << "margin " << render.margins[centre];
+    scene.lights[0].position = {0, 0, -5};
+    render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[centre], (PixelClass{0, PixelClass::litBit(0)}));
+    EXPECT_FALSE(render.isAmbiguous(centre)) << "margin " << render.margins[centre];
+}
+
+TEST(RenderAmbiguity, ANearTieLeavesOnlyItsOwnPartUndecided) {
+    // The terminator: only light 0's part. (The scene of RenderMargins.TerminatorIsAmbiguous.)
+    Scene scene = smallScene({0, 0, -10});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 0}, 1.0}, 0});
+    scene.lights.push_back(PointLight{{5, 0, -1}, Color(1.0), 100.0});
+    scene.lights.push_back(PointLight{{0, 0, -5}, Color(1.0), 100.0});
+    const std::size_t centre = pixelIndex(scene, 4, 3);
+    CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.classes[centre], (PixelClass{0, PixelClass::litBit(1)}));
+    EXPECT_EQ(render.ambiguity[centre], lightPart(0));
+
+    // A checker edge through the point: the checker cell, and still light 0.
+    scene.shaders[0] = CheckerShader{{1, 1, 1}, {0, 0, 0}, 90.0};  // the point lies at latitude 0
+    render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.ambiguity[centre],
+              (PixelAmbiguity{false, PixelClass::kOddCheckerBit | PixelClass::litBit(0), false}));
+}
+
+TEST(RenderAmbiguity, ALightBeyondTheClassifiedOnesMarksTheColour) {
+    Scene scene = smallScene({0, 0, -10});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 0}, 1.0}, 0});
+    scene.lights.assign(PixelClass::kClassifiedLights, PointLight{{0, 0, -5}, Color(0.01), 100.0});
+    scene.lights.push_back(PointLight{{5, 0, -1}, Color(1.0), 100.0});  // on the terminator
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.ambiguity[pixelIndex(scene, 4, 3)], (PixelAmbiguity{false, 0, true}));
+}
+
+TEST(RenderAmbiguity, AnEyeOnASphereLeavesEverythingUndecided) {
+    // The eye on the surface of a ball: whether a ray sees the ball's near side at t = 0 or its
+    // far side decides all the rest.
+    Scene scene = smallScene({0, 0, 0});
+    scene.nodes.push_back(Node{Sphere{{0, 0, 10}, 10.0}, 0});
+    scene.lights.push_back(PointLight{{0, 0, 10}, Color(1.0), 100.0});
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.ambiguity[pixelIndex(scene, 4, 3)], PixelAmbiguity::everything());
+}
+
+TEST(RenderAmbiguity, ANearTieInALaterSampleMarksTheColourOnly) {
+    // Looking straight down from 1 above a checkered floor (cells of 10), one pixel, 2 samples:
+    // the eye placed so that sample 1 lands exactly on the edge x = 0, sample 0 a cell's
+    // fraction away from every edge.
+    Scene scene = smallScene({0, 1, 0});
+    scene.image.width = scene.image.height = 1;
+    scene.image.sampling = Sampling::Center;
+    scene.image.samplesPerPixel = 2;
+    scene.camera.pitchDegrees = -90.0;
+    scene.shaders[0] = CheckerShader{{1, 1, 1}, {0, 0, 0}, 10.0};
+    scene.nodes.push_back(Node{Plane{0.0}, 0});
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    const std::optional<Hit> secondHit = intersectPlane(cameraRay(sheet, scene.image, 0, 0, 1), Plane{0.0});
+    ASSERT_TRUE(secondHit);
+    scene.camera.position.x = -secondHit->point.x;
+    const CpuRender render = renderOnCpu(scene, 1);
+    EXPECT_EQ(render.ambiguity[0], (PixelAmbiguity{false, 0, true}));
+    EXPECT_LT(render.margins[0], kAmbiguityMargin);
+}
+
 TEST(RenderMargins, SphereTouchingThePlaneIsAmbiguousAtTheContactPoint) {
     // Looking straight down from (0, 5, 10) at the floor y = 0, which a ball touches from below
     // at (0, 0, 10): a 1x1 image's one ray meets floor and ball at the same point. Constant
@@ -396,18 +559,21 @@ TEST(RenderMargins, SphereTouchingThePlaneIsAmbiguousAtTheContactPoint) {
 
 class ShippedSceneMargins : public testing::TestWithParam<std::filesystem::path> {};
 
+double ambiguousShare(const CpuRender& render) {
+    std::size_t ambiguous = 0;
+    for (std::size_t pixel = 0; pixel < render.ambiguity.size(); ++pixel) {
+        ambiguous += render.isAmbiguous(pixel) ? 1 : 0;
+    }
+    return double(ambiguous) / double(render.ambiguity.size());
+}
+
 TEST_P(ShippedSceneMargins, MostPixelsAreUnambiguous) {
     const Scene scene = loadSceneFile(GetParam());
     const CpuRender render = renderOnCpu(scene);
-    ASSERT_EQ(render.margins.size(), render.image.pixels.size());
-    std::size_t ambiguous = 0;
-    for (std::size_t pixel = 0; pixel < render.margins.size(); ++pixel) {
-        ambiguous += render.isAmbiguous(pixel) ? 1 : 0;
-    }
-    const double share = double(ambiguous) / double(render.margins.size());
-    RecordProperty("ambiguous_pixels", std::to_string(ambiguous));
-    std::printf("[ ambiguous ] %s: %zu of %zu pixels (%.3f %%)\n", GetParam().filename().string().c_str(), ambiguous,
-                render.margins.size(), 100.0 * share);
+    ASSERT_EQ(render.ambiguity.size(), render.image.pixels.size());
+    const double share = ambiguousShare(render);
+    std::printf("[ ambiguous ] %s: %.3f %% of %zu pixels\n", GetParam().filename().string().c_str(), 100.0 * share,
+                render.ambiguity.size());
     // In the demo scenes edge rows, silhouettes, terminators and shadow edges are curves, not
     // areas. Scenes in subfolders (scenes/hard/) are built to sit on knife edges: only reported.
     if (GetParam().parent_path() == test::sourcePath("scenes")) {
@@ -419,3 +585,18 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedSceneMargins, testing::ValuesIn(test::sh
                          [](const testing::TestParamInfo<std::filesystem::path>& info) {
                              return test::sceneTestName(info.param);
                          });
+
+// Issue 12's many-sphere scene, in the precisions and sample counts compare meets it at: within
+// compare's ambiguity limit (docs/accuracy.md quotes these figures).
+TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
+    Scene scene = makeRandomSpheresScene(3000, 1);
+    for (const std::uint32_t samples : {1u, 4u}) {
+        scene.image.samplesPerPixel = samples;
+        for (const auto& [name, roundoff] : {std::pair("f32", DecisionRoundoff{}),
+                                             std::pair("f64", DecisionRoundoff{0x1p-53, 0x1p-24})}) {
+            const double share = ambiguousShare(renderOnCpu(scene, 0, Acceleration::Auto, false, roundoff));
+            std::printf("[ ambiguous ] 3000 random spheres, %u spp, %s: %.3f %%\n", samples, name, 100.0 * share);
+            EXPECT_LT(share, 0.05);
+        }
+    }
+}

@@ -195,7 +195,7 @@ TEST(CpuBandRenderer, ThreadsAreCappedAtTheImageHeightAndTheMaximum) {
 
 TEST(CpuBandRenderer, RowsPerBandGrowWithTheBytesAndShrinkWithTheWidth) {
     const Scene scene = variedScene();
-    const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float);
+    const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float) + sizeof(PixelAmbiguity);
     const CpuBandRenderer renderer(scene, 1);
     EXPECT_EQ(renderer.rowsPerBand(37 * pixelBytes * 5), 5u);
     EXPECT_EQ(renderer.rowsPerBand(1), 1u);                  // at least one row

@@ -27,9 +27,8 @@ void expectAgreesWithTheReference(const Scene& scene, EmbreeTracing tracing) {
     ASSERT_EQ(embree.image.width, scene.image.width);
     ASSERT_EQ(embree.image.height, scene.image.height);
 
-    const PixelMask ambiguous = marginsBelow(reference.margins, kAmbiguityMargin);
-    const RenderComparison comparison = compareRenders(reference.image, reference.classes, ambiguous, embree.image,
-                                                       embree.classes, scene.image.encoding);
+    const RenderComparison comparison = compareRenders(reference.image, reference.classes, reference.ambiguity,
+                                                       embree.image, embree.classes, scene.image.encoding);
     std::printf("  %llu ambiguous pixels, %llu topology mismatches, RMSE %.3f levels, max %.0f, %.3f%% > 1 level\n",
                 static_cast<unsigned long long>(comparison.topology.ambiguous),
                 static_cast<unsigned long long>(comparison.topology.mismatches), comparison.encoded.rmse,
@@ -52,7 +51,7 @@ void expectPacketsDrawWhatSingleRaysDraw(const Scene& scene) {
     const EmbreeRenderer renderer(2);
     const EmbreeRender single = renderer.render(scene, EmbreeTracing::SingleRays);
     const EmbreeRender packets = renderer.render(scene, EmbreeTracing::Packets);
-    const RenderComparison comparison = compareRenders(single.image, single.classes, {}, packets.image,
+    const RenderComparison comparison = compareRenders(single.image, single.classes, Ambiguities{}, packets.image,
                                                        packets.classes, scene.image.encoding);
     EXPECT_EQ(comparison.topology.pixels, std::uint64_t{scene.image.width} * scene.image.height);
     EXPECT_EQ(comparison.topology.mismatches, 0u);

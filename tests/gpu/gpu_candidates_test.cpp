@@ -18,6 +18,7 @@
 #include "gpu/gpu_renderer.h"
 #include "scene/random_spheres.h"
 #include "support/floor_scene.h"
+#include "reference_comparison.h"
 #include "validated_vulkan.h"
 
 namespace hexray {
@@ -181,9 +182,7 @@ TEST_P(GpuCandidatesAgreementTest, AgreeWithTheCpuReference) {
         const Scene scene = randomScene(spheres, 11);
         const GpuRenderResult gpu = renderer.render(scene, GetParam());
         ASSERT_TRUE(gpu.usedCandidateLists) << "Auto must choose the lists past a generated kernel";
-        const CpuRender cpu = renderOnCpu(scene);
-        const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
-                                                  gpu.image, gpu.classes, scene.image.encoding);
+        const RenderComparison c = test::compareWithReference(scene, gpu);
         const Tolerance tolerance;
         EXPECT_LE(c.topology.ambiguousShare(), 0.2);
         EXPECT_EQ(c.topology.mismatches, 0u);

@@ -13,6 +13,7 @@
 #include "gpu/gpu_scene.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
+#include "reference_comparison.h"
 #include "validated_vulkan.h"
 
 namespace hexray {
@@ -133,11 +134,8 @@ TEST_F(GpuRendererTest, ASceneTooLargeForUniformBuffersUsesTheDataDrivenShaderAn
     }
     ASSERT_FALSE(isSmallScene(scene));
     GpuRenderer renderer(context());
-    const CpuRender cpu = renderOnCpu(scene);
     for (Precision precision : {Precision::F32, Precision::F64}) {
-        const GpuRenderResult gpu = renderer.render(scene, precision);
-        const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
-                                                  gpu.image, gpu.classes, scene.image.encoding);
+        const RenderComparison c = test::compareWithReference(scene, renderer.render(scene, precision));
         EXPECT_EQ(c.topology.mismatches, 0u) << precisionName(precision);
         EXPECT_LT(c.topology.ambiguousShare(), 0.2) << precisionName(precision);
         EXPECT_LE(c.encoded.maxAbs, 1.0) << precisionName(precision);
@@ -193,10 +191,7 @@ TEST_F(GpuRendererTest, AntiAliasedRendersAgreeWithTheCpuReference) {
     overrideImageSize(scene, 240, 135, "test");
     overrideSamplesPerPixel(scene, 4, "test");
     GpuRenderer renderer(context());
-    const CpuRender cpu = renderOnCpu(scene);
-    const GpuRenderResult gpu = renderer.render(scene, Precision::F32);
-    const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
-                                              gpu.image, gpu.classes, scene.image.encoding);
+    const RenderComparison c = test::compareWithReference(scene, renderer.render(scene, Precision::F32));
     const Tolerance tolerance;
     EXPECT_EQ(c.topology.mismatches, 0u);
     EXPECT_LE(100.0 * c.encoded.shareOverOneLevel, tolerance.maxSharePercent);

@@ -13,6 +13,7 @@
 #include "gpu/gpu_renderer.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
+#include "reference_comparison.h"
 #include "validated_vulkan.h"
 
 namespace hexray {
@@ -50,10 +51,7 @@ Scene scaled(Scene scene, double factor) {
 // The GPU render agrees with the CPU reference outside ambiguous pixels (compare's defaults), and
 // shows something: a frame that is black where the reference is not cannot pass.
 void expectAgreement(GpuRenderer& renderer, const Scene& scene, Precision precision) {
-    const GpuRenderResult gpu = renderer.render(scene, precision);
-    const CpuRender cpu = renderOnCpu(scene);
-    const RenderComparison c = compareRenders(cpu.image, cpu.classes, marginsBelow(cpu.margins, kAmbiguityMargin),
-                                              gpu.image, gpu.classes, scene.image.encoding);
+    const RenderComparison c = test::compareWithReference(scene, renderer.render(scene, precision));
     EXPECT_LT(c.topology.ambiguousShare(), 0.2);
     EXPECT_EQ(c.topology.mismatches, 0u);
     EXPECT_LE(c.encoded.rmse, Tolerance{}.maxRmseLevels);

@@ -1,0 +1,142 @@
+#include "fuzz/differential_check.h"
+
+#include <cstdio>
+#include <map>
+
+#include "compare/decision_roundoff.h"
+#include "cpu/cpu_renderer.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_writer.h"
+
+namespace hexray::test {
+namespace {
+
+std::string format(const char* pattern, auto... values) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, values...);
+    return text;
+}
+
+std::string topologyDetail(const TopologyComparison& t) {
+    return format("%llu topology mismatches (node %llu, checker cell %llu, lights %llu) of %llu pixels",
+                  static_cast<unsigned long long>(t.mismatches), static_cast<unsigned long long>(t.nodeMismatches),
+                  static_cast<unsigned long long>(t.checkerMismatches),
+                  static_cast<unsigned long long>(t.lightMismatches), static_cast<unsigned long long>(t.pixels));
+}
+
+// The CPU reference at one sample count, for each arithmetic its margins are read against.
+class References {
+public:
+    explicit References(const Scene& scene) : scene_(scene) {}
+
+    const CpuRender& at(Precision precision) {
+        const DecisionRoundoff roundoff = decisionRoundoff(precision);
+        auto found = renders_.find(roundoff.general);
+        if (found == renders_.end()) {
+            found = renders_.emplace(roundoff.general, renderOnCpu(scene_, 1, Acceleration::Auto, false, roundoff))
+                        .first;
+        }
+        return found->second;
+    }
+
+private:
+    const Scene& scene_;
+    std::map<double, CpuRender> renders_;
+};
+
+// A precision asked for float32 on a scene it cannot hold must come back as f64, with a warning.
+std::optional<Finding> checkPlanPrecision(const Scene& scene, Precision requested, const RenderPlan& plan,
+                                          bool deviceHasFloat64, const std::string& where) {
+    const bool overruled = requested == Precision::F32 && deviceHasFloat64 && float32RangeProblem(scene);
+    const Precision expected = overruled ? Precision::F64 : requested;
+    const bool warned = !plan.warnings.empty() && plan.warnings[0].find("float32 cannot hold") != std::string::npos;
+    if (plan.precision != expected || warned != overruled) {
+        return Finding{"precision warning", where,
+                       format("rendered in %s with %zu warnings; expected %s%s", precisionName(plan.precision).data(),
+                              plan.warnings.size(), precisionName(expected).data(), overruled ? " and a warning" : "")};
+    }
+    return std::nullopt;
+}
+
+// What compare's verdict says of one render, as findings.
+void judgeComparison(const RenderComparison& c, const Verdict& verdict, bool robust, bool judgeAmbiguity,
+                     const std::string& where, std::vector<Finding>& findings) {
+    if (!verdict.valuesOk) {
+        findings.push_back({"invalid colour", where,
+                            format("%llu pixels with a NaN, infinite or negative colour",
+                                   static_cast<unsigned long long>(c.invalidColours))});
+    }
+    if (robust && !verdict.topologyOk) {
+        findings.push_back({"topology", where, topologyDetail(c.topology)});
+    }
+    if (robust && (!verdict.shareOk || !verdict.rmseOk)) {
+        findings.push_back({"colour", where,
+                            format("8-bit max %.0f levels, RMSE %.3f, %llu pixels > 1 level of %llu compared",
+                                   c.encoded.maxAbs, c.encoded.rmse,
+                                   static_cast<unsigned long long>(c.encoded.pixelsOverOneLevel),
+                                   static_cast<unsigned long long>(c.encoded.pixels))});
+    }
+    if (judgeAmbiguity && !verdict.ambiguousOk) {
+        findings.push_back({"ambiguous", where, format("%.2f %% of the pixels near-tied", 100.0 * c.topology.ambiguousShare())});
+    }
+}
+
+}  // namespace
+
+std::string describe(const Finding& finding) {
+    return finding.kind + " (" + finding.where + "): " + finding.detail;
+}
+
+std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, const DifferentialOptions& options,
+                                  const GpuRenderFunction& render) {
+    const bool float64 = renderer.abilities().float64;
+    std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32};
+    if (float64) {
+        precisions.push_back(Precision::F64);
+    }
+    std::vector<Finding> findings;
+    for (const std::uint32_t samples : options.samplesPerPixel) {
+        Scene sized = scene;
+        sized.image.width = options.width;
+        sized.image.height = options.height;
+        sized.image.samplesPerPixel = samples;
+        const Precision automatic = renderer.resolve(sized, Precision::Auto);
+        References references(sized);
+        for (const Precision requested : precisions) {
+            const RenderPlan plan = renderer.plan(sized, {requested});
+            const std::string where = format("%s, %u spp", precisionName(requested).data(), samples);
+            if (const auto finding = checkPlanPrecision(sized, requested, plan, float64, where)) {
+                findings.push_back(*finding);
+            }
+            const GpuRenderResult gpu =
+                render ? render(sized, plan) : renderer.render(sized, plan, GpuOutput::LinearAndClasses);
+            const CpuRender& cpu = references.at(plan.precision);
+            const RenderComparison comparison = compareRenders(cpu.image, cpu.classes, cpu.ambiguity, gpu.image,
+                                                               gpu.classes, sized.image.encoding);
+            judgeComparison(comparison, judge(comparison, options.tolerance), plan.formulation == Formulation::Robust,
+                            options.judgeAmbiguity && requested == automatic, where, findings);
+        }
+    }
+    return findings;
+}
+
+std::optional<Finding> checkLoad(const Scene& scene, bool outOfRange) {
+    const std::string text = sceneToJson(scene);
+    try {
+        const Scene loaded = parseScene(text, "generated.json");
+        if (outOfRange) {
+            return Finding{"load", "loader", "a value beyond the supported range was accepted"};
+        }
+        if (sceneToJson(loaded) != text) {
+            return Finding{"load", "loader", "the scene file does not load back as the same scene"};
+        }
+    } catch (const SceneError& error) {
+        const std::string message = error.what();
+        if (!outOfRange || message.find("the supported range") == std::string::npos) {
+            return Finding{"load", "loader", "rejected: " + message};
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace hexray::test

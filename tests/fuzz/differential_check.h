@@ -1,0 +1,55 @@
+#pragma once
+// The differential fuzzer's judgement of one scene: rendered small on the GPU in every precision
+// and on the CPU reference, at a few sample counts, and held to what `hexray compare` holds a
+// render to; plus the loader's side (a scene file outside the supported range is rejected, one
+// float32 cannot hold is rendered in f64 with a warning).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/compare.h"
+#include "gpu/gpu_renderer.h"
+#include "scene/scene.h"
+
+namespace hexray::test {
+
+// One thing a check found wrong.
+struct Finding {
+    // What kind of wrong, for telling one failure from another while shrinking: "invalid colour",
+    // "topology", "colour", "ambiguous", "precision warning", "load".
+    std::string kind;
+    std::string where;   // e.g. "f32, 4 spp"
+    std::string detail;  // the figures
+};
+
+std::string describe(const Finding& finding);
+
+struct DifferentialOptions {
+    std::uint32_t width = 16;
+    std::uint32_t height = 12;
+    std::vector<std::uint32_t> samplesPerPixel = {1, 4};
+    Tolerance tolerance;  // compare's defaults
+    // Whether the ambiguous share is held to tolerance.maxAmbiguousPercent (at the precision auto
+    // picks): not for a scene built with something exactly on a boundary.
+    bool judgeAmbiguity = true;
+};
+
+// How the check obtains a GPU render: the renderer's by default; a test substitutes one.
+using GpuRenderFunction = std::function<GpuRenderResult(const Scene& scene, const RenderPlan& plan)>;
+
+// Everything wrong with `scene` at the options' size and sample counts: in every precision,
+// colours that are NaN, infinite or negative (in either render); in f32 and f64, topology
+// mismatches in decisions the reference did not find near-tied and colours beyond compare's
+// tolerance; at the precision auto picks, an ambiguous share above the limit; and for f32 on a
+// scene float32 cannot hold, anything but f64 with a warning. Empty when the scene passes.
+std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, const DifferentialOptions& options,
+                                  const GpuRenderFunction& render = {});
+
+// The scene written as a scene file must load back exactly; `outOfRange` (a value beyond the
+// supported range) must instead be rejected with a message naming the supported range.
+std::optional<Finding> checkLoad(const Scene& scene, bool outOfRange);
+
+}  // namespace hexray::test

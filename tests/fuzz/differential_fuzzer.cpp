@@ -1,0 +1,140 @@
+// Differential fuzzing: generated scenes (scene_generator.h) through the GPU in every precision
+// and through the CPU reference, each judged as `hexray compare` judges (differential_check.h),
+// for a given time or number of scenes. Every seed is one scene, so a failure is reproduced with
+// --seed N. A failing scene is shrunk (scene_shrinker.h) and written to the failures folder,
+// ready to become a regression input in tests/fuzz/regressions/. Exit code 1 when any scene failed.
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "fuzz/differential_check.h"
+#include "fuzz/scene_generator.h"
+#include "fuzz/scene_shrinker.h"
+#include "gpu/gpu_renderer.h"
+#include "scene/scene_writer.h"
+#include "vulkan/vulkan_context.h"
+
+namespace fs = std::filesystem;
+using namespace hexray;
+using namespace hexray::test;
+
+namespace {
+
+struct FuzzOptions {
+    double seconds = 120;
+    std::uint64_t firstSeed = 0;
+    std::uint64_t scenes = 0;  // 0: until the time is up
+    std::optional<std::uint64_t> seed;  // one scene only, reported in full
+    fs::path failures = "differential-failures";
+    std::uint32_t maxFailures = 5;
+    std::string device;
+};
+
+// Every so many scenes the renderer is rebuilt: it keeps each scene's pipelines.
+constexpr std::uint64_t kScenesPerRenderer = 50;
+// Every so many seeds, the scene moved out of the supported range goes to the loader as well.
+constexpr std::uint64_t kOutOfRangeEvery = 8;
+
+// Everything wrong with the scene of `seed`.
+std::vector<Finding> findingsFor(GpuRenderer& renderer, std::uint64_t seed) {
+    const GeneratedScene generated = generateScene(seed);
+    std::vector<Finding> findings;
+    if (auto finding = checkLoad(generated.scene, false)) findings.push_back(*finding);
+    if (seed % kOutOfRangeEvery == 0) {
+        if (auto finding = checkLoad(generateOutOfRangeScene(seed), true)) findings.push_back(*finding);
+    }
+    DifferentialOptions options;
+    options.judgeAmbiguity = !generated.knifeEdge;
+    for (const Finding& finding : checkRenders(renderer, generated.scene, options)) findings.push_back(finding);
+    return findings;
+}
+
+// The failing scene made small, written as NAME.json with NAME.expected ("accepted") beside it.
+fs::path writeShrunk(GpuRenderer& renderer, std::uint64_t seed, const Finding& first, const fs::path& folder) {
+    const GeneratedScene generated = generateScene(seed);
+    DifferentialOptions options;
+    options.judgeAmbiguity = !generated.knifeEdge;
+    const auto stillFails = [&](const Scene& candidate) {
+        for (const Finding& finding : checkRenders(renderer, candidate, options)) {
+            if (finding.kind == first.kind) return true;
+        }
+        return false;
+    };
+    Scene shrunk = first.kind == "load" ? generated.scene : shrinkScene(generated.scene, stillFails);
+    shrunk.image.width = options.width;
+    shrunk.image.height = options.height;
+    fs::create_directories(folder);
+    const fs::path path = folder / ("differential-seed-" + std::to_string(seed) + ".json");
+    std::ofstream(path) << sceneToJson(shrunk);
+    std::ofstream(fs::path(path).replace_extension(".expected")) << "accepted\n";
+    return path;
+}
+
+int run(const FuzzOptions& options) {
+    const VulkanContext context({nullptr, options.device});
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const std::uint64_t first = options.seed.value_or(options.firstSeed);
+    const std::uint64_t limit = options.seed ? 1 : options.scenes;
+    std::unique_ptr<GpuRenderer> renderer;
+    std::uint64_t done = 0;
+    std::uint32_t failures = 0;
+    std::printf("differential fuzzing on %s from seed %llu\n", context.selected().name.c_str(),
+                static_cast<unsigned long long>(first));
+    for (std::uint64_t seed = first; limit ? done < limit : elapsed() < options.seconds; ++seed, ++done) {
+        if (done % kScenesPerRenderer == 0) {
+            renderer.reset();  // its pipelines go before the next one's are built
+            renderer = std::make_unique<GpuRenderer>(context, GpuRenderer::kDefaultMaxBandBytes, KernelCache(""));
+        }
+        const std::vector<Finding> findings = findingsFor(*renderer, seed);
+        if (options.seed) {
+            std::printf("%s", sceneToJson(generateScene(seed).scene).c_str());
+        }
+        if (findings.empty()) continue;
+        ++failures;
+        std::printf("FAIL seed %llu:\n", static_cast<unsigned long long>(seed));
+        for (const Finding& finding : findings) std::printf("  %s\n", describe(finding).c_str());
+        std::printf("  shrunk: %s\n", writeShrunk(*renderer, seed, findings.front(), options.failures).c_str());
+        if (failures >= options.maxFailures) {
+            ++done;
+            break;
+        }
+    }
+    const double seconds = elapsed();
+    std::printf("%llu scenes (seeds %llu to %llu) in %.1f s: %.2f scenes per second; %u failed\n",
+                static_cast<unsigned long long>(done), static_cast<unsigned long long>(first),
+                static_cast<unsigned long long>(first + done - 1), seconds, double(done) / seconds, failures);
+    return failures ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app("Differential fuzzing: generated scenes through the GPU and the CPU reference");
+    FuzzOptions options;
+    app.add_option("--seconds", options.seconds, "How long to fuzz")->capture_default_str();
+    app.add_option("--first-seed", options.firstSeed, "The first scene's seed; the next ones follow")
+        ->capture_default_str();
+    app.add_option("--scenes", options.scenes, "How many scenes (instead of --seconds)");
+    app.add_option("--seed", options.seed, "Check only this seed's scene, and print it");
+    app.add_option("--failures", options.failures, "Where shrunk failing scenes are written")->capture_default_str();
+    app.add_option("--max-failures", options.maxFailures, "Stop after this many failing scenes")
+        ->capture_default_str();
+    app.add_option("--device", options.device, "A Vulkan device by index or part of its name");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        return run(options);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "hexray_differential_fuzzer: %s\n", error.what());
+        return 2;
+    }
+}
