@@ -3,8 +3,20 @@
 # for a fixed time (default 60 s; bash ci/fuzz.sh SECONDS), starting from the shipped scenes
 # and tests/fuzz/regressions/. Fails on any crash, hang, leak, sanitizer report or broken
 # scene invariant; the input that caused it is written to build-fuzz/artifacts/.
+#
+# bash ci/fuzz.sh --differential SECONDS: instead, the differential fuzzer (generated valid scenes
+# through the GPU in every precision and the CPU reference, judged as `hexray compare` judges) on
+# lavapipe from the normal build in build/; shrunk failing scenes go to build/differential-failures/.
+# It is not part of CI yet: its first runs find open failures (tests/fuzz/open-findings/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = --differential ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build --parallel "$(nproc)" --target hexray_differential_fuzzer >/dev/null
+  lavapipe_icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -n 1)
+  export VK_DRIVER_FILES="$lavapipe_icd" VK_ICD_FILENAMES="$lavapipe_icd"
+  exec build/tests/hexray_differential_fuzzer --seconds "${2:-120}" --failures build/differential-failures
+fi
 seconds=${1:-60}
 
 cmake -S . -B build-fuzz -DHEXRAY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -90,9 +90,13 @@ std::string describe(const Finding& finding) {
 std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, const DifferentialOptions& options,
                                   const GpuRenderFunction& render) {
     const bool float64 = renderer.abilities().float64;
-    std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32};
-    if (float64) {
-        precisions.push_back(Precision::F64);
+    std::vector<Precision> precisions = options.precisions;
+    std::erase_if(precisions, [&](Precision p) { return p == Precision::F64 && !float64; });
+    // Acceleration::Always gives a small scene the data-driven kernel with candidate lists (or, without
+    // spheres, its generated one).
+    std::vector<Acceleration> kernels = {Acceleration::Always};
+    if (options.generatedKernels) {
+        kernels.push_back(Acceleration::Auto);
     }
     std::vector<Finding> findings;
     for (const std::uint32_t samples : options.samplesPerPixel) {
@@ -103,21 +107,46 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
         const Precision automatic = renderer.resolve(sized, Precision::Auto);
         References references(sized);
         for (const Precision requested : precisions) {
-            const RenderPlan plan = renderer.plan(sized, {requested});
-            const std::string where = format("%s, %u spp", precisionName(requested).data(), samples);
-            if (const auto finding = checkPlanPrecision(sized, requested, plan, float64, where)) {
-                findings.push_back(*finding);
+            std::string previousKernel;
+            for (const Acceleration acceleration : kernels) {
+                const RenderPlan plan = renderer.plan(sized, {requested, acceleration});
+                if (plan.kernel.name == previousKernel) {
+                    continue;  // the default plan's kernel is the data-driven one: rendered already
+                }
+                previousKernel = plan.kernel.name;
+                const std::string where = format("%s, %u spp, %s kernel", precisionName(requested).data(), samples,
+                                                 plan.kernel.code ? "generated" : "data-driven");
+                const std::size_t before = findings.size();
+                if (const auto finding = checkPlanPrecision(sized, requested, plan, float64, where)) {
+                    findings.push_back(*finding);
+                }
+                const GpuRenderResult gpu =
+                    render ? render(sized, plan) : renderer.render(sized, plan, GpuOutput::LinearAndClasses);
+                const CpuRender& cpu = references.at(plan.precision);
+                const RenderComparison comparison = compareRenders(cpu.image, cpu.classes, cpu.ambiguity, gpu.image,
+                                                                   gpu.classes, sized.image.encoding);
+                judgeComparison(comparison, judge(comparison, options.tolerance),
+                                plan.formulation == Formulation::Robust,
+                                options.judgeAmbiguity && requested == automatic && acceleration == kernels.front(), where,
+                                findings);
+                for (std::size_t i = before; i < findings.size(); ++i) {
+                    findings[i].precision = requested;
+                    findings[i].samplesPerPixel = samples;
+                    findings[i].generatedKernel = plan.kernel.code != nullptr;
+                }
             }
-            const GpuRenderResult gpu =
-                render ? render(sized, plan) : renderer.render(sized, plan, GpuOutput::LinearAndClasses);
-            const CpuRender& cpu = references.at(plan.precision);
-            const RenderComparison comparison = compareRenders(cpu.image, cpu.classes, cpu.ambiguity, gpu.image,
-                                                               gpu.classes, sized.image.encoding);
-            judgeComparison(comparison, judge(comparison, options.tolerance), plan.formulation == Formulation::Robust,
-                            options.judgeAmbiguity && requested == automatic, where, findings);
         }
     }
     return findings;
+}
+
+DifferentialOptions optionsFor(const Finding& finding, DifferentialOptions options) {
+    if (finding.precision) {
+        options.precisions = {*finding.precision};
+        options.samplesPerPixel = {finding.samplesPerPixel};
+        options.generatedKernels = finding.generatedKernel;
+    }
+    return options;
 }
 
 std::optional<Finding> checkLoad(const Scene& scene, bool outOfRange) {

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compare/compare.h"
@@ -18,11 +19,18 @@ namespace hexray::test {
 
 // One thing a check found wrong.
 struct Finding {
+    Finding(std::string kind, std::string where, std::string detail)
+        : kind(std::move(kind)), where(std::move(where)), detail(std::move(detail)) {}
+
     // What kind of wrong, for telling one failure from another while shrinking: "invalid colour",
     // "topology", "colour", "ambiguous", "precision warning", "load".
     std::string kind;
-    std::string where;   // e.g. "f32, 4 spp"
+    std::string where;   // e.g. "f32, 4 spp, generated kernel"
     std::string detail;  // the figures
+    // The render it was found in (none for "load"): what a shrinker needs to render again.
+    std::optional<Precision> precision;
+    std::uint32_t samplesPerPixel = 0;
+    bool generatedKernel = false;
 };
 
 std::string describe(const Finding& finding);
@@ -31,11 +39,20 @@ struct DifferentialOptions {
     std::uint32_t width = 16;
     std::uint32_t height = 12;
     std::vector<std::uint32_t> samplesPerPixel = {1, 4};
+    std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32, Precision::F64};  // f64 if the device has it
     Tolerance tolerance;  // compare's defaults
     // Whether the ambiguous share is held to tolerance.maxAmbiguousPercent (at the precision auto
     // picks): not for a scene built with something exactly on a boundary.
     bool judgeAmbiguity = true;
+    // Every render is made by the data-driven kernels (prebuilt: one pipeline per precision and
+    // sample count for a whole run). With this set, also by the kernels the render plan picks by
+    // default (for a small scene one generated for it, which the driver compiles per scene and
+    // sample count: on lavapipe most of a check's time).
+    bool generatedKernels = true;
 };
+
+// The options that render again just the render `finding` came from.
+DifferentialOptions optionsFor(const Finding& finding, DifferentialOptions options);
 
 // How the check obtains a GPU render: the renderer's by default; a test substitutes one.
 using GpuRenderFunction = std::function<GpuRenderResult(const Scene& scene, const RenderPlan& plan)>;

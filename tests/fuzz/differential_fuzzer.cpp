@@ -37,39 +37,50 @@ struct FuzzOptions {
     fs::path failures = "differential-failures";
     std::uint32_t maxFailures = 5;
     std::string device;
+    std::uint64_t generatedEvery = 4;
 };
 
 // Every so many scenes the renderer is rebuilt: it keeps each scene's pipelines.
 constexpr std::uint64_t kScenesPerRenderer = 50;
 // Every so many seeds, the scene moved out of the supported range goes to the loader as well.
 constexpr std::uint64_t kOutOfRangeEvery = 8;
+// A shrink stops after this many candidate scenes (each is rendered once, in the failing render only).
+constexpr std::size_t kShrinkTries = 400;
+
+// The options for the scene of `seed`. Every scene is rendered by the data-driven kernels; every
+// generatedEvery-th also by the kernel generated for it (its compile costs what several scenes do).
+DifferentialOptions optionsFor(const GeneratedScene& generated, std::uint64_t seed, std::uint64_t generatedEvery) {
+    DifferentialOptions options;
+    options.judgeAmbiguity = !generated.knifeEdge;
+    options.generatedKernels = generatedEvery != 0 && seed % generatedEvery == 0;
+    return options;
+}
 
 // Everything wrong with the scene of `seed`.
-std::vector<Finding> findingsFor(GpuRenderer& renderer, std::uint64_t seed) {
+std::vector<Finding> findingsFor(GpuRenderer& renderer, std::uint64_t seed, std::uint64_t generatedEvery) {
     const GeneratedScene generated = generateScene(seed);
     std::vector<Finding> findings;
     if (auto finding = checkLoad(generated.scene, false)) findings.push_back(*finding);
     if (seed % kOutOfRangeEvery == 0) {
         if (auto finding = checkLoad(generateOutOfRangeScene(seed), true)) findings.push_back(*finding);
     }
-    DifferentialOptions options;
-    options.judgeAmbiguity = !generated.knifeEdge;
+    const DifferentialOptions options = optionsFor(generated, seed, generatedEvery);
     for (const Finding& finding : checkRenders(renderer, generated.scene, options)) findings.push_back(finding);
     return findings;
 }
 
-// The failing scene made small, written as NAME.json with NAME.expected ("accepted") beside it.
+// The failing scene made small, written as NAME.json with NAME.expected ("accepted") beside it,
+// as tests/fuzz/regressions/ holds them. Only the failing render is repeated while shrinking.
 fs::path writeShrunk(GpuRenderer& renderer, std::uint64_t seed, const Finding& first, const fs::path& folder) {
     const GeneratedScene generated = generateScene(seed);
-    DifferentialOptions options;
-    options.judgeAmbiguity = !generated.knifeEdge;
+    DifferentialOptions options = optionsFor(first, optionsFor(generated, seed, 0));
     const auto stillFails = [&](const Scene& candidate) {
         for (const Finding& finding : checkRenders(renderer, candidate, options)) {
             if (finding.kind == first.kind) return true;
         }
         return false;
     };
-    Scene shrunk = first.kind == "load" ? generated.scene : shrinkScene(generated.scene, stillFails);
+    Scene shrunk = first.kind == "load" ? generated.scene : shrinkScene(generated.scene, stillFails, kShrinkTries);
     shrunk.image.width = options.width;
     shrunk.image.height = options.height;
     fs::create_directories(folder);
@@ -95,7 +106,7 @@ int run(const FuzzOptions& options) {
             renderer.reset();  // its pipelines go before the next one's are built
             renderer = std::make_unique<GpuRenderer>(context, GpuRenderer::kDefaultMaxBandBytes, KernelCache(""));
         }
-        const std::vector<Finding> findings = findingsFor(*renderer, seed);
+        const std::vector<Finding> findings = findingsFor(*renderer, seed, options.generatedEvery);
         if (options.seed) {
             std::printf("%s", sceneToJson(generateScene(seed).scene).c_str());
         }
@@ -128,6 +139,9 @@ int main(int argc, char** argv) {
     app.add_option("--seed", options.seed, "Check only this seed's scene, and print it");
     app.add_option("--failures", options.failures, "Where shrunk failing scenes are written")->capture_default_str();
     app.add_option("--max-failures", options.maxFailures, "Stop after this many failing scenes")
+        ->capture_default_str();
+    app.add_option("--generated-every", options.generatedEvery,
+                   "Render every N-th scene with its generated kernel too (0: never); every scene gets the data-driven ones")
         ->capture_default_str();
     app.add_option("--device", options.device, "A Vulkan device by index or part of its name");
     CLI11_PARSE(app, argc, argv);

@@ -101,14 +101,15 @@ struct Builder {
     void addShaders() {
         const std::uint32_t count = 1 + draw.below(4);
         for (std::uint32_t i = 0; i < count; ++i) {
-            scene.shaderNames.push_back("s" + std::to_string(i));
+            scene.shaderNames.push_back(std::to_string(i).insert(0, 1, 's'));
             switch (draw.below(3)) {
                 case 0: scene.shaders.push_back(ConstantShader{colour(draw)}); break;
                 case 1: scene.shaders.push_back(LambertShader{colour(draw)}); break;
                 default: {
                     // A sphere's cells are degrees, a plane's lengths: both scales appear.
                     const double size = draw.chance(0.5) ? draw.logUniform(-1, 2.5) : relative(2.0);
-                    scene.shaders.push_back(CheckerShader{colour(draw), colour(draw), std::max(size, kMinSceneLength)});
+                    scene.shaders.push_back(
+                        CheckerShader{colour(draw), colour(draw), std::clamp(size, kMinSceneLength, kMaxSceneLength)});
                 }
             }
         }
