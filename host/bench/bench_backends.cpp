@@ -26,7 +26,7 @@ unsigned lavapipeThreads() {
 
 #ifdef HEXRAY_WITH_EMBREE
 BenchBackends::BenchBackends(const VulkanContext::Options& vulkan)
-    : context_(vulkan), gpu_(context_), embree_(std::make_unique<EmbreeRenderer>(cpuThreadCount(0))) {
+    : context_(vulkan), gpu_(context_), embree_(new EmbreeRenderer(cpuThreadCount(0))) {
 #else
 BenchBackends::BenchBackends(const VulkanContext::Options& vulkan) : context_(vulkan), gpu_(context_) {
 #endif
@@ -35,6 +35,12 @@ BenchBackends::BenchBackends(const VulkanContext::Options& vulkan) : context_(vu
 }
 
 BenchBackends::~BenchBackends() = default;
+
+void BenchBackends::EmbreeDeleter::operator()([[maybe_unused]] EmbreeRenderer* renderer) const {
+#ifdef HEXRAY_WITH_EMBREE
+    delete renderer;
+#endif
+}
 
 std::string BenchBackends::embreeVersion() const {
 #ifdef HEXRAY_WITH_EMBREE

@@ -86,7 +86,11 @@ private:
     GpuRenderer gpu_;
     bool isLavapipe_ = false;
     std::string gpuName_;
-    std::unique_ptr<EmbreeRenderer> embree_;  // null without Embree
+    // Complete only where Embree is built in, so its deleter is defined there (bench_backends.cpp).
+    struct EmbreeDeleter {
+        void operator()(EmbreeRenderer* renderer) const;
+    };
+    std::unique_ptr<EmbreeRenderer, EmbreeDeleter> embree_;  // null without Embree
 };
 
 }  // namespace hexray
