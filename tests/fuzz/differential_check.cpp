@@ -1,10 +1,12 @@
 #include "fuzz/differential_check.h"
 
 #include <cstdio>
+#include <algorithm>
 #include <map>
 
 #include "compare/decision_roundoff.h"
 #include "cpu/cpu_renderer.h"
+#include "fuzz/near_tie_reasons.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 
@@ -81,6 +83,11 @@ void judgeComparison(const RenderComparison& c, const Verdict& verdict, bool rob
     }
 }
 
+// The precision whose comparison the ambiguity limit holds (see checkRenders).
+Precision mostPrecise(Precision automatic, const std::vector<Precision>& rendered) {
+    return std::ranges::find(rendered, Precision::F64) != rendered.end() ? Precision::F64 : automatic;
+}
+
 }  // namespace
 
 std::string describe(const Finding& finding) {
@@ -98,13 +105,14 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
     if (options.generatedKernels) {
         kernels.push_back(Acceleration::Auto);
     }
+    const bool judgeAmbiguity = nearTieReasons(scene).empty();
     std::vector<Finding> findings;
     for (const std::uint32_t samples : options.samplesPerPixel) {
         Scene sized = scene;
         sized.image.width = options.width;
         sized.image.height = options.height;
         sized.image.samplesPerPixel = samples;
-        const Precision automatic = renderer.resolve(sized, Precision::Auto);
+        const Precision judgedForAmbiguity = mostPrecise(renderer.resolve(sized, Precision::Auto), precisions);
         References references(sized);
         for (const Precision requested : precisions) {
             std::string previousKernel;
@@ -127,7 +135,7 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
                                                                    gpu.classes, sized.image.encoding);
                 judgeComparison(comparison, judge(comparison, options.tolerance),
                                 plan.formulation == Formulation::Robust,
-                                options.judgeAmbiguity && requested == automatic && acceleration == kernels.front(), where,
+                                judgeAmbiguity && requested == judgedForAmbiguity && acceleration == kernels.front(), where,
                                 findings);
                 for (std::size_t i = before; i < findings.size(); ++i) {
                     findings[i].precision = requested;

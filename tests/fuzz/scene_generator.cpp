@@ -66,14 +66,14 @@ Color colour(Draw& draw) {
     return {draw.unit(), draw.unit(), draw.unit()};
 }
 
-// The scene as it is built: its scale, the point the camera looks at, and what was placed
-// exactly on a boundary.
+// The scene as it is built: its scale, the point the camera looks at, and whether it places things
+// exactly on boundaries (so that the rest, most scenes, are held to compare's ambiguity limit).
 struct Builder {
     Draw draw;
     Scene scene;
     double scale = 1.0;
     glm::dvec3 focus{0.0};
-    bool knifeEdge = false;
+    bool onBoundaries = false;
 
     explicit Builder(std::uint64_t seed) : draw(seed) {}
 
@@ -122,20 +122,18 @@ struct Builder {
         // Near-tangent placements: resting on a plane, touching another sphere.
         const auto planes = nodesOf<Plane>();
         const auto spheres = nodesOf<Sphere>();
-        if (!planes.empty() && draw.chance(0.2)) {
+        if (onBoundaries && !planes.empty() && draw.chance(0.2)) {
             const Plane& plane = *planes[draw.below(std::uint32_t(planes.size()))];
             sphere.center.y = supported(plane.height + draw.sign() * sphere.radius);
-            knifeEdge = true;
-        } else if (!spheres.empty() && draw.chance(0.15)) {
+        } else if (onBoundaries && !spheres.empty() && draw.chance(0.15)) {
             const Sphere& other = *spheres[draw.below(std::uint32_t(spheres.size()))];
             sphere.center = supported(other.center + draw.axis() * (other.radius + sphere.radius));
-            knifeEdge = true;
         }
         return sphere;
     }
 
     Plane plane() {
-        if (draw.chance(0.15)) return Plane{scene.camera.position.y};  // through the camera
+        if (onBoundaries && draw.chance(0.15)) return Plane{scene.camera.position.y};  // through the camera
         return Plane{supported(focus.y + draw.sign() * relative(1.0) * draw.uniform(0, 2))};
     }
 
@@ -161,16 +159,14 @@ struct Builder {
         const auto planes = nodesOf<Plane>();
         const auto spheres = nodesOf<Sphere>();
         const double where = draw.unit();
-        if (where < 0.1 && !planes.empty()) {
+        if (where < 0.1 && onBoundaries && !planes.empty()) {
             glm::dvec3 point = pointNearFocus();
             point.y = planes[draw.below(std::uint32_t(planes.size()))]->height;
-            knifeEdge = true;
             return point;
         }
         if (where < 0.2 && !spheres.empty()) {
             const Sphere& sphere = *spheres[draw.below(std::uint32_t(spheres.size()))];
-            const bool onSurface = draw.chance(0.5);
-            knifeEdge = knifeEdge || onSurface;
+            const bool onSurface = onBoundaries && draw.chance(0.5);
             return supported(sphere.center + draw.axis() * sphere.radius * (onSurface ? 1.0 : draw.unit()));
         }
         if (where < 0.25) return scene.camera.position;
@@ -226,13 +222,11 @@ struct Builder {
         if (where < 0.1 && !spheres.empty()) {
             const Sphere& sphere = *spheres[draw.below(std::uint32_t(spheres.size()))];
             scene.camera.position = supported(sphere.center + draw.unitVector() * sphere.radius * draw.uniform(0, 0.9));
-        } else if (where < 0.15 && !spheres.empty()) {
+        } else if (where < 0.15 && onBoundaries && !spheres.empty()) {
             const Sphere& sphere = *spheres[draw.below(std::uint32_t(spheres.size()))];
             scene.camera.position = supported(sphere.center + draw.axis() * sphere.radius);
-            knifeEdge = true;
-        } else if (where < 0.25 && !planes.empty()) {
+        } else if (where < 0.25 && onBoundaries && !planes.empty()) {
             scene.camera.position.y = planes[draw.below(std::uint32_t(planes.size()))]->height;
-            knifeEdge = true;  // its rays graze the plane at the horizon
         }
     }
 
@@ -248,8 +242,9 @@ struct Builder {
 
 }  // namespace
 
-GeneratedScene generateScene(std::uint64_t seed) {
+Scene generateScene(std::uint64_t seed) {
     Builder builder(seed);
+    builder.onBoundaries = builder.draw.chance(0.4);
     builder.chooseImage();
     builder.chooseScale();
     builder.placeCamera();
@@ -257,11 +252,11 @@ GeneratedScene generateScene(std::uint64_t seed) {
     builder.addNodes();
     builder.moveCameraOntoNodes();
     builder.addLights();
-    return {builder.scene, builder.knifeEdge};
+    return builder.scene;
 }
 
 Scene generateOutOfRangeScene(std::uint64_t seed) {
-    Scene scene = generateScene(seed).scene;
+    Scene scene = generateScene(seed);
     Draw draw(~seed);
     const double beyond = draw.chance(0.5) ? kMaxSceneLength * draw.uniform(1.5, 1e10) : kMinSceneLength / draw.uniform(1.5, 1e10);
     switch (draw.below(4)) {

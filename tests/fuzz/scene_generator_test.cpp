@@ -31,13 +31,13 @@ TEST(SceneWriter, ShippedSceneLoadsBackTheSame) {
 }
 
 TEST(SceneGenerator, SameSeedSameSceneOtherSeedAnother) {
-    EXPECT_EQ(sceneToJson(test::generateScene(42).scene), sceneToJson(test::generateScene(42).scene));
-    EXPECT_NE(sceneToJson(test::generateScene(42).scene), sceneToJson(test::generateScene(43).scene));
+    EXPECT_EQ(sceneToJson(test::generateScene(42)), sceneToJson(test::generateScene(42)));
+    EXPECT_NE(sceneToJson(test::generateScene(42)), sceneToJson(test::generateScene(43)));
 }
 
 TEST(SceneGenerator, EverySceneLoadsBackExactly) {
     for (std::uint64_t seed = 0; seed < kSeeds; ++seed) {
-        const auto finding = test::checkLoad(test::generateScene(seed).scene, false);
+        const auto finding = test::checkLoad(test::generateScene(seed), false);
         ASSERT_FALSE(finding) << "seed " << seed << ": " << test::describe(*finding);
     }
 }
@@ -61,7 +61,7 @@ bool holdsCamera(const Scene& scene) {
 TEST(SceneGenerator, ReachesTheEdges) {
     std::uint64_t noNodes = 0, noLights = 0, manyNodes = 0, cameraInside = 0, straightDown = 0, tiny = 0, huge = 0;
     for (std::uint64_t seed = 0; seed < kSeeds; ++seed) {
-        const Scene scene = test::generateScene(seed).scene;
+        const Scene scene = test::generateScene(seed);
         noNodes += scene.nodes.empty();
         noLights += scene.lights.empty();
         manyNodes += scene.nodes.size() > 32;
@@ -109,7 +109,7 @@ TEST(SceneShrinker, KeepsTheFailureAndLeavesOneRoundNode) {
     std::uint64_t seed = 0;
     Scene scene;
     do {
-        scene = test::generateScene(seed++).scene;
+        scene = test::generateScene(seed++);
     } while (!(hasLargeSphere(scene) && scene.nodes.size() > 3 && !scene.lights.empty()));
 
     const Scene shrunk = test::shrinkScene(scene, hasLargeSphere);

@@ -1,0 +1,141 @@
+#include "fuzz/near_tie_reasons.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+namespace hexray::test {
+namespace {
+
+// Two lengths closer than this, relative to the magnitudes they come from, count as equal: far
+// below what a random placement meets by chance, far above the rounding of a placement computed
+// to lie on a boundary (a centre at a plane's height plus the radius, say).
+constexpr double kCoincidence = 0x1p-40;
+// A plane's checker cells further than this factor from the scale of its visible points (their
+// coordinates, the plane's distance from the eye): finer, they are below the coordinates' rounding;
+// coarser, every point the eye sees near the plane lies within rounding of the cell edges that pass
+// below the eye (the shader's cell coordinates carry the roundoff of the cell size).
+constexpr double kPlaneCellRange = 0x1p40;
+// A sphere's checker cell finer than this many degrees: its edges come from the driver's float
+// atan (decisionBounds' 128 float32 units, about 4e-4 degrees), so at a few samples a pixel most
+// cells of that size lie within the bound of an edge somewhere.
+constexpr double kFinestSphereCellDegrees = 0.5;
+
+double magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+bool coincide(double a, double b, double scale) { return std::abs(a - b) <= kCoincidence * scale; }
+
+// A point on the sphere's surface, up to the rounding of the coordinates and distances involved.
+bool onSphere(const glm::dvec3& point, const Sphere& sphere) {
+    const double distance = glm::length(point - sphere.center);
+    return coincide(distance, sphere.radius, distance + sphere.radius + magnitude(point) + magnitude(sphere.center));
+}
+
+// `reach`: how far the point's rays run (from a light, about its distance to the camera), against
+// which its height above the plane is a grazing angle.
+bool onPlane(const glm::dvec3& point, const Plane& plane, double reach) {
+    return coincide(point.y, plane.height, std::abs(point.y) + std::abs(plane.height) + reach);
+}
+
+std::string name(const char* what, std::size_t index) { return std::string(what) + " " + std::to_string(index); }
+
+class Reasons {
+public:
+    explicit Reasons(const Scene& scene) : scene_(scene) {}
+
+    std::vector<std::string> all() {
+        pointsOnSurfaces();
+        touchingSurfaces();
+        finerThanResolution();
+        return reasons_;
+    }
+
+private:
+    // The camera or a light on a surface: the camera's rays or the light's cosines graze it.
+    void pointsOnSurfaces() {
+        onSurfaces(scene_.camera.position, "the camera");
+        for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+            onSurfaces(scene_.lights[i].position, name("light", i));
+        }
+    }
+
+    void onSurfaces(const glm::dvec3& point, const std::string& what) {
+        for (std::size_t n = 0; n < scene_.nodes.size(); ++n) {
+            const Geometry& g = scene_.nodes[n].geometry;
+            const double reach = glm::length(point - scene_.camera.position);
+            const bool on = std::holds_alternative<Plane>(g) ? onPlane(point, std::get<Plane>(g), reach)
+                                                             : onSphere(point, std::get<Sphere>(g));
+            if (on) add(what + " lies on node " + std::to_string(n));
+        }
+    }
+
+    // A sphere tangent to a plane or to another sphere (inside or out): the hits of the two
+    // surfaces tie along the contact.
+    void touchingSurfaces() {
+        for (std::size_t a = 0; a < scene_.nodes.size(); ++a) {
+            const auto* sphere = std::get_if<Sphere>(&scene_.nodes[a].geometry);
+            if (!sphere) continue;
+            for (std::size_t b = 0; b < scene_.nodes.size(); ++b) {
+                if (b != a && touches(*sphere, scene_.nodes[b].geometry)) {
+                    add("node " + std::to_string(a) + " touches node " + std::to_string(b));
+                }
+            }
+        }
+    }
+
+    static bool touches(const Sphere& sphere, const Geometry& other) {
+        if (const auto* plane = std::get_if<Plane>(&other)) {
+            const double gap = std::abs(sphere.center.y - plane->height);
+            return coincide(gap, sphere.radius, gap + sphere.radius + std::abs(plane->height));
+        }
+        const Sphere& s = std::get<Sphere>(other);
+        const double distance = glm::length(sphere.center - s.center);
+        const double scale = distance + sphere.radius + s.radius + magnitude(sphere.center) + magnitude(s.center);
+        return coincide(distance, sphere.radius + s.radius, scale) ||
+               coincide(distance, std::abs(sphere.radius - s.radius), scale);
+    }
+
+    // A sphere smaller than the rounding of its own position, checker cells on a sphere finer than
+    // the float atan resolves, or on a plane out of scale with the points the eye sees on it.
+    void finerThanResolution() {
+        for (std::size_t n = 0; n < scene_.nodes.size(); ++n) {
+            const Node& node = scene_.nodes[n];
+            const auto* sphere = std::get_if<Sphere>(&node.geometry);
+            if (!sphere) {
+                planeCellsOutOfScale(n);
+                continue;
+            }
+            const double position = std::max(magnitude(sphere->center), magnitude(scene_.camera.position));
+            if (sphere->radius <= kCoincidence * position) {
+                add("node " + std::to_string(n) + " is smaller than the rounding of its position");
+            }
+            const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[node.shaderIndex]);
+            if (checker && checker->size < kFinestSphereCellDegrees) {
+                add("node " + std::to_string(n) + "'s checker cells are finer than float atan resolves");
+            }
+        }
+    }
+
+    void planeCellsOutOfScale(std::size_t n) {
+        const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[scene_.nodes[n].shaderIndex]);
+        if (!checker) return;
+        const glm::dvec3& eye = scene_.camera.position;
+        const double distance = std::abs(std::get<Plane>(scene_.nodes[n].geometry).height - eye.y);
+        if (checker->size * kPlaneCellRange < magnitude(eye) + distance || checker->size > kPlaneCellRange * distance) {
+            add("node " + std::to_string(n) + "'s checker cells are out of scale with the points seen on it");
+        }
+    }
+
+    void add(std::string reason) { reasons_.push_back(std::move(reason)); }
+
+    const Scene& scene_;
+    std::vector<std::string> reasons_;
+};
+
+}  // namespace
+
+std::vector<std::string> nearTieReasons(const Scene& scene) { return Reasons(scene).all(); }
+
+}  // namespace hexray::test
