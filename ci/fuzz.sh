@@ -7,7 +7,9 @@
 # bash ci/fuzz.sh --differential SECONDS: instead, the differential fuzzer (generated valid scenes
 # through the GPU in every precision and the CPU reference, judged as `hexray compare` judges) on
 # lavapipe from the normal build in build/; shrunk failing scenes go to build/differential-failures/.
-# It is not part of CI yet: its first runs find open failures (tests/fuzz/open-findings/).
+# Its seeds start at HEXRAY_DIFFERENTIAL_FIRST_SEED, else at one taken from the commit, so that each
+# commit explores scenes of its own and the same commit the same ones; it prints the range covered,
+# and `build/tests/hexray_differential_fuzzer --seed N` replays one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = --differential ]; then
@@ -15,7 +17,10 @@ if [ "${1:-}" = --differential ]; then
   cmake --build build --parallel "$(nproc)" --target hexray_differential_fuzzer >/dev/null
   lavapipe_icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -n 1)
   export VK_DRIVER_FILES="$lavapipe_icd" VK_ICD_FILENAMES="$lavapipe_icd"
-  exec build/tests/hexray_differential_fuzzer --seconds "${2:-120}" --failures build/differential-failures
+  commit=$(git rev-parse --short=7 HEAD 2>/dev/null || echo 0)
+  first_seed=${HEXRAY_DIFFERENTIAL_FIRST_SEED:-$((0x$commit * 1000))}
+  exec build/tests/hexray_differential_fuzzer --seconds "${2:-120}" --first-seed "$first_seed" \
+    --failures build/differential-failures
 fi
 seconds=${1:-60}
 

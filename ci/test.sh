@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # From a fresh clone: install, build, and run every test (GPU tests on lavapipe, under the
 # Khronos validation layer); then the same tests built with ASan and UBSan; then fuzz the
-# scene loader for 60 s. This is what CI runs.
+# scene loader for 60 s and both renderers against each other for 120 s. This is what CI runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,4 +27,5 @@ timed "install and build" bash ci/build.sh
 timed "tests" tests
 timed "sanitizer build and tests" bash ci/sanitize.sh
 timed "fuzzing the scene loader" bash ci/fuzz.sh 60
+timed "differential fuzzing" bash ci/fuzz.sh --differential 120
 printf '%s\n' "=== times" "${timings[@]}"

@@ -6,10 +6,13 @@
 
 #include "camera/camera.h"
 #include "cpu/cpu_renderer.h"
+#include "cpu/eye_frame.h"
 
 namespace hexray {
 
-CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
+CpuPixelExplanation explainPixel(const Scene& world, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
+    const EyeFrameScene frame = inEyeFrame(world);  // traced as renderOnCpu traces, reported in world units
+    const Scene& scene = frame.scene;
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
     CpuPixelExplanation out;
     out.pixelColor = Color(0.0);
@@ -20,7 +23,8 @@ CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint3
         if (nearest) {
             // The explained sample keeps every light's term; the shading is renderOnCpu's own.
             const Node& node = scene.nodes[nearest->nodeIndex];
-            const ShadedHit shaded = shadeHit(scene, node, nearest->hit, nullptr, s == sample ? &out.lights : nullptr);
+            const ShadedHit shaded =
+                shadeHit(scene, node, nearest->hit, nullptr, s == sample ? &out.lights : nullptr, frame.eye);
             color = shaded.color;
             if (s == sample) {
                 const Shader& shader = scene.shaders.at(node.shaderIndex);
@@ -43,6 +47,10 @@ CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint3
     out.pixelColor /= double(scene.image.samplesPerPixel);
     for (const Node& node : scene.nodes) {
         out.candidates.push_back(intersectGeometry(out.ray, node.geometry));
+    }
+    out.ray.origin += frame.eye;
+    if (out.nearest) {
+        out.nearest->hit.point += frame.eye;
     }
     return out;
 }

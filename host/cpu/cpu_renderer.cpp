@@ -116,7 +116,8 @@ void forEachSphereThatMayMatter(const Bvh& bvh, const Ray& ray, const glm::dvec3
 
 // What every ray of a render reads.
 struct RenderContext {
-    const Scene& scene;
+    const Scene& scene;  // in the eye's frame (eye_frame.h)
+    const glm::dvec3& frameOrigin;
     const Bvh* bvh;
     const PixelSheet& sheet;
     DecisionRoundoff roundoff;
@@ -263,7 +264,7 @@ void addShadingMargins(const RenderContext& context, const DecisionBounds& bound
     if (const auto* checker = std::get_if<CheckerShader>(&shader)) {
         const double margin =
             sphere ? sphereCheckerMargin(hit.geometricNormal, checker->size, normalRoundoff) / bounds.sphereChecker
-                   : planeCheckerMargin(textureCoordinates(node.geometry, hit), checker->size,
+                   : planeCheckerMargin(textureCoordinates(node.geometry, hit, context.frameOrigin), checker->size,
                                         planeTextureScales(hit, ray)) /
                          bounds.general;
         decisions.add(margin, kCheckerPart);
@@ -301,7 +302,8 @@ TracedPixel tracePixel(const RenderContext& context, std::uint32_t x, std::uint3
     }
     addShadingMargins(context, bounds, ray, *nearest, decisions);
     // The classification comes from the decisions that made the colour, not a second look.
-    const ShadedHit shaded = shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, context.bvh);
+    const ShadedHit shaded =
+        shadeHit(scene, scene.nodes[nearest->nodeIndex], nearest->hit, context.bvh, nullptr, context.frameOrigin);
     return {shaded.color, PixelClass{std::uint32_t(nearest->nodeIndex), shaded.flags}, decisions, nearest->hit};
 }
 
@@ -398,28 +400,28 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acc
 
 CpuBandRenderer::CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs,
                                  DecisionRoundoff roundoff)
-    : scene_(scene),
-      sheet_(makePixelSheet(scene.camera, sheetAspect(scene))),
+    : frame_(inEyeFrame(scene)),
+      sheet_(makePixelSheet(frame_.scene.camera, sheetAspect(frame_.scene))),
       threads_(std::min({cpuThreadCount(threadCount), kMaxCpuThreads, std::max(scene.image.height, 1u)})),
       withAovs_(withAovs),
       roundoff_(roundoff) {
-    checkShaderIndices(scene);
-    bvh_ = bvhFor(scene, acceleration);  // built once and shared, read-only, by every worker
+    checkShaderIndices(frame_.scene);
+    bvh_ = bvhFor(frame_.scene, acceleration);  // built once and shared, read-only, by every worker
 }
 
 std::uint32_t CpuBandRenderer::rowsPerBand(std::size_t bandBytes) const {
     const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float) + sizeof(PixelAmbiguity) +
                                    (withAovs_ ? sizeof(float) + sizeof(glm::vec3) : 0);
-    const std::size_t rowBytes = pixelBytes * std::max(scene_.image.width, 1u);
-    return std::uint32_t(std::clamp<std::size_t>(bandBytes / rowBytes, 1, std::max(scene_.image.height, 1u)));
+    const std::size_t rowBytes = pixelBytes * std::max(frame_.scene.image.width, 1u);
+    return std::uint32_t(std::clamp<std::size_t>(bandBytes / rowBytes, 1, std::max(frame_.scene.image.height, 1u)));
 }
 
 void CpuBandRenderer::render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band) const {
-    prepareBand(band, scene_.image.width, rows, withAovs_);
-    if (scene_.image.width == 0 || rows == 0) {
+    prepareBand(band, frame_.scene.image.width, rows, withAovs_);
+    if (frame_.scene.image.width == 0 || rows == 0) {
         return;
     }
-    const RenderContext context{scene_, bvh_ ? &*bvh_ : nullptr, sheet_, roundoff_};
+    const RenderContext context{frame_.scene, frame_.eye, bvh_ ? &*bvh_ : nullptr, sheet_, roundoff_};
     const unsigned workers = std::min(threads_, rows);
     // Rows are interleaved (worker w takes rows w, w + n, ...) so that expensive regions of
     // the image are shared out; each row is written by exactly one worker, so no locking.
@@ -439,11 +441,13 @@ void CpuBandRenderer::render(std::uint32_t firstRow, std::uint32_t rows, CpuRend
     }
 }
 
-float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y) {
+float pixelMargin(const Scene& world, std::uint32_t x, std::uint32_t y) {
+    const EyeFrameScene frame = inEyeFrame(world);
+    const Scene& scene = frame.scene;
     checkShaderIndices(scene);
     const std::optional<Bvh> bvh = bvhFor(scene, Acceleration::Auto);
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
-    return renderPixel({scene, bvh ? &*bvh : nullptr, sheet, DecisionRoundoff{}}, x, y).margin;
+    return renderPixel({scene, frame.eye, bvh ? &*bvh : nullptr, sheet, DecisionRoundoff{}}, x, y).margin;
 }
 
 }  // namespace hexray

@@ -1,6 +1,6 @@
 #pragma once
 // The CPU reference renderer: the same model as the shader, written independently,
-// in double precision and for clarity rather than speed.
+// in double precision and for clarity rather than speed, in the eye's frame (eye_frame.h).
 
 #include <cstdint>
 #include <optional>
@@ -12,6 +12,7 @@
 #include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
 #include "cpu/cpu_margins.h"
+#include "cpu/eye_frame.h"
 #include "image/image.h"
 #include "image/pixel_class.h"
 #include "scene/scene.h"
@@ -70,7 +71,7 @@ public:
     void render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band) const;
 
 private:
-    const Scene& scene_;
+    EyeFrameScene frame_;
     PixelSheet sheet_;
     std::optional<Bvh> bvh_;
     unsigned threads_;

@@ -48,9 +48,9 @@ glm::dvec2 sphereTextureCoordinates(const glm::dvec3& outwardNormal) {
     return {longitude, latitude};
 }
 
-glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit) {
+glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit, const glm::dvec3& frameOrigin) {
     if (std::holds_alternative<Plane>(geometry)) {
-        return planeTextureCoordinates(hit.point);
+        return planeTextureCoordinates(frameOrigin + hit.point);
     }
     // The outward normal, not the facing one: the pattern belongs to the surface, not the viewer.
     return sphereTextureCoordinates(hit.geometricNormal);
@@ -147,7 +147,7 @@ Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit
 }
 
 ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh,
-                   std::vector<LightTerm>* lightTerms) {
+                   std::vector<LightTerm>* lightTerms, const glm::dvec3& frameOrigin) {
     const Shader& shader = scene.shaders.at(node.shaderIndex);
     ShadedHit shaded;
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
@@ -158,7 +158,7 @@ ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const B
         shaded.albedo = lambert->color;
     } else {
         const CheckerShader& checker = std::get<CheckerShader>(shader);
-        const glm::dvec2 uv = textureCoordinates(node.geometry, hit);
+        const glm::dvec2 uv = textureCoordinates(node.geometry, hit, frameOrigin);
         shaded.checkerUv = uv;
         shaded.albedo = checkerColor(checker, uv);
         if (checkerParity(uv.x, uv.y, checker.size) == 1) {

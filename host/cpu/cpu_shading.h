@@ -27,7 +27,9 @@ glm::dvec2 planeTextureCoordinates(const glm::dvec3& point);
 // (degrees(atan2(n.x, n.z)), degrees(asin(n.y))).
 glm::dvec2 sphereTextureCoordinates(const glm::dvec3& outwardNormal);
 
-glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit);
+// `frameOrigin`: the world position of the coordinates' origin (EyeFrameScene::eye), which a plane's
+// cells, fixed in the world, add back.
+glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit, const glm::dvec3& frameOrigin = glm::dvec3(0.0));
 
 // How far a shadow ray's origin is pushed off the surface along the facing normal:
 // 0 for planes (the snapped hit point cannot re-hit its plane), an error bound of a few
@@ -79,8 +81,9 @@ struct ShadedHit {
     std::uint32_t flags = 0;             // PixelClass flags
 };
 // The colour the node's shader gives this hit. `lightTerms` (when given) receives every light's
-// term for a lit shader; a constant shader evaluates no light.
+// term for a lit shader; a constant shader evaluates no light. `frameOrigin`: as for
+// textureCoordinates.
 ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh = nullptr,
-                   std::vector<LightTerm>* lightTerms = nullptr);
+                   std::vector<LightTerm>* lightTerms = nullptr, const glm::dvec3& frameOrigin = glm::dvec3(0.0));
 
 }  // namespace hexray
