@@ -305,3 +305,23 @@ TEST(RenderOnCpu, NoNodesMeansNoDecisions) {
         EXPECT_EQ(render.classes[pixel], (PixelClass{PixelClass::kBackground, 0}));
     }
 }
+
+// Far from the origin the reference still resolves a small scene: it traces in the eye's frame.
+// From inside a sphere of radius 2e11 whose centre is 3e36 from the origin (the coordinates' rounding
+// is 5e20), a light outside it reaches no point; traced in world coordinates every hit rounded onto
+// the eye and the sphere's wall lit it.
+TEST(RenderOnCpu, ASmallSceneFarFromTheOriginIsResolved) {
+    Scene scene;
+    scene.image.width = 8;
+    scene.image.height = 6;
+    scene.camera.position = {1.08e36, -2.64e36, -1.4e36};
+    scene.lights.push_back(PointLight{{1.08e36, 0.0, -1.4e36}, Color(1.0), 1e72});
+    scene.shaderNames = {"wall"};
+    scene.shaders = {LambertShader{Color(1.0)}};
+    scene.nodes = {Node{Sphere{scene.camera.position, 2e11}, 0}};
+    const CpuRender render = renderOnCpu(scene, 1);
+    for (std::size_t i = 0; i < render.classes.size(); ++i) {
+        EXPECT_EQ(render.classes[i], (PixelClass{0, 0})) << "pixel " << i;
+        EXPECT_EQ(render.image.pixels[i], glm::vec3(0.0f)) << "pixel " << i;
+    }
+}
