@@ -225,6 +225,11 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> s
     return found->second;
 }
 
+void GpuRenderer::releaseGeneratedKernels() {
+    std::erase_if(pipelines_, [&](const auto& entry) { return kernels_.holds(std::get<0>(entry.first)); });
+    kernels_.forgetGenerated();
+}
+
 GpuRenderResult GpuRenderer::render(const Scene& scene, const RenderPlan& plan, GpuOutput output) {
     GpuRenderResult result;
     const auto keep = [&](const GpuRenderResult& streamed) {

@@ -135,6 +135,11 @@ public:
     // The precision a plan for `scene` would use (without building the rest of the plan).
     Precision resolve(const Scene& scene, Precision requested) const;
 
+    // Drops the generated kernels and their pipelines, each made for one scene's structure and
+    // values; the data-driven kernels' pipelines stay. A process that renders many different small
+    // scenes (the differential fuzzer) calls it between them, so that its memory stays bounded.
+    void releaseGeneratedKernels();
+
     DeviceAbilities abilities() const;
 
 private:

@@ -1,5 +1,6 @@
 #include "gpu/kernel_compiler.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "gpu/kernel_generator.h"
@@ -34,6 +35,10 @@ std::span<const std::uint32_t> KernelCompiler::spirv(const Kernel& kernel, Kerne
     }
     if (build) *build = record;
     return found->second;
+}
+
+bool KernelCompiler::holds(const std::uint32_t* spirv) const {
+    return std::ranges::any_of(compiled_, [&](const auto& entry) { return entry.second.data() == spirv; });
 }
 
 }  // namespace hexray

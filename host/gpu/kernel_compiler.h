@@ -25,8 +25,13 @@ class KernelCompiler {
 public:
     explicit KernelCompiler(KernelCache cache = KernelCache(KernelCache::defaultDirectory()));
 
-    // Valid as long as this compiler (or, for a prebuilt kernel, its SPIR-V) lives.
+    // Valid as long as this compiler (or, for a prebuilt kernel, its SPIR-V) lives, until forgetGenerated.
     std::span<const std::uint32_t> spirv(const Kernel& kernel, KernelBuild* build = nullptr);
+
+    // Whether `spirv` is a generated kernel's, held here.
+    bool holds(const std::uint32_t* spirv) const;
+    // Drops every generated kernel's SPIR-V (the disk cache keeps them).
+    void forgetGenerated() { compiled_.clear(); }
 
 private:
     KernelCache cache_;

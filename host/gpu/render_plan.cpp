@@ -105,11 +105,11 @@ SceneCode sceneCodeFor(const Scene& scene, const RenderPlan& plan) {
 }
 
 // Candidate lists pay as soon as the data-driven kernel has spheres to skip.
-bool wantsCandidates(const Scene& scene, Acceleration acceleration) {
-    if (acceleration == Acceleration::None || countSpheres(scene) == 0) {
+bool wantsCandidates(const Scene& scene, const PlanRequest& request) {
+    if (request.acceleration == Acceleration::None || countSpheres(scene) == 0) {
         return false;
     }
-    return acceleration == Acceleration::Always || !isSmallScene(scene);
+    return request.acceleration == Acceleration::Always || !isSmallScene(scene) || !request.generatedKernel;
 }
 
 // Whether the device holds each of the lists' texel buffers (candidate_buffers.h).
@@ -202,8 +202,8 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
     plan.width = plan.precision == Precision::F64 ? FloatWidth::F64 : FloatWidth::F32;
     plan.formulation = plan.precision == Precision::F32Naive ? Formulation::Textbook : Formulation::Robust;
     plan.placement = placementFor(scene, plan.formulation);
-    plan.layout = isSmallScene(scene) ? SceneLayout::Uniform : SceneLayout::Storage;
-    if (wantsCandidates(scene, request.acceleration)) {
+    plan.layout = isSmallScene(scene) && request.generatedKernel ? SceneLayout::Uniform : SceneLayout::Storage;
+    if (wantsCandidates(scene, request)) {
         auto lists = buildCandidateLists(scene, plan.placement, plan.width, plan.formulation);
         if (lists && fitsDevice(*lists, plan.width, device)) {
             plan.candidates = std::make_shared<const CandidateLists>(std::move(*lists));

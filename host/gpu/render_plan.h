@@ -123,6 +123,9 @@ struct PlanRequest {
     // Candidate lists or not, for scenes too large for a generated kernel.
     Acceleration acceleration = Acceleration::Auto;
     Culling culling = Culling::Auto;
+    // False: the data-driven kernel even for a small scene. It is the same program for every scene,
+    // so a test of many scenes (the differential fuzzer) compiles it once rather than per scene.
+    bool generatedKernel = true;
 };
 
 struct TileClassification;

@@ -99,11 +99,9 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
     const bool float64 = renderer.abilities().float64;
     std::vector<Precision> precisions = options.precisions;
     std::erase_if(precisions, [&](Precision p) { return p == Precision::F64 && !float64; });
-    // Acceleration::Always gives a small scene the data-driven kernel with candidate lists (or, without
-    // spheres, its generated one).
-    std::vector<Acceleration> kernels = {Acceleration::Always};
+    std::vector<PlanRequest> requests = {{.acceleration = options.dataDrivenAcceleration, .generatedKernel = false}};
     if (options.generatedKernels) {
-        kernels.push_back(Acceleration::Auto);
+        requests.push_back({});  // the plan's own choice
     }
     const bool judgeAmbiguity = nearTieReasons(scene).empty();
     std::vector<Finding> findings;
@@ -116,8 +114,9 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
         References references(sized);
         for (const Precision requested : precisions) {
             std::string previousKernel;
-            for (const Acceleration acceleration : kernels) {
-                const RenderPlan plan = renderer.plan(sized, {requested, acceleration});
+            for (PlanRequest request : requests) {
+                request.precision = requested;
+                const RenderPlan plan = renderer.plan(sized, request);
                 if (plan.kernel.name == previousKernel) {
                     continue;  // the default plan's kernel is the data-driven one: rendered already
                 }
@@ -135,7 +134,7 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
                                                                    gpu.classes, sized.image.encoding);
                 judgeComparison(comparison, judge(comparison, options.tolerance),
                                 plan.formulation == Formulation::Robust,
-                                judgeAmbiguity && requested == judgedForAmbiguity && acceleration == kernels.front(), where,
+                                judgeAmbiguity && requested == judgedForAmbiguity && !request.generatedKernel, where,
                                 findings);
                 for (std::size_t i = before; i < findings.size(); ++i) {
                     findings[i].precision = requested;

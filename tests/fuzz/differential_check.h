@@ -42,9 +42,11 @@ struct DifferentialOptions {
     std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32, Precision::F64};  // f64 if the device has it
     Tolerance tolerance;  // compare's defaults
     // Every render is made by the data-driven kernels (prebuilt: one pipeline per precision and
-    // sample count for a whole run). With this set, also by the kernels the render plan picks by
-    // default (for a small scene one generated for it, which the driver compiles per scene and
-    // sample count: on lavapipe most of a check's time).
+    // sample count for a whole run), with candidate lists (Always) or testing every node (None).
+    // With generatedKernels, also by the kernels the render plan picks by default (for a small
+    // scene one generated for it, which the driver compiles per scene and sample count: on
+    // lavapipe most of a check's time).
+    Acceleration dataDrivenAcceleration = Acceleration::Always;
     bool generatedKernels = true;
 };
 

@@ -4,12 +4,12 @@
 // --seed N. A failing scene is shrunk (scene_shrinker.h) and written to the failures folder,
 // ready to become a regression input in tests/fuzz/regressions/. Exit code 1 when any scene failed.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,10 +39,9 @@ struct FuzzOptions {
     std::uint32_t maxFailures = 5;
     std::string device;
     std::uint64_t generatedEvery = 4;
+    bool shrink = true;
 };
 
-// Every so many scenes the renderer is rebuilt: it keeps each scene's pipelines.
-constexpr std::uint64_t kScenesPerRenderer = 50;
 // Every so many seeds, the scene moved out of the supported range goes to the loader as well.
 constexpr std::uint64_t kOutOfRangeEvery = 8;
 // A shrink stops after this many candidate scenes (each is rendered once, in the failing render only).
@@ -52,6 +51,7 @@ constexpr std::size_t kShrinkTries = 400;
 // generatedEvery-th also by the kernel generated for it (its compile costs what several scenes do).
 DifferentialOptions optionsFor(std::uint64_t seed, std::uint64_t generatedEvery) {
     DifferentialOptions options;
+    options.dataDrivenAcceleration = seed % 2 == 0 ? Acceleration::Always : Acceleration::None;
     options.generatedKernels = generatedEvery != 0 && seed % generatedEvery == 0;
     return options;
 }
@@ -66,6 +66,7 @@ std::vector<Finding> findingsFor(GpuRenderer& renderer, const Scene& scene, std:
     }
     const DifferentialOptions options = optionsFor(seed, generatedEvery);
     for (const Finding& finding : checkRenders(renderer, scene, options)) findings.push_back(finding);
+    renderer.releaseGeneratedKernels();
     return findings;
 }
 
@@ -75,10 +76,9 @@ fs::path writeShrunk(GpuRenderer& renderer, std::uint64_t seed, const Finding& f
     const Scene generated = generateScene(seed);
     DifferentialOptions options = optionsFor(first, optionsFor(seed, 0));
     const auto stillFails = [&](const Scene& candidate) {
-        for (const Finding& finding : checkRenders(renderer, candidate, options)) {
-            if (finding.kind == first.kind) return true;
-        }
-        return false;
+        const std::vector<Finding> findings = checkRenders(renderer, candidate, options);
+        renderer.releaseGeneratedKernels();
+        return std::ranges::any_of(findings, [&](const Finding& finding) { return finding.kind == first.kind; });
     };
     Scene shrunk = first.kind == "load" ? generated : shrinkScene(generated, stillFails, kShrinkTries);
     shrunk.image.width = options.width;
@@ -96,19 +96,17 @@ int run(const FuzzOptions& options) {
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const std::uint64_t first = options.seed.value_or(options.firstSeed);
     const std::uint64_t limit = options.seed ? 1 : options.scenes;
-    std::unique_ptr<GpuRenderer> renderer;
+    // One renderer for the run: the data-driven kernels' pipelines are built once; each scene's
+    // generated kernels are released after it.
+    GpuRenderer renderer(context, GpuRenderer::kDefaultMaxBandBytes, KernelCache(""));
     std::uint64_t done = 0;
     std::uint32_t failures = 0;
     std::uint64_t nearTied = 0;  // scenes whose ambiguity was not held to the limit
     std::printf("differential fuzzing on %s from seed %llu\n", context.selected().name.c_str(),
                 static_cast<unsigned long long>(first));
     for (std::uint64_t seed = first; limit ? done < limit : elapsed() < options.seconds; ++seed, ++done) {
-        if (done % kScenesPerRenderer == 0) {
-            renderer.reset();  // its pipelines go before the next one's are built
-            renderer = std::make_unique<GpuRenderer>(context, GpuRenderer::kDefaultMaxBandBytes, KernelCache(""));
-        }
         const Scene scene = generateScene(seed);
-        const std::vector<Finding> findings = findingsFor(*renderer, scene, seed, options.generatedEvery);
+        const std::vector<Finding> findings = findingsFor(renderer, scene, seed, options.generatedEvery);
         const std::vector<std::string> reasons = nearTieReasons(scene);
         nearTied += !reasons.empty();
         if (options.seed) {
@@ -119,7 +117,9 @@ int run(const FuzzOptions& options) {
         ++failures;
         std::printf("FAIL seed %llu:\n", static_cast<unsigned long long>(seed));
         for (const Finding& finding : findings) std::printf("  %s\n", describe(finding).c_str());
-        std::printf("  shrunk: %s\n", writeShrunk(*renderer, seed, findings.front(), options.failures).c_str());
+        if (options.shrink) {
+            std::printf("  shrunk: %s\n", writeShrunk(renderer, seed, findings.front(), options.failures).c_str());
+        }
         if (failures >= options.maxFailures) {
             ++done;
             break;
@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
     app.add_option("--generated-every", options.generatedEvery,
                    "Render every N-th scene with its generated kernel too (0: never); every scene gets the data-driven ones")
         ->capture_default_str();
+    app.add_flag("!--no-shrink", options.shrink, "Report failing seeds without shrinking them (replay one with --seed)");
     app.add_option("--device", options.device, "A Vulkan device by index or part of its name");
     CLI11_PARSE(app, argc, argv);
     try {
