@@ -91,5 +91,14 @@ TEST(PackScene, SphereCheckerUsesAnglesThatDoNotMoveWithTheEye) {
     EXPECT_EQ(packed.nodes[1].checker, glm::vec4(9, 0, 0, 0));
 }
 
+TEST(PackScene, SphereCheckerSizesFromAFullTurnOnGiveTheCellsOf360Degrees) {
+    // 2e43 degrees would be inf in float (lon / inf = -0 for lon < 0: cell 0, not -1).
+    Scene scene = checkerPlaneAndBall({-25, 60, 47});
+    scene.shaders[1] = CheckerShader{Color(1), Color(0), 2e43};
+    EXPECT_EQ(packRelative(scene).nodes[1].checker, glm::vec4(360, 0, 0, 0));
+    scene.shaders[1] = CheckerShader{Color(1), Color(0), 359.0};
+    EXPECT_EQ(packRelative(scene).nodes[1].checker, glm::vec4(359, 0, 0, 0));
+}
+
 }  // namespace
 }  // namespace hexray
