@@ -124,7 +124,7 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     const double powerScale = 1.0 / (placement.scale * placement.scale);
     for (const PointLight& light : scene.lights) {
         packed.lights.push_back({toReal4<Real>(placement.position(light.position)),
-                                 toColor(light.color * (light.intensity * powerScale))});
+                                 toReal4<Real>(light.color * (light.intensity * powerScale))});
     }
     return packed;
 }

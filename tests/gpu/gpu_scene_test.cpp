@@ -1,6 +1,8 @@
 // Packing the scene for the shader: camera-relative, rescaled positions and the checker's cell
 // phase.
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_scene.h"
@@ -54,6 +56,19 @@ TEST(PackScene, DoubleLayoutKeepsWhatFloatWouldRound) {
     scene.nodes[1].geometry = Sphere{{0.1, 0, 100}, 1};
     const double scale = placementScale(scene);
     EXPECT_EQ(gpu::packScene<double>(scene, placementFor(scene, Formulation::Robust)).nodes[1].geometry.x, 0.1 / scale);
+}
+
+TEST(PackScene, DoubleLayoutKeepsALightPowerBeyondFloatsRange) {
+    // Lengths from 1 to 1e50 place at scale 2^83: the power 0.5e100 / 2^166 = 5.3e49 is inf in float.
+    Scene scene;
+    scene.shaderNames = {"grey"};
+    scene.shaders = {LambertShader{Color(0.5)}};
+    scene.nodes = {Node{Sphere{{0, 0, 5}, 1}, 0}};
+    scene.lights = {PointLight{{0, 1e50, 0}, Color(0.5), 1e100}};
+    const double scale = placementScale(scene);
+    ASSERT_EQ(scale, std::exp2(83));
+    const gpu::GpuScene<double> packed = gpu::packScene<double>(scene, placementFor(scene, Formulation::Robust));
+    EXPECT_DOUBLE_EQ(packed.lights[0].power.x, 0.5 * 1e100 / (scale * scale));
 }
 
 TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
