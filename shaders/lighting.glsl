@@ -41,9 +41,13 @@ LightPath lightPath(Surface s, vec3r lightPosition) {
 const float MAX_LIGHT_TERM = 3.0e38;
 
 // Light `index`'s part of the irradiance; sets its lit bit in `flags` and records it in a trace.
-vec3 lightTerm(uint index, vec4 power, LightPath path, bool shadowed, inout uint flags) {
+// In the kernel's arithmetic: in f64 the power and cos / r^2 can each lie beyond float's range
+// (5e49 and 1e-50) where their product does not. cos / r^2 is capped (finite) first, so that a
+// zero power channel gives 0, not NaN.
+vec3 lightTerm(uint index, vec4r power, LightPath path, bool shadowed, inout uint flags) {
     bool lit = path.facing && !shadowed;
-    vec3 contribution = lit ? power.rgb * min(float(path.cosTheta / path.r2), MAX_LIGHT_TERM) : vec3(0.0);
+    vec3r term = power.rgb * min(path.cosTheta / path.r2, REAL_MAX);
+    vec3 contribution = lit ? vec3(min(term, vec3r(MAX_LIGHT_TERM))) : vec3(0.0);
     uint status = path.r2 == 0.0 ? TRACE_LIGHT_AT_POINT
                 : !path.facing   ? TRACE_LIGHT_FACING_AWAY
                 : shadowed       ? TRACE_LIGHT_SHADOWED

@@ -46,7 +46,7 @@ SCENE_BLOCK(NODE_BINDING) NodeBlock {
 
 struct Light {
     vec4r position;
-    vec4 power;       // colour * intensity
+    vec4r power;      // colour * intensity (in f64 beyond float's range)
 };
 SCENE_BLOCK(LIGHT_BINDING) LightBlock {
     Light lights[SCENE_ARRAY_LENGTH];

@@ -55,7 +55,9 @@ struct GpuNode {
 template <typename Real>
 struct GpuLight {
     RealVec4<Real> position;  // .xyz
-    glm::vec4 power;          // .rgb = colour * intensity
+    // .rgb = colour * intensity / scale^2: in the kernel's arithmetic, as the squared distances it
+    // is divided by, since in f64 it can lie far outside float's range.
+    RealVec4<Real> power;
 };
 
 // Candidate lists (shaders/candidates.glsl), read as texels of 16 bytes: the grid buffer starts

@@ -58,6 +58,11 @@ RealVec4<Real> planeCheckerPhase(const glm::dvec3& origin, double size, double p
     return toReal4<Real>(glm::dvec3(placedSize, cellX - wholeX, cellZ - wholeZ), parity);
 }
 
+// Longitude is in (-180, 180] degrees and latitude in [-90, 90], so an angle x over a size of at
+// least 360 lies in (-0.5, 0.5]: its cell is -1 below 0 and 0 from 0 on, whatever the size. A
+// larger size (up to 1e50, beyond float's 3.4e38) gives exactly the cells of 360.
+constexpr double kSphereCheckerFullTurn = 360.0;
+
 template <typename Real>
 GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& placement, const glm::dvec3& eye) {
     GpuNode<Real> packed{};
@@ -83,9 +88,11 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& 
         packed.kinds.y = SHADER_CHECKER;
         packed.color1 = toColor(checker.color1);
         packed.color2 = toColor(checker.color2);
-        // Sphere checkers use angles, which neither move with the eye nor scale.
+        // Sphere checkers use angles, which neither move with the eye nor scale; capped (exactly:
+        // see kSphereCheckerFullTurn) so that float holds the size. Plane sizes are lengths, which
+        // the placement brings within float's range.
         packed.checker = plane ? planeCheckerPhase<Real>(placement.origin, checker.size, placement.length(checker.size))
-                               : toReal4<Real>(glm::dvec3(checker.size, 0, 0));
+                               : toReal4<Real>(glm::dvec3(std::min(checker.size, kSphereCheckerFullTurn), 0, 0));
     }
     return packed;
 }
@@ -117,7 +124,7 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     const double powerScale = 1.0 / (placement.scale * placement.scale);
     for (const PointLight& light : scene.lights) {
         packed.lights.push_back({toReal4<Real>(placement.position(light.position)),
-                                 toColor(light.color * (light.intensity * powerScale))});
+                                 toReal4<Real>(light.color * (light.intensity * powerScale))});
     }
     return packed;
 }

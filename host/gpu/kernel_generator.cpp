@@ -297,7 +297,7 @@ private:
             out_ << "        shadowed = shadowed || (" << (ownExcluded ? "hit.node != " + u(test.node) + " && " : "")
                  << name << ");\n";
         }
-        out_ << "        irradiance += lightTerm(" << u(light) << ", vec4(" << lightValue(light, "POWER")
+        out_ << "        irradiance += lightTerm(" << u(light) << ", vec4r(" << lightValue(light, "POWER")
              << ", 0.0), path, shadowed, flags);\n"
                 "    }\n";
     }

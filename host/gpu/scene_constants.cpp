@@ -52,7 +52,7 @@ std::vector<SceneConstant> sceneConstants(const SceneCode& code) {
     for (std::uint32_t light = 0; light < code.shadowTests.size(); ++light) {
         const std::string prefix = "LIGHT" + std::to_string(light);
         constants.push_back({Field::LightPosition, light, 0, 3, true, prefix + "_POSITION"});
-        constants.push_back({Field::LightPower, light, 0, 3, false, prefix + "_POWER"});
+        constants.push_back({Field::LightPower, light, 0, 3, true, prefix + "_POWER"});
         if (code.formulation == Formulation::Robust) {
             for (const ShadowTest& test : code.shadowTests[light]) {
                 if (code.nodes[test.node].geometry == gpu::GEOMETRY_SPHERE) {
@@ -80,7 +80,7 @@ std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& con
                 case Field::Color2: append<float>(bytes, scene.nodes[i].color2[c]); break;
                 case Field::Checker: append<Real>(bytes, scene.nodes[i].checker[c]); break;
                 case Field::LightPosition: append<Real>(bytes, scene.lights[i].position[c]); break;
-                case Field::LightPower: append<float>(bytes, scene.lights[i].power[c]); break;
+                case Field::LightPower: append<Real>(bytes, scene.lights[i].power[c]); break;
                 case Field::LightNodePower:
                     append<Real>(bytes, Real(lightNodePower(scene.lights[i], scene.nodes[constant.node])));
                     break;

@@ -1,6 +1,8 @@
 // Packing the scene for the shader: camera-relative, rescaled positions and the checker's cell
 // phase.
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_scene.h"
@@ -56,6 +58,19 @@ TEST(PackScene, DoubleLayoutKeepsWhatFloatWouldRound) {
     EXPECT_EQ(gpu::packScene<double>(scene, placementFor(scene, Formulation::Robust)).nodes[1].geometry.x, 0.1 / scale);
 }
 
+TEST(PackScene, DoubleLayoutKeepsALightPowerBeyondFloatsRange) {
+    // Lengths from 1 to 1e50 place at scale 2^83: the power 0.5e100 / 2^166 = 5.3e49 is inf in float.
+    Scene scene;
+    scene.shaderNames = {"grey"};
+    scene.shaders = {LambertShader{Color(0.5)}};
+    scene.nodes = {Node{Sphere{{0, 0, 5}, 1}, 0}};
+    scene.lights = {PointLight{{0, 1e50, 0}, Color(0.5), 1e100}};
+    const double scale = placementScale(scene);
+    ASSERT_EQ(scale, std::exp2(83));
+    const gpu::GpuScene<double> packed = gpu::packScene<double>(scene, placementFor(scene, Formulation::Robust));
+    EXPECT_DOUBLE_EQ(packed.lights[0].power.x, 0.5 * 1e100 / (scale * scale));
+}
+
 TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
     const glm::dvec3 far(3e7, -2e7, 1e7);
     Scene moved = checkerPlaneAndBall(glm::dvec3(0, 60, -120) + far);
@@ -89,6 +104,15 @@ TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {
 TEST(PackScene, SphereCheckerUsesAnglesThatDoNotMoveWithTheEye) {
     const gpu::GpuScene<float> packed = packRelative(checkerPlaneAndBall({-25, 60, 47}));
     EXPECT_EQ(packed.nodes[1].checker, glm::vec4(9, 0, 0, 0));
+}
+
+TEST(PackScene, SphereCheckerSizesFromAFullTurnOnGiveTheCellsOf360Degrees) {
+    // 2e43 degrees would be inf in float (lon / inf = -0 for lon < 0: cell 0, not -1).
+    Scene scene = checkerPlaneAndBall({-25, 60, 47});
+    scene.shaders[1] = CheckerShader{Color(1), Color(0), 2e43};
+    EXPECT_EQ(packRelative(scene).nodes[1].checker, glm::vec4(360, 0, 0, 0));
+    scene.shaders[1] = CheckerShader{Color(1), Color(0), 359.0};
+    EXPECT_EQ(packRelative(scene).nodes[1].checker, glm::vec4(359, 0, 0, 0));
 }
 
 }  // namespace
