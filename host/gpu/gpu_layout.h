@@ -54,7 +54,7 @@ struct GpuNode {
 
 template <typename Real>
 struct GpuLight {
-    RealVec4<Real> position;  // .xyz
+    RealVec4<Real> position;  // .xyz; .w 1 when a sphere hides it from every visible point (isLightHiddenFromView)
     glm::vec4 power;          // .rgb = colour * intensity
 };
 
