@@ -69,7 +69,11 @@ bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit,
 bool isOccluded(uint light, LightPath path, Hit hit) {
     vec3r position = lights[light].position.xyz;
     bool ownLeftOut = nodes[hit.node].surface.x > 0.0;  // planes: 0
+#ifdef HEXRAY_TEXTBOOK
     bool blocked = false;
+#else
+    bool blocked = lights[light].position.w > 0.0;  // a sphere holding the eye hides it
+#endif
 #ifdef HEXRAY_CANDIDATES
     CandidateRange planes = planeCandidates();
     for (uint k = planes.first; k < planes.end && !blocked; ++k) {

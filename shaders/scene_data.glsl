@@ -45,7 +45,7 @@ SCENE_BLOCK(NODE_BINDING) NodeBlock {
 };
 
 struct Light {
-    vec4r position;
+    vec4r position;   // .w: 1 when a sphere holding the eye hides it from every visible point
     vec4r power;      // colour * intensity (in f64 beyond float's range)
 };
 SCENE_BLOCK(LIGHT_BINDING) LightBlock {

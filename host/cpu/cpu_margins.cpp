@@ -151,6 +151,10 @@ double ownSphereShadowMargin(const Ray& shadowRay, const Sphere& sphere, double 
     return std::abs(exit - tMax) / scale;
 }
 
+double lightSideMargin(const glm::dvec3& light, const Sphere& sphere, double scale) {
+    return std::abs(glm::length(light - sphere.center) - sphere.radius) / scale;
+}
+
 double cameraRayPlaneMargin(double directionY, double heightAboveCamera) {
     if (heightAboveCamera == 0.0) {
         return kInfinity;

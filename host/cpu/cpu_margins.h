@@ -119,6 +119,11 @@ SphereCrossingMargins sphereCrossingMargins(const Ray& ray, const Sphere& sphere
 // distance between that exit and the light (at tMax), over `scale`.
 double ownSphereShadowMargin(const Ray& shadowRay, const Sphere& sphere, double tMax, double scale);
 
+// Which side of a sphere seen from inside a light lies on: the shader takes a light outside the
+// sphere that holds the eye as blocked by it (sphereHidesLight), and so does the reference at the
+// sphere's points (isLightVisible). ||L - c| - r|, the light's distance from the sphere, over `scale`.
+double lightSideMargin(const glm::dvec3& light, const Sphere& sphere, double scale);
+
 // A camera ray against the plane y = h: whether it hits is the sign of d.y (a plane through the
 // camera, h - eye.y == 0, is always missed: no decision, infinity). The shader's unit direction
 // carries an absolute error of a few units of roundoff, so the margin is |d.y|.

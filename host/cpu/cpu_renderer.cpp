@@ -227,8 +227,9 @@ void addShadowMargins(const RenderContext& context, std::size_t shadedNode, cons
     });
     const auto* shadedSphere = std::get_if<Sphere>(&scene.nodes[shadedNode].geometry);
     if (shadedSphere && glm::dot(hit.facingNormal, hit.geometricNormal) < 0.0) {  // seen from inside
-        margins.add(ownSphereShadowMargin(shadowRay, *shadedSphere, distance,
-                                          segmentScale + sphereScale(*shadedSphere, eye)));
+        const double scale = segmentScale + sphereScale(*shadedSphere, eye);
+        margins.add(ownSphereShadowMargin(shadowRay, *shadedSphere, distance, scale));
+        margins.add(lightSideMargin(light.position, *shadedSphere, scale));
     }
     if (!context.bvh) {
         for (std::size_t index = 0; index < scene.nodes.size(); ++index) {

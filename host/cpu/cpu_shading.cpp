@@ -25,6 +25,17 @@ double largestAbsComponent(const glm::dvec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
+// A point of a sphere seen from inside, whose surface faces a light outside that sphere: the
+// segment to the light runs into the ball and must leave it before the light (convexity), so the
+// sphere blocks it, exactly. Decided so rather than by the shadow ray, whose offset (roundoff of
+// the world coordinates, shadowRayOffset) can step over a light closer than that to the sphere.
+bool isBlockedByOwnSphere(const Geometry& geometry, const Hit& hit, const glm::dvec3& lightPosition) {
+    const auto* sphere = std::get_if<Sphere>(&geometry);
+    const bool seenFromInside = glm::dot(hit.facingNormal, hit.geometricNormal) < 0.0;
+    return sphere && seenFromInside && glm::dot(hit.facingNormal, lightPosition - hit.point) > 0.0 &&
+           glm::length(lightPosition - sphere->center) > sphere->radius;
+}
+
 }  // namespace
 
 int checkerParity(double u, double v, double size) {
@@ -98,6 +109,9 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
 
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
                     const glm::dvec3& lightPosition, const Bvh* bvh) {
+    if (isBlockedByOwnSphere(geometry, hit, lightPosition)) {
+        return false;
+    }
     const double offset = shadowRayOffset(geometry);
     const glm::dvec3 origin = hit.point + offset * hit.facingNormal;
     return isSegmentClear(scene, origin, lightPosition, offset, bvh);

@@ -44,6 +44,8 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
                     const Bvh* bvh = nullptr);
 
 // Whether the light at `lightPosition` can see the hit point (the shadow ray, offset as above).
+// A point of a sphere seen from inside that faces a light outside the sphere never can: decided
+// exactly, without the shadow ray.
 bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
                     const glm::dvec3& lightPosition, const Bvh* bvh = nullptr);
 

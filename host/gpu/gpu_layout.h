@@ -54,7 +54,7 @@ struct GpuNode {
 
 template <typename Real>
 struct GpuLight {
-    RealVec4<Real> position;  // .xyz
+    RealVec4<Real> position;  // .xyz; .w 1 when a sphere hides it from every visible point (isLightHiddenFromView)
     // .rgb = colour * intensity / scale^2: in the kernel's arithmetic, as the squared distances it
     // is divided by, since in f64 it can lie far outside float's range.
     RealVec4<Real> power;

@@ -123,7 +123,8 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     // Irradiance falls off as 1/r^2: lengths divided by s need intensities divided by s^2.
     const double powerScale = 1.0 / (placement.scale * placement.scale);
     for (const PointLight& light : scene.lights) {
-        packed.lights.push_back({toReal4<Real>(placement.position(light.position)),
+        const double hidden = isLightHiddenFromView(scene, light) ? 1.0 : 0.0;
+        packed.lights.push_back({toReal4<Real>(placement.position(light.position), hidden),
                                  toReal4<Real>(light.color * (light.intensity * powerScale))});
     }
     return packed;

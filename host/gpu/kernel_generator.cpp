@@ -268,6 +268,9 @@ private:
         if (textbook()) {
             return call("sphereDistanceTextbook", "path.shadowRay", center, radius) + " < path.shadowLength";
         }
+        if (test.hidesLight) {
+            return "true";
+        }
         const std::string f = lightPosition + " - " + center;
         const std::string power = lightValue(light, "NODE" + std::to_string(test.node) + "_POWER");
         const char* towardSurface = "-path.shadowRay.direction";

@@ -51,9 +51,18 @@ SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formula
 // The shadow tests a light needs. A plane blocks a segment only when its ends lie strictly on
 // opposite sides; every point the camera sees lies on the eye's side of a plane or on it (a camera
 // ray stops at the plane), so a plane with the eye and the light strictly on one side never blocks
-// that light. The textbook formulation tests every node, as a course would.
+// that light; a sphere that holds the eye and not the light blocks it from every visible point, and
+// no other test is needed. The textbook formulation tests every node, as a course would.
 std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& light, Formulation formulation) {
     std::vector<ShadowTest> tests;
+    if (formulation == Formulation::Robust) {
+        for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
+            const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry);
+            if (sphere && sphereHidesLight(*sphere, scene.camera.position, light.position)) {
+                return {ShadowTest{.node = i, .hidesLight = true}};
+            }
+        }
+    }
     const double eyeY = scene.camera.position.y;
     for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
         if (const auto* plane = std::get_if<Plane>(&scene.nodes[i].geometry)) {
@@ -173,6 +182,17 @@ Precision resolvePrecision(const Scene& scene, Precision requested, const Device
                           "use --precision f32");
     }
     return requested;
+}
+
+bool sphereHidesLight(const Sphere& sphere, const glm::dvec3& eye, const glm::dvec3& light) {
+    return glm::length(sphere.center - eye) < sphere.radius && glm::length(light - sphere.center) > sphere.radius;
+}
+
+bool isLightHiddenFromView(const Scene& scene, const PointLight& light) {
+    return std::any_of(scene.nodes.begin(), scene.nodes.end(), [&](const Node& node) {
+        const auto* sphere = std::get_if<Sphere>(&node.geometry);
+        return sphere && sphereHidesLight(*sphere, scene.camera.position, light.position);
+    });
 }
 
 bool isSmallScene(const Scene& scene) {

@@ -76,6 +76,9 @@ struct ShadowTest {
     std::uint32_t node = 0;
     SphereTest sphereTest = SphereTest::Robust;  // spheres only
     bool lightOutside = true;                    // spheres: the light lies outside the sphere
+    // Spheres: it holds the eye and not the light (sphereHidesLight), so it blocks the light from
+    // every visible point: decided without arithmetic, and the light's only test.
+    bool hidesLight = false;
     // False in a tile class no point of which it can shadow (tile_classes.h): the kernel leaves the
     // test out, while its values stay among the specialization constants, the same for every class.
     bool tested = true;
@@ -163,6 +166,15 @@ Placement placementFor(const Scene& scene, Formulation formulation);
 
 // The power of two the camera-relative placement divides lengths by.
 double placementScale(const Scene& scene);
+
+// Whether `sphere` holds the eye strictly inside and `light` strictly outside. Every point the
+// camera sees then lies in the closed ball, so the sphere blocks the light from each of them that
+// faces it (the others are unlit anyway): the light needs no shadow test, which from the light
+// could not resolve a sphere many radii away, or a grazing segment, in float32.
+bool sphereHidesLight(const Sphere& sphere, const glm::dvec3& eye, const glm::dvec3& light);
+
+// Whether some sphere of the scene hides `light` from every visible point (sphereHidesLight).
+bool isLightHiddenFromView(const Scene& scene, const PointLight& light);
 
 // Whether the scene fits the uniform-buffer layout (SMALL_SCENE_CAPACITY nodes and lights),
 // and so gets a generated kernel.

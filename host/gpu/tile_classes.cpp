@@ -254,7 +254,7 @@ SceneCode codeForClass(const SceneCode& code, const TileWork& work) {
     for (std::size_t light = 0; light < culled.shadowTests.size(); ++light) {
         for (ShadowTest& test : culled.shadowTests[light]) {
             const bool sphere = culled.nodes[test.node].geometry == gpu::GEOMETRY_SPHERE;
-            test.tested = !sphere || ((work.shadow[light] >> test.node) & 1u);
+            test.tested = !sphere || test.hidesLight || ((work.shadow[light] >> test.node) & 1u);
         }
     }
     return culled;

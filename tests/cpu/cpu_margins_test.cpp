@@ -219,6 +219,14 @@ TEST(OwnSphereShadowMargin, IsTheGapBetweenTheExitAndTheLight) {
     EXPECT_EQ(ownSphereShadowMargin(ray, sphere, 20.0, 50.0), 0.0);
 }
 
+TEST(LightSideMargin, IsTheLightsDistanceFromTheSphere) {
+    const Sphere sphere{{0, 0, 0}, 10.0};
+    // A light that a grazing segment reaches far from the exit point still lies 0.5 off the sphere.
+    EXPECT_DOUBLE_EQ(lightSideMargin({0, 10.5, 0}, sphere, 50.0), 0.5 / 50.0);
+    EXPECT_DOUBLE_EQ(lightSideMargin({0, 0, -9.5}, sphere, 50.0), 0.5 / 50.0);
+    EXPECT_EQ(lightSideMargin({10, 0, 0}, sphere, 50.0), 0.0);
+}
+
 // ---------------------------------------------------------------- bounds
 
 TEST(CameraDirectionRoundoff, GrowsAsAWideFieldOfViewCancelsAtTheCentre) {

@@ -343,6 +343,30 @@ TEST(Shadow, LightOnTheSphereSurfaceIsNotBlockedByIt) {
     EXPECT_EQ(blocked, 0);
 }
 
+TEST(Shadow, SphereSeenFromInsideBlocksALightJustOutsideIt) {
+    // Far from the origin the shadow ray's offset (3.6e-9 here) exceeds the light's distance from
+    // the sphere (2e-9): every point that faces the light must still find it blocked (convexity).
+    Scene scene;
+    scene.shaders.push_back(LambertShader{});
+    const Sphere sphere{{1e6, -2e6, 5e5}, 1};
+    scene.nodes.push_back(Node{sphere, 0});
+    const glm::dvec3 light = sphere.center + glm::dvec3(0, 1 + 2e-9, 0);
+    ASSERT_GT(glm::length(light - sphere.center), sphere.radius);
+    int facing = 0;
+    int lit = 0;
+    for (int i = 0; i < 50; ++i) {
+        const glm::dvec3 direction = glm::normalize(glm::dvec3(std::sin(i * 0.9), -1.0 + 0.04 * i, std::cos(i * 1.7)));
+        const std::optional<Hit> hit = intersectSphere(Ray{sphere.center, direction}, sphere);
+        ASSERT_TRUE(hit);
+        if (glm::dot(hit->facingNormal, light - hit->point) > 0.0) {
+            ++facing;
+            lit += isLightVisible(scene, sphere, *hit, light) ? 1 : 0;
+        }
+    }
+    EXPECT_GT(facing, 40);
+    EXPECT_EQ(lit, 0);
+}
+
 TEST(Shadow, SegmentClearBasics) {
     Scene scene;
     scene.shaders.push_back(LambertShader{});

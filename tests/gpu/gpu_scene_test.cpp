@@ -84,6 +84,12 @@ TEST(PackScene, AFarAwaySceneUploadsTheSameNumbersAsOneAtTheOrigin) {
     EXPECT_EQ(packed.lights[0].position, atOrigin.lights[0].position);
 }
 
+TEST(PackScene, ALightASphereHidesFromEveryVisiblePointIsMarked) {
+    EXPECT_EQ(packRelative(checkerPlaneAndBall({0, 60, -120})).lights[0].position.w, 0.0f);
+    // From inside the ball every point seen lies in it, and the light is outside it.
+    EXPECT_EQ(packRelative(checkerPlaneAndBall({-10, 60, 0})).lights[0].position.w, 1.0f);
+}
+
 TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {
     // Eye x / 20 = -1.25: cell -2, fraction 0.75; z / 20 = 2.35: cell 2, fraction 0.35; parity 0.
     const Scene scene = checkerPlaneAndBall({-25, 60, 47});

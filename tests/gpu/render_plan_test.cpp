@@ -89,6 +89,26 @@ TEST(RenderPlan, APlaneWithTheEyeAndTheLightOnOneSideCastsNoShadowTest) {
     EXPECT_EQ(planRender(scene, {Precision::F32Naive}, kLavapipe).kernel.code->shadowTests[0].size(), 2u);
 }
 
+// Every point the eye sees inside a sphere lies in its ball: a light outside it is blocked from all
+// of them, decided here rather than by a test from the light that float32 cannot resolve.
+TEST(RenderPlan, ASphereHoldingTheEyeHidesALightOutsideIt) {
+    const Scene room = twoSpheres(Sphere{{0, 0, 0}, 100}, Sphere{{0, 0, 50}, 10}, {0, 0, -1e9});
+    const RenderPlan plan = planRender(room, {Precision::F32}, kLavapipe);
+    ASSERT_EQ(plan.kernel.code->shadowTests[0].size(), 1u);  // the room only
+    EXPECT_TRUE(plan.kernel.code->shadowTests[0][0].hidesLight);
+    EXPECT_NE(generateKernel(*plan.kernel.code).find("bool blockedBy0 = true;"), std::string::npos);
+    EXPECT_TRUE(isLightHiddenFromView(room, room.lights[0]));
+    // A light inside the room, or an eye on its wall, is tested as usual; so is a textbook kernel.
+    Scene lampInside = room;
+    lampInside.lights[0].position = {0, 90, 0};
+    EXPECT_FALSE(isLightHiddenFromView(lampInside, lampInside.lights[0]));
+    EXPECT_EQ(planRender(lampInside, {Precision::F32}, kLavapipe).kernel.code->shadowTests[0].size(), 2u);
+    Scene eyeOnWall = room;
+    eyeOnWall.camera.position = {0, 0, -100};
+    EXPECT_FALSE(isLightHiddenFromView(eyeOnWall, eyeOnWall.lights[0]));
+    EXPECT_FALSE(planRender(room, {Precision::F32Naive}, kLavapipe).kernel.code->shadowTests[0][0].hidesLight);
+}
+
 TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
     Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
     for (int i = 0; i < 40; ++i) {
