@@ -132,8 +132,8 @@ private:
         for (std::size_t i = best_.lights.size(); i-- > 0;) {
             progress |= tryChange([&](Scene& s) { s.lights.erase(s.lights.begin() + std::ptrdiff_t(i)); });
         }
-        for (std::uint32_t i = std::uint32_t(best_.shaders.size()); i-- > 1;) {
-            if (!isUsed(best_, i)) progress |= tryCandidate(withoutShader(best_, i));
+        for (std::uint32_t i = std::uint32_t(best_.shaders.size()); i-- > 0;) {
+            if (best_.shaders.size() > 1 && !isUsed(best_, i)) progress |= tryCandidate(withoutShader(best_, i));
         }
         return progress;
     }
