@@ -266,7 +266,7 @@ void addShadingMargins(const RenderContext& context, const DecisionBounds& bound
         const double margin =
             sphere ? sphereCheckerMargin(hit.geometricNormal, checker->size, normalRoundoff) / bounds.sphereChecker
                    : planeCheckerMargin(textureCoordinates(node.geometry, hit, context.frameOrigin), checker->size,
-                                        planeTextureScales(hit, ray)) /
+                                        planeTextureScales(hit, ray, context.frameOrigin)) /
                          bounds.general;
         decisions.add(margin, kCheckerPart);
     }

@@ -134,7 +134,9 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
                                                                    gpu.classes, sized.image.encoding);
                 judgeComparison(comparison, judge(comparison, options.tolerance),
                                 plan.formulation == Formulation::Robust,
-                                judgeAmbiguity && requested == judgedForAmbiguity && !request.generatedKernel, where,
+                                judgeAmbiguity && samples == options.samplesPerPixel.front() &&
+                                    requested == judgedForAmbiguity && !request.generatedKernel,
+                                where,
                                 findings);
                 for (std::size_t i = before; i < findings.size(); ++i) {
                     findings[i].precision = requested;

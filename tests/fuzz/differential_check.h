@@ -60,13 +60,15 @@ using GpuRenderFunction = std::function<GpuRenderResult(const Scene& scene, cons
 // colours that are NaN, infinite or negative (in either render); in f32 and f64, topology
 // mismatches in decisions the reference did not find near-tied and colours beyond compare's
 // tolerance; an ambiguous share above the limit in the most precise comparison (f64 where the
-// device has it, else the precision auto picks), unless the scene has a reason to be near-tied
-// (near_tie_reasons.h); and for f32 on a scene float32 cannot hold, anything but f64 with a
-// warning. Empty when the scene passes.
+// device has it, else the precision auto picks) at the first sample count, unless the scene has a
+// reason to be near-tied (near_tie_reasons.h); and for f32 on a scene float32 cannot hold, anything
+// but f64 with a warning. Empty when the scene passes.
 //
 // The ambiguity limit is held by the most precise comparison because it judges the pixels the
 // others excuse: at 16 x 12 one row of pixels is 8 % of the image, so a horizon that f32 cannot
-// settle would otherwise fail a scene that f64, with bounds 2^29 tighter, checks in full.
+// settle would otherwise fail a scene that f64, with bounds 2^29 tighter, checks in full. And at
+// the first sample count (1), where a pixel's near-ties are its class's own: with more samples a
+// near-tie in any of them makes the pixel ambiguous, though it may excuse only the colour.
 std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, const DifferentialOptions& options,
                                   const GpuRenderFunction& render = {});
 

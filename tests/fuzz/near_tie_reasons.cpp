@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "gpu/precision.h"
+
 namespace hexray::test {
 namespace {
 
@@ -27,14 +29,15 @@ double magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs
 
 bool coincide(double a, double b, double scale) { return std::abs(a - b) <= kCoincidence * scale; }
 
-// A point on the sphere's surface, up to the rounding of the coordinates and distances involved.
-bool onSphere(const glm::dvec3& point, const Sphere& sphere) {
+// A point on a surface, up to the rounding of the coordinates and distances involved. `reach`: how
+// far the point's rays run (a light's to any point the camera sees), against which its distance
+// from the surface is a grazing angle.
+bool onSphere(const glm::dvec3& point, const Sphere& sphere, double reach) {
     const double distance = glm::length(point - sphere.center);
-    return coincide(distance, sphere.radius, distance + sphere.radius + magnitude(point) + magnitude(sphere.center));
+    return coincide(distance, sphere.radius,
+                    distance + sphere.radius + magnitude(point) + magnitude(sphere.center) + reach);
 }
 
-// `reach`: how far the point's rays run (from a light, about its distance to the camera), against
-// which its height above the plane is a grazing angle.
 bool onPlane(const glm::dvec3& point, const Plane& plane, double reach) {
     return coincide(point.y, plane.height, std::abs(point.y) + std::abs(plane.height) + reach);
 }
@@ -43,7 +46,7 @@ std::string name(const char* what, std::size_t index) { return std::string(what)
 
 class Reasons {
 public:
-    explicit Reasons(const Scene& scene) : scene_(scene) {}
+    explicit Reasons(const Scene& scene) : scene_(scene), extent_(sceneMagnitudes(scene).largest) {}
 
     std::vector<std::string> all() {
         pointsOnSurfaces();
@@ -64,9 +67,9 @@ private:
     void onSurfaces(const glm::dvec3& point, const std::string& what) {
         for (std::size_t n = 0; n < scene_.nodes.size(); ++n) {
             const Geometry& g = scene_.nodes[n].geometry;
-            const double reach = glm::length(point - scene_.camera.position);
+            const double reach = glm::length(point - scene_.camera.position) + extent_;
             const bool on = std::holds_alternative<Plane>(g) ? onPlane(point, std::get<Plane>(g), reach)
-                                                             : onSphere(point, std::get<Sphere>(g));
+                                                             : onSphere(point, std::get<Sphere>(g), reach);
             if (on) add(what + " lies on node " + std::to_string(n));
         }
     }
@@ -131,6 +134,7 @@ private:
     void add(std::string reason) { reasons_.push_back(std::move(reason)); }
 
     const Scene& scene_;
+    double extent_;  // the largest of the scene's lengths seen from the eye (gpu/precision.h)
     std::vector<std::string> reasons_;
 };
 
