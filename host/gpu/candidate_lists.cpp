@@ -425,11 +425,13 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     }
     cells += camera->cells;
     std::size_t entries = fixedEntries + camera->entries;
+    const std::size_t samples = std::size_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
     std::vector<GridChoice> lightGrids;
     for (std::size_t light = 0; light < lightCount; ++light) {
         const ViewSet set{1 + light * gpu::CUBE_FACES, gpu::CUBE_FACES};
         const std::size_t entryBudget = (kMaxEntries - entries) / (lightCount - light);
-        const std::size_t cellBudget = (kMaxCells - cells) / (lightCount - light);
+        const std::size_t cellBudget =
+            std::min((kMaxCells - cells) / (lightCount - light), kLightCellsPerSample * samples);
         auto choice = chooseGrids(sightings, set, lightCellSide(sightings, set, cellBudget), entryBudget, cellBudget);
         if (!choice) {
             return std::nullopt;

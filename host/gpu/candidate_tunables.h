@@ -18,6 +18,9 @@ inline constexpr std::size_t kCameraBudgetShareDivisor = 2;
 // A light's cells start at about the median sphere footprint's larger side (each sphere then
 // covers a few cells, each cell holds a few spheres); every this many records are sampled for it.
 inline constexpr std::size_t kSideSampleStride = 8;
+// A light's grid needs no more cells than the image has samples to look them up: at most this many
+// per sample (a small image's lists are then built in a blink, a large one's are unchanged).
+inline constexpr std::size_t kLightCellsPerSample = 4;
 // No grid is more than this many cells across.
 inline constexpr double kMaxCellsAcross = 65536;
 // f32-naive shadow rays start at the surface, and their rounding grows with their length: a

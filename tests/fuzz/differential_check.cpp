@@ -99,10 +99,7 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
     const bool float64 = renderer.abilities().float64;
     std::vector<Precision> precisions = options.precisions;
     std::erase_if(precisions, [&](Precision p) { return p == Precision::F64 && !float64; });
-    std::vector<PlanRequest> requests = {{.acceleration = options.dataDrivenAcceleration, .generatedKernel = false}};
-    if (options.generatedKernels) {
-        requests.push_back({});  // the plan's own choice
-    }
+    const PlanRequest dataDriven{.acceleration = options.dataDrivenAcceleration, .generatedKernel = false};
     const bool judgeAmbiguity = nearTieReasons(scene).empty();
     std::vector<Finding> findings;
     for (const std::uint32_t samples : options.samplesPerPixel) {
@@ -112,6 +109,10 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
         sized.image.samplesPerPixel = samples;
         const Precision judgedForAmbiguity = mostPrecise(renderer.resolve(sized, Precision::Auto), precisions);
         References references(sized);
+        std::vector<PlanRequest> requests = {dataDriven};
+        if (options.generatedKernels && options.generatedKernelSamples.value_or(samples) == samples) {
+            requests.push_back({});  // the plan's own choice
+        }
         for (const Precision requested : precisions) {
             std::string previousKernel;
             for (PlanRequest request : requests) {
@@ -154,6 +155,7 @@ DifferentialOptions optionsFor(const Finding& finding, DifferentialOptions optio
         options.precisions = {*finding.precision};
         options.samplesPerPixel = {finding.samplesPerPixel};
         options.generatedKernels = finding.generatedKernel;
+        options.generatedKernelSamples.reset();
     }
     return options;
 }

@@ -48,6 +48,7 @@ struct DifferentialOptions {
     // lavapipe most of a check's time).
     Acceleration dataDrivenAcceleration = Acceleration::Always;
     bool generatedKernels = true;
+    std::optional<std::uint32_t> generatedKernelSamples;  // the generated kernels only at this sample count
 };
 
 // The options that render again just the render `finding` came from.

@@ -33,12 +33,13 @@ namespace {
 struct FuzzOptions {
     double seconds = 120;
     std::uint64_t firstSeed = 0;
+    std::uint64_t seedStride = 1;  // the seeds checked: firstSeed, firstSeed + seedStride, ...
     std::uint64_t scenes = 0;  // 0: until the time is up
     std::optional<std::uint64_t> seed;  // one scene only, reported in full
     fs::path failures = "differential-failures";
     std::uint32_t maxFailures = 5;
     std::string device;
-    std::uint64_t generatedEvery = 4;
+    std::uint64_t generatedEvery = 8;
     bool shrink = true;
 };
 
@@ -47,12 +48,23 @@ constexpr std::uint64_t kOutOfRangeEvery = 8;
 // A shrink stops after this many candidate scenes (each is rendered once, in the failing render only).
 constexpr std::size_t kShrinkTries = 400;
 
-// The options for the scene of `seed`. Every scene is rendered by the data-driven kernels; every
-// generatedEvery-th also by the kernel generated for it (its compile costs what several scenes do).
+// SplitMix64's finaliser: the choices below spread evenly over any stride of seeds.
+std::uint64_t mixed(std::uint64_t seed) {
+    seed = (seed ^ (seed >> 30)) * 0xbf58476d1ce4e5b9ull;
+    seed = (seed ^ (seed >> 27)) * 0x94d049bb133111ebull;
+    return seed ^ (seed >> 31);
+}
+
+// The options for the scene of `seed`. Every scene is rendered by the data-driven kernel, with the
+// candidate lists or testing every node; about one in generatedEvery also by the kernel generated
+// for it, at one of the sample counts (its compile per scene and sample count costs what a dozen
+// scenes through the data-driven kernel do).
 DifferentialOptions optionsFor(std::uint64_t seed, std::uint64_t generatedEvery) {
+    const std::uint64_t bits = mixed(seed);
     DifferentialOptions options;
-    options.dataDrivenAcceleration = seed % 2 == 0 ? Acceleration::Always : Acceleration::None;
-    options.generatedKernels = generatedEvery != 0 && seed % generatedEvery == 0;
+    options.dataDrivenAcceleration = bits & 1 ? Acceleration::None : Acceleration::Always;
+    options.generatedKernels = generatedEvery != 0 && (bits >> 8) % generatedEvery == 0;
+    options.generatedKernelSamples = options.samplesPerPixel[(bits >> 1) % options.samplesPerPixel.size()];
     return options;
 }
 
@@ -104,7 +116,8 @@ int run(const FuzzOptions& options) {
     std::uint64_t nearTied = 0;  // scenes whose ambiguity was not held to the limit
     std::printf("differential fuzzing on %s from seed %llu\n", context.selected().name.c_str(),
                 static_cast<unsigned long long>(first));
-    for (std::uint64_t seed = first; limit ? done < limit : elapsed() < options.seconds; ++seed, ++done) {
+    for (std::uint64_t seed = first; limit ? done < limit : elapsed() < options.seconds;
+         seed += options.seedStride, ++done) {
         const Scene scene = generateScene(seed);
         const std::vector<Finding> findings = findingsFor(renderer, scene, seed, options.generatedEvery);
         const std::vector<std::string> reasons = nearTieReasons(scene);
@@ -126,10 +139,11 @@ int run(const FuzzOptions& options) {
         }
     }
     const double seconds = elapsed();
-    std::printf("%llu scenes (seeds %llu to %llu) in %.1f s: %.2f scenes per second; %u failed; %llu with something "
-                "on a boundary or below resolution, their ambiguous share not held to the limit\n",
+    std::printf("%llu scenes (seeds %llu to %llu, every %llu) in %.1f s: %.2f scenes per second; %u failed; %llu with "
+                "something on a boundary or below resolution, their ambiguous share not held to the limit\n",
                 static_cast<unsigned long long>(done), static_cast<unsigned long long>(first),
-                static_cast<unsigned long long>(first + done - 1), seconds, double(done) / seconds, failures,
+                static_cast<unsigned long long>(first + (done - 1) * options.seedStride),
+                static_cast<unsigned long long>(options.seedStride), seconds, double(done) / seconds, failures,
                 static_cast<unsigned long long>(nearTied));
     return failures ? 1 : 0;
 }
@@ -141,6 +155,9 @@ int main(int argc, char** argv) {
     FuzzOptions options;
     app.add_option("--seconds", options.seconds, "How long to fuzz")->capture_default_str();
     app.add_option("--first-seed", options.firstSeed, "The first scene's seed; the next ones follow")
+        ->capture_default_str();
+    app.add_option("--seed-stride", options.seedStride, "Check every N-th seed from the first (N processes: one each)")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
     app.add_option("--scenes", options.scenes, "How many scenes (instead of --seconds)");
     app.add_option("--seed", options.seed, "Check only this seed's scene, and print it");
