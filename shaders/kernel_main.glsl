@@ -8,6 +8,7 @@
 #include "camera_ray.glsl"
 #include "encode.glsl"
 #include "inspect_hooks.glsl"
+#include "precision.glsl"
 #include "ray.glsl"
 #include "render_outputs.glsl"
 #include "scene_data.glsl"
@@ -39,6 +40,12 @@ void writeAov(uint index, Ray ray, Hit hit) {
 // One invocation replays the requested pixel as main() renders it, recording every node's
 // candidate t, the hit it chose, and, through the hooks called while shading, the surface and
 // each light's terms for the requested sample.
+// The pixel's colour from the sum of its samples: several saturated samples (each up to float's
+// limit) would sum to inf.
+vec3 sampleAverage(vec3 sum) {
+    return min(sum, vec3(FLOAT_MAX)) / float(SAMPLES_PER_PIXEL);
+}
+
 void traceMain() {
     if (gl_GlobalInvocationID.xy != uvec2(0u)) {
         return;
@@ -70,7 +77,7 @@ void traceMain() {
         }
     }
     traceActive = false;
-    trace.header.pixelColor = vec4(sum / float(SAMPLES_PER_PIXEL), 1.0);
+    trace.header.pixelColor = vec4(sampleAverage(sum), 1.0);
     trace.header.result.x = 1u;
 }
 
@@ -105,7 +112,7 @@ void main() {
             firstHit = hit;
         }
     }
-    vec3 color = sum / float(SAMPLES_PER_PIXEL);
+    vec3 color = sampleAverage(sum);
     uint index = pixel.y * frame.imageSize.x + pixel.x;
     if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
         pixels[index] = vec4(color, 1.0);

@@ -40,6 +40,12 @@ LightPath lightPath(Surface s, vec3r lightPosition) {
 // pixel anyway.
 const float MAX_LIGHT_TERM = 3.0e38;
 
+// A lit shader's colour: the albedo (up to 1e10 per channel) times the capped irradiance, capped
+// again so that the colour stays finite.
+vec3 litColor(vec3 albedo, vec3 irradiance) {
+    return min(albedo * min(irradiance, vec3(MAX_LIGHT_TERM)), vec3(MAX_LIGHT_TERM));
+}
+
 // Light `index`'s part of the irradiance; sets its lit bit in `flags` and records it in a trace.
 // In the kernel's arithmetic: in f64 the power and cos / r^2 can each lie beyond float's range
 // (5e49 and 1e-50) where their product does not. cos / r^2 is capped (finite) first, so that a

@@ -19,4 +19,6 @@ const float REAL_MAX = 3.4028235e38;       // farther than any hit (GLSL has no 
 const float UNIT_ROUNDOFF = 5.9604645e-8;  // 2^-24
 #endif
 
+const float FLOAT_MAX = 3.4028235e38;  // colours' largest finite value
+
 #endif  // HEXRAY_PRECISION_GLSL

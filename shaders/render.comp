@@ -130,7 +130,7 @@ vec3 shade(Ray ray, Hit hit, out uint flags) {
         LightPath path = lightPath(s, lights[i].position.xyz);
         irradiance += lightTerm(i, lights[i].power, path, isOccluded(i, path, hit), flags);
     }
-    return albedo * min(irradiance, vec3(MAX_LIGHT_TERM));
+    return litColor(albedo, irradiance);
 }
 
 #include "kernel_main.glsl"

@@ -1,6 +1,7 @@
 #include "cpu/cpu_renderer.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -340,7 +341,9 @@ void renderRow(const RenderContext& context, std::uint32_t y, std::uint32_t firs
     for (std::uint32_t x = 0; x < width; ++x) {
         const RenderedPixel pixel = renderPixel(context, x, y);
         const std::size_t index = std::size_t(y - firstRow) * width + x;
-        band.image.pixels[index] = glm::vec3(pixel.color);  // linear, not clamped: encoding happens later
+        // Linear, not clamped (encoding happens later), but finite: a saturated colour beyond
+        // float's range is float's largest.
+        band.image.pixels[index] = glm::vec3(glm::min(pixel.color, Color(FLT_MAX)));
         band.classes[index] = pixel.pixelClass;
         band.margins[index] = pixel.margin;
         band.ambiguity[index] = pixel.ambiguity;

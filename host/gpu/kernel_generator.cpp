@@ -339,7 +339,7 @@ private:
         for (std::uint32_t light = 0; light < code_.shadowTests.size(); ++light) {
             lightBlock(light);
         }
-        out_ << "    return albedo * min(irradiance, vec3(MAX_LIGHT_TERM));\n}\n\n";
+        out_ << "    return litColor(albedo, irradiance);\n}\n\n";
     }
 
     const SceneCode& code_;

@@ -6,8 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "gpu/precision.h"
-
 namespace hexray::test {
 namespace {
 
@@ -15,11 +13,14 @@ namespace {
 // below what a random placement meets by chance, far above the rounding of a placement computed
 // to lie on a boundary (a centre at a plane's height plus the radius, say).
 constexpr double kCoincidence = 0x1p-40;
-// A plane's checker cells further than this factor from the scale of its visible points (their
-// coordinates, the plane's distance from the eye): finer, they are below the coordinates' rounding;
-// coarser, every point the eye sees near the plane lies within rounding of the cell edges that pass
-// below the eye (the shader's cell coordinates carry the roundoff of the cell size).
-constexpr double kPlaneCellRange = 0x1p40;
+// A plane's checker cells finer than this share of the scale of its visible points (their
+// coordinates, the plane's distance from the eye): toward the horizon a hit's coordinates carry
+// roundoff of that scale over the squared grazing cosine, and at 16 x 12 pixels the rows next to
+// the horizon graze at a few hundredths. Or coarser than this many times the plane's distance:
+// every point the eye sees near the plane lies within rounding of the cell edges that pass below
+// the eye (the shader's cell coordinates carry the roundoff of the cell size).
+constexpr double kFinestPlaneCell = 0x1p-30;
+constexpr double kCoarsestPlaneCell = 0x1p40;
 // A sphere's checker cell finer than this many degrees: its edges come from the driver's float
 // atan (decisionBounds' 128 float32 units, about 4e-4 degrees), so at a few samples a pixel most
 // cells of that size lie within the bound of an edge somewhere.
@@ -46,11 +47,12 @@ std::string name(const char* what, std::size_t index) { return std::string(what)
 
 class Reasons {
 public:
-    explicit Reasons(const Scene& scene) : scene_(scene), extent_(sceneMagnitudes(scene).largest) {}
+    explicit Reasons(const Scene& scene) : scene_(scene), extent_(extentOf(scene)) {}
 
     std::vector<std::string> all() {
         pointsOnSurfaces();
         touchingSurfaces();
+        coincidentPlanes();
         finerThanResolution();
         return reasons_;
     }
@@ -83,6 +85,19 @@ private:
             for (std::size_t b = 0; b < scene_.nodes.size(); ++b) {
                 if (b != a && touches(*sphere, scene_.nodes[b].geometry)) {
                     add("node " + std::to_string(a) + " touches node " + std::to_string(b));
+                }
+            }
+        }
+    }
+
+    // Two planes at one height: their hits tie everywhere. (Two equal spheres touch, see below.)
+    void coincidentPlanes() {
+        for (std::size_t a = 0; a < scene_.nodes.size(); ++a) {
+            for (std::size_t b = a + 1; b < scene_.nodes.size(); ++b) {
+                const auto* first = std::get_if<Plane>(&scene_.nodes[a].geometry);
+                const auto* second = std::get_if<Plane>(&scene_.nodes[b].geometry);
+                if (first && second && onPlane(glm::dvec3(0.0, first->height, 0.0), *second, 0.0)) {
+                    add("node " + std::to_string(a) + " coincides with node " + std::to_string(b));
                 }
             }
         }
@@ -126,15 +141,30 @@ private:
         if (!checker) return;
         const glm::dvec3& eye = scene_.camera.position;
         const double distance = std::abs(std::get<Plane>(scene_.nodes[n].geometry).height - eye.y);
-        if (checker->size * kPlaneCellRange < magnitude(eye) + distance || checker->size > kPlaneCellRange * distance) {
+        if (checker->size < kFinestPlaneCell * (magnitude(eye) + distance) || checker->size > kCoarsestPlaneCell * distance) {
             add("node " + std::to_string(n) + "'s checker cells are out of scale with the points seen on it");
         }
     }
 
     void add(std::string reason) { reasons_.push_back(std::move(reason)); }
 
+    // How far from the eye the scene's surfaces and lights reach.
+    static double extentOf(const Scene& scene) {
+        const glm::dvec3& eye = scene.camera.position;
+        double extent = 0.0;
+        for (const Node& node : scene.nodes) {
+            const auto* sphere = std::get_if<Sphere>(&node.geometry);
+            extent = std::max(extent, sphere ? glm::length(sphere->center - eye) + sphere->radius
+                                             : std::abs(std::get<Plane>(node.geometry).height - eye.y));
+        }
+        for (const PointLight& light : scene.lights) {
+            extent = std::max(extent, glm::length(light.position - eye));
+        }
+        return extent;
+    }
+
     const Scene& scene_;
-    double extent_;  // the largest of the scene's lengths seen from the eye (gpu/precision.h)
+    double extent_;
     std::vector<std::string> reasons_;
 };
 

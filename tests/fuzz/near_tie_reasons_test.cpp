@@ -1,0 +1,70 @@
+// The reasons a scene may be near-tied on many pixels: each is found where it is, and a scene with
+// none of them has none.
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "fuzz/near_tie_reasons.h"
+
+namespace hexray {
+namespace {
+
+// A floor under a ball, lit from above, the camera off to one side: nothing on a boundary.
+Scene clearScene() {
+    Scene scene;
+    scene.camera.position = {0.3, 2.1, -5.2};
+    scene.shaderNames = {"matte", "tiles"};
+    scene.shaders = {LambertShader{}, CheckerShader{Color(1.0), Color(0.0), 0.7}};
+    scene.nodes = {Node{Plane{-1.0}, 1}, Node{Sphere{{0.1, 0.2, 0.3}, 0.9}, 0}};
+    scene.lights = {PointLight{{1.0, 6.0, -2.0}, Color(1.0), 30.0}};
+    return scene;
+}
+
+std::string reasonsOf(const Scene& scene) {
+    std::string all;
+    for (const std::string& reason : test::nearTieReasons(scene)) all += reason + "; ";
+    return all;
+}
+
+TEST(NearTieReasons, NoneInAnOrdinaryScene) { EXPECT_EQ(reasonsOf(clearScene()), ""); }
+
+TEST(NearTieReasons, FindEachKind) {
+    const auto reasonsWith = [](auto&& change) {
+        Scene scene = clearScene();
+        change(scene);
+        return reasonsOf(scene);
+    };
+    EXPECT_EQ(reasonsWith([](Scene& s) { s.lights[0].position.y = -1.0; }), "light 0 lies on node 0; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { s.camera.position = {0.1, 1.1, 0.3}; }), "the camera lies on node 1; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { std::get<Sphere>(s.nodes[1].geometry).center.y = -0.1; }),
+              "node 1 touches node 0; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { s.nodes.push_back(Node{Plane{-1.0}, 0}); }), "node 0 coincides with node 2; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { s.nodes.push_back(Node{Sphere{{0.1, 0.2, 2.0}, 0.8}, 0}); }),
+              "node 1 touches node 2; node 2 touches node 1; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { std::get<Sphere>(s.nodes[1].geometry).radius = 1e-30; }),
+              "node 1 is smaller than the rounding of its position; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) {
+                  s.shaderNames.push_back("fine");
+                  s.shaders.push_back(CheckerShader{Color(1.0), Color(0.0), 0.2});
+                  s.nodes[1].shaderIndex = 2;
+              }),
+              "node 1's checker cells are finer than float atan resolves; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { std::get<CheckerShader>(s.shaders[1]).size = 1e-12; }),
+              "node 0's checker cells are out of scale with the points seen on it; ");
+    EXPECT_EQ(reasonsWith([](Scene& s) { std::get<CheckerShader>(s.shaders[1]).size = 1e15; }),
+              "node 0's checker cells are out of scale with the points seen on it; ");
+}
+
+// A light far from the plane's rounding but close to it against the scene's extent is on it.
+TEST(NearTieReasons, ALightNearAPlaneIsOnItAgainstTheScenesExtent) {
+    Scene scene = clearScene();
+    scene.lights[0].position = {0.0, -1.0 + 1e-9, 0.0};
+    EXPECT_EQ(reasonsOf(scene), "");
+    std::get<Sphere>(scene.nodes[1].geometry) = Sphere{{0.0, 5.0, 1e9}, 1.0};
+    EXPECT_EQ(reasonsOf(scene), "light 0 lies on node 0; ");
+}
+
+}  // namespace
+}  // namespace hexray
