@@ -17,7 +17,7 @@ if [ "${1:-}" = --differential ]; then
   cmake --build build --parallel "$(nproc)" --target hexray_differential_fuzzer >/dev/null
   lavapipe_icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -n 1)
   export VK_DRIVER_FILES="$lavapipe_icd" VK_ICD_FILENAMES="$lavapipe_icd"
-  # One process a core, each on every jobs-th seed, each with one lavapipe thread: a 16 x 12 image
+  # One process a core, each on every jobs-th seed, each with one lavapipe thread: a 32 x 24 image
   # gains nothing from more, and the hand-over between threads costs a third of a scene's time.
   export LP_NUM_THREADS=1
   commit=$(git rev-parse --short=7 HEAD 2>/dev/null || echo 0)

@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, DifferentialRegression, ::testing::ValuesIn(dif
 class DifferentialCheck : public test::ValidatedVulkanTest {
 protected:
     // A shipped scene at the fuzzer's size, with the GPU's render spoilt by `spoil`. (Not the lecture
-    // demo: its round numbers put whole rows of 16 x 12 pixel centres exactly on checker edges.)
+    // demo: its round numbers put whole rows of small images' pixel centres exactly on checker edges.)
     std::vector<test::Finding> findingsWith(const std::function<void(GpuRenderResult&)>& spoil) {
         const Scene scene = loadSceneFile(test::sourcePath("scenes/spheres-and-lights.json"));
         GpuRenderer renderer(context());

@@ -5,26 +5,29 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace hexray::test {
 namespace {
 
-// Two lengths closer than this, relative to the magnitudes they come from, count as equal: far
-// below what a random placement meets by chance, far above the rounding of a placement computed
-// to lie on a boundary (a centre at a plane's height plus the radius, say).
-constexpr double kCoincidence = 0x1p-40;
+// Two lengths closer than this, relative to the magnitudes they come from, count as equal: f64's
+// decision bounds are 2 (direction roundoff + 16) units of 2^-53, and a field of view near 180
+// degrees (direction roundoff in the hundreds) and rays grazing at a hundredth take them to about
+// 2^-30; far above the rounding of a placement computed to lie on a boundary.
+constexpr double kCoincidence = 0x1p-30;
 // A plane's checker cells finer than this share of the scale of its visible points (their
 // coordinates, the plane's distance from the eye): toward the horizon a hit's coordinates carry
-// roundoff of that scale over the squared grazing cosine, and at 16 x 12 pixels the rows next to
+// roundoff of that scale over the squared grazing cosine, and at 32 x 24 pixels the rows next to
 // the horizon graze at a few hundredths. Or coarser than this many times the plane's distance:
 // every point the eye sees near the plane lies within rounding of the cell edges that pass below
 // the eye (the shader's cell coordinates carry the roundoff of the cell size).
 constexpr double kFinestPlaneCell = 0x1p-30;
 constexpr double kCoarsestPlaneCell = 0x1p40;
-// A sphere's checker cell finer than this many degrees: its edges come from the driver's float
-// atan (decisionBounds' 128 float32 units, about 4e-4 degrees), so at a few samples a pixel most
-// cells of that size lie within the bound of an edge somewhere.
-constexpr double kFinestSphereCellDegrees = 0.5;
+// A sphere's checker edges come from the driver's float atan (decisionBounds: 128 float32 units,
+// whatever the precision), of a normal that carries roundoff of (distance from the eye + radius) /
+// radius: cells narrower than this many such bounds leave a few per cent of the pixels near an edge.
+constexpr double kAtanBoundRadians = 128.0 * 0x1p-24;
+constexpr double kSphereCellBounds = 1000.0;
 
 double magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
@@ -130,7 +133,9 @@ private:
                 add("node " + std::to_string(n) + " is smaller than the rounding of its position");
             }
             const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[node.shaderIndex]);
-            if (checker && checker->size < kFinestSphereCellDegrees) {
+            const double normalScale =
+                (glm::length(sphere->center - scene_.camera.position) + sphere->radius) / sphere->radius;
+            if (checker && checker->size < kSphereCellBounds * glm::degrees(kAtanBoundRadians) * normalScale) {
                 add("node " + std::to_string(n) + "'s checker cells are finer than float atan resolves");
             }
         }

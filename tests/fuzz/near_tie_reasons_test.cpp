@@ -60,7 +60,7 @@ TEST(NearTieReasons, FindEachKind) {
 // A light far from the plane's rounding but close to it against the scene's extent is on it.
 TEST(NearTieReasons, ALightNearAPlaneIsOnItAgainstTheScenesExtent) {
     Scene scene = clearScene();
-    scene.lights[0].position = {0.0, -1.0 + 1e-9, 0.0};
+    scene.lights[0].position = {0.0, -1.0 + 1e-6, 0.0};
     EXPECT_EQ(reasonsOf(scene), "");
     std::get<Sphere>(scene.nodes[1].geometry) = Sphere{{0.0, 5.0, 1e9}, 1.0};
     EXPECT_EQ(reasonsOf(scene), "light 0 lies on node 0; ");

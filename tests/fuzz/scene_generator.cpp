@@ -231,8 +231,8 @@ struct Builder {
     }
 
     void chooseImage() {
-        scene.image.width = 16;
-        scene.image.height = 12;
+        scene.image.width = 32;
+        scene.image.height = 24;
         scene.image.sampling = draw.chance(0.3) ? Sampling::Corner : Sampling::Center;
         scene.image.encoding = draw.chance(0.3) ? Encoding::Linear : Encoding::Srgb;
         scene.background = colour(draw);

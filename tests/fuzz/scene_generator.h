@@ -12,7 +12,7 @@
 
 namespace hexray::test {
 
-// A scene within the supported range (scene.h), 16 x 12 pixels, 1 sample per pixel. What it places
+// A scene within the supported range (scene.h), 32 x 24 pixels, 1 sample per pixel. What it places
 // exactly on a boundary, near_tie_reasons.h finds again in the scene itself.
 Scene generateScene(std::uint64_t seed);
 
