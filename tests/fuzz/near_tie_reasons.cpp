@@ -28,6 +28,9 @@ constexpr double kCoarsestPlaneCell = 0x1p40;
 // radius: cells narrower than this many such bounds leave a few per cent of the pixels near an edge.
 constexpr double kAtanBoundRadians = 128.0 * 0x1p-24;
 constexpr double kSphereCellBounds = 1000.0;
+// Or a field of view so narrow that a pixel spans fewer than this many such bounds: an edge in
+// view, or a pole where every meridian meets, is then near-tied over many pixels.
+constexpr double kSpherePixelBounds = 100.0;
 
 double magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
@@ -93,13 +96,15 @@ private:
         }
     }
 
-    // Two planes at one height: their hits tie everywhere. (Two equal spheres touch, see below.)
+    // Two planes at one height, against their distance from the eye: their hits tie everywhere. (Two
+    // equal spheres touch, see below.)
     void coincidentPlanes() {
         for (std::size_t a = 0; a < scene_.nodes.size(); ++a) {
             for (std::size_t b = a + 1; b < scene_.nodes.size(); ++b) {
                 const auto* first = std::get_if<Plane>(&scene_.nodes[a].geometry);
                 const auto* second = std::get_if<Plane>(&scene_.nodes[b].geometry);
-                if (first && second && onPlane(glm::dvec3(0.0, first->height, 0.0), *second, 0.0)) {
+                const double reach = first ? std::abs(first->height - scene_.camera.position.y) : 0.0;
+                if (first && second && onPlane(glm::dvec3(0.0, first->height, 0.0), *second, reach)) {
                     add("node " + std::to_string(a) + " coincides with node " + std::to_string(b));
                 }
             }
@@ -133,12 +138,18 @@ private:
                 add("node " + std::to_string(n) + " is smaller than the rounding of its position");
             }
             const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[node.shaderIndex]);
-            const double normalScale =
-                (glm::length(sphere->center - scene_.camera.position) + sphere->radius) / sphere->radius;
-            if (checker && checker->size < kSphereCellBounds * glm::degrees(kAtanBoundRadians) * normalScale) {
+            if (checker && sphereCellsUnresolved(*sphere, checker->size)) {
                 add("node " + std::to_string(n) + "'s checker cells are finer than float atan resolves");
             }
         }
+    }
+
+    bool sphereCellsUnresolved(const Sphere& sphere, double cellDegrees) const {
+        const double bound = glm::degrees(kAtanBoundRadians) *
+                             (glm::length(sphere.center - scene_.camera.position) + sphere.radius) / sphere.radius;
+        const double pixelDegrees =
+            scene_.camera.fovDegrees / std::hypot(double(scene_.image.width), double(scene_.image.height));
+        return cellDegrees < kSphereCellBounds * bound || pixelDegrees < kSpherePixelBounds * bound;
     }
 
     void planeCellsOutOfScale(std::size_t n) {
