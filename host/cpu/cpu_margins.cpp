@@ -170,14 +170,14 @@ double nearestNodeMargin(double nearestT, double otherT, double scale) {
     return (otherT - nearestT) / scale;
 }
 
-glm::dvec2 planeTextureScales(const Hit& hit, const Ray& cameraRay, const glm::dvec3& eye) {
+glm::dvec2 planeTextureScales(const Hit& hit, const Ray& cameraRay) {
     const double grazing = std::abs(cameraRay.direction.y);
     if (!(grazing > 0.0)) {
         return glm::dvec2(kInfinity);
     }
     const glm::dvec3 offset = hit.point - cameraRay.origin;
     const double t = glm::length(offset);
-    return {t + std::abs(offset.x) / grazing + std::abs(eye.x), t + std::abs(offset.z) / grazing + std::abs(eye.z)};
+    return {t + std::abs(offset.x) / grazing, t + std::abs(offset.z) / grazing};
 }
 
 double planeCheckerMargin(const glm::dvec2& uv, double size, const glm::dvec2& uvScales) {

@@ -144,11 +144,9 @@ double nearestNodeMargin(double nearestT, double otherT, double scale);
 // How far float32 roundoff can move a plane hit's texture coordinates (x, z), per unit of
 // relative roundoff, each on its own: the hit eye + (h / d.y) d moves with the direction by
 // t = |p - eye| along its own axis and by |p_u - eye_u| / |d.y| through d.y. (So a line of cells
-// running away from the camera is sharper than one across the view.) Plus |eye_u| itself, with
-// `eye` the world position of the coordinates' origin (EyeFrameScene::eye): the cells are fixed in
-// the world, so each renderer rounds the eye's place among them. Infinite for a ray parallel to
-// the plane.
-glm::dvec2 planeTextureScales(const Hit& hit, const Ray& cameraRay, const glm::dvec3& eye = glm::dvec3(0.0));
+// running away from the camera is sharper than one across the view.) Infinite for a ray
+// parallel to the plane.
+glm::dvec2 planeTextureScales(const Hit& hit, const Ray& cameraRay);
 
 // Which checker cell a plane hit is in: floor(u/size) and floor(v/size) flip when roundoff moves
 // (u, v) across a multiple of size. For each axis the distance (in length) to the nearest such

@@ -247,6 +247,15 @@ void addShadowMargins(const RenderContext& context, std::size_t shadedNode, cons
     }
 }
 
+// How far the eye's place among a plane's cells is rounded, per axis, in units of the compared
+// arithmetic's roundoff: the cells are fixed in the world, and both renderers find the eye among
+// them in double (the reference adds the eye back, the shader's host divides its coordinates by the
+// cell size), so to 2^-53 of the eye's world coordinates whatever the shader's precision.
+glm::dvec2 eyePlaceRoundoff(const RenderContext& context) {
+    return glm::dvec2(std::abs(context.frameOrigin.x), std::abs(context.frameOrigin.z)) *
+           (0x1p-53 / context.roundoff.general);
+}
+
 // The decisions of a lit shader: the checker cell, and for each light whether the surface faces
 // it and, if so, whether anything blocks it. A constant shader makes none.
 void addShadingMargins(const RenderContext& context, const DecisionBounds& bounds, const Ray& ray,
@@ -267,7 +276,7 @@ void addShadingMargins(const RenderContext& context, const DecisionBounds& bound
         const double margin =
             sphere ? sphereCheckerMargin(hit.geometricNormal, checker->size, normalRoundoff) / bounds.sphereChecker
                    : planeCheckerMargin(textureCoordinates(node.geometry, hit, context.frameOrigin), checker->size,
-                                        planeTextureScales(hit, ray, context.frameOrigin)) /
+                                        planeTextureScales(hit, ray) + eyePlaceRoundoff(context)) /
                          bounds.general;
         decisions.add(margin, kCheckerPart);
     }
