@@ -1,7 +1,7 @@
 #include "fuzz/differential_check.h"
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include "compare/decision_roundoff.h"

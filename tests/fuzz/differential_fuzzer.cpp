@@ -165,7 +165,8 @@ int main(int argc, char** argv) {
     app.add_option("--max-failures", options.maxFailures, "Stop after this many failing scenes")
         ->capture_default_str();
     app.add_option("--generated-every", options.generatedEvery,
-                   "Render every N-th scene with its generated kernel too (0: never); every scene gets the data-driven ones")
+                   "Render about one scene in N with its generated kernel too, at one sample count (0: never); every scene "
+                   "gets the data-driven ones")
         ->capture_default_str();
     app.add_flag("!--no-shrink", options.shrink, "Report failing seeds without shrinking them (replay one with --seed)");
     app.add_option("--device", options.device, "A Vulkan device by index or part of its name");
