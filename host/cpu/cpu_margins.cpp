@@ -20,11 +20,6 @@ double distanceToMultiple(double x, double size) {
     return std::abs(cells - std::nearbyint(cells)) * size;
 }
 
-// How far t lies outside [low, high]; 0 inside.
-double distanceOutside(double t, double low, double high) {
-    return std::max({0.0, low - t, t - high});
-}
-
 // Distance in n-space from the outward normal to the nearest latitude edge that can be crossed.
 double latitudeEdgeDistance(const glm::dvec3& n, double size) {
     const double latitude = glm::degrees(std::asin(std::clamp(n.y, -1.0, 1.0)));
@@ -122,18 +117,30 @@ SphereCrossingMargins sphereCrossingMargins(const Ray& ray, const Sphere& sphere
     const double closestT = -glm::dot(f, d);
     const double lengthL = glm::length(f + closestT * d);
     const double clearance = std::abs(r - lengthL);
+    // A root crosses an end of a shadow segment exactly when that end crosses the surface: the
+    // kernel rounds the light, the surface point and the sphere, which moves the surface against an
+    // end by about the scale, and a root by that over the cosine between the ray and the normal.
+    // So an end's distance from the sphere, which a grazing ray's root far exceeds (a light a hair
+    // inside a blocker, a shadow ray starting a hair outside one). A camera ray starts at the eye,
+    // whose side of each sphere every kernel takes from the host's power in double: there the
+    // root's own distance from t = 0.
+    const bool segment = std::isfinite(tMax);
+    const auto endDistance = [&](double t) { return std::abs(glm::length(f + t * d) - r); };
 
     if (lengthL > r) {
-        // The line misses. Float32 makes it touch the range only if it both reaches the sphere
-        // and touches it at a point of the range.
-        return {std::max(clearance, distanceOutside(closestT, 0.0, tMax)) / scale, kInfinity};
+        // The line misses. Float32 makes it touch the range only if it both reaches the sphere and
+        // touches it at a point of the range: outside the range, the nearer end must reach it too.
+        const bool closestInRange = closestT >= 0.0 && closestT <= tMax;
+        const double outside = closestInRange ? 0.0 : segment ? endDistance(closestT < 0.0 ? 0.0 : tMax) : -closestT;
+        return {std::max(clearance, outside) / scale, kInfinity};
     }
     const double halfChord = std::sqrt((r - lengthL) * (r + lengthL));
     double nearest = kInfinity;
-    for (const double root : {closestT - halfChord, closestT + halfChord}) {
-        nearest = std::min(nearest, std::abs(root));  // crossing the start of the range
-        if (std::isfinite(tMax)) {
-            nearest = std::min(nearest, std::abs(root - tMax));  // crossing its end
+    if (segment) {
+        nearest = std::min(endDistance(0.0), endDistance(tMax));
+    } else {
+        for (const double root : {closestT - halfChord, closestT + halfChord}) {
+            nearest = std::min(nearest, std::abs(root));  // crossing the start of the range
         }
     }
     const bool chordMeetsRange = closestT + halfChord > 0.0 && closestT - halfChord < tMax;

@@ -98,8 +98,12 @@ double hitPointScale(const Geometry& geometry, const Hit& hit, const Ray& camera
 // With f = o - c and l = f - (f.d)d, the quantities of the intersection, float32 can flip it by
 // - moving the line across the silhouette: |r - |l||, where that crossing matters, i.e. where
 //   the chord overlaps the range (cutting line) or the closest point -f.d lies within the range
-//   (missing line; outside it the gap to the range must close too, so the larger of the two);
-// - moving a root t across an end of the range: |t| and |t - tMax|.
+//   (missing line; outside it the sphere must reach the range too, so the larger of the two);
+// - moving a root t across an end of the range. For a shadow segment that is the end crossing
+//   the surface: the end's distance from the sphere, ||o - c| - r| and ||o + tMax d - c| - r|,
+//   far less than |t| or |t - tMax| where the ray grazes the sphere there (roundoff moves a root
+//   by the surface's move over the cosine between the ray and the normal). For a camera ray,
+//   whose eye's side of each sphere every kernel takes from the host's power in double, |t|.
 // Each distance is divided by `scale`: |o - eye| + sphereScale for a camera ray, plus the
 // light's and the hit point's scales for a shadow ray.
 double sphereCrossingMargin(const Ray& ray, const Sphere& sphere, double tMax, double scale);

@@ -176,9 +176,10 @@ TEST(SphereCrossingMargin, SegmentTangentToABlockerIsZero) {
 }
 
 TEST(SphereCrossingMargin, TangentBeyondTheLightDecidesNothing) {
-    // The same line grazes a sphere 10 beyond the segment's end at 20: the gap must close too.
+    // The same line grazes a sphere 10 beyond the segment's end at 20: the sphere must reach the
+    // end too, sqrt(101) - 1 away.
     const Sphere sphere{{1, 0, 30}, 1.0};
-    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), 10.0 / 40.0);
+    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), (std::sqrt(101.0) - 1.0) / 40.0);
 }
 
 TEST(SphereCrossingMargin, SegmentEndingOnASphereIsZero) {
@@ -207,6 +208,25 @@ TEST(SphereCrossingMargins, SeparateTheSilhouetteFromTheEnds) {
     EXPECT_DOUBLE_EQ(onSurface.line, 1.0 / 10.0);
     // A line that misses has no ends.
     EXPECT_EQ(sphereCrossingMargins(rayFrom(kOrigin, {0, 1, 0}), sphere, kInfinity, 11.0).ends, kInfinity);
+}
+
+TEST(SphereCrossingMargins, AnEndAHairFromTheSurfaceIsNearTiedHoweverFarTheRoot) {
+    // The line y = 10 - 1e-6 grazes the sphere of radius 10 at the origin: its roots lie 4.5e-3
+    // either side of x = 0, yet moving the sphere by 1e-6 flips whether a segment ending at x = 0
+    // (a light a hair inside, differential seed 2004990) or starting there (a shadow ray's origin,
+    // seed 2010831) meets it.
+    const Sphere sphere{{0, 0, 0}, 10.0};
+    const double height = 10.0 - 1e-6;
+    const SphereCrossingMargins toTheLight = sphereCrossingMargins(rayFrom({-20, height, 0}, {1, 0, 0}), sphere, 20.0, 1.0);
+    EXPECT_NEAR(toTheLight.ends, 1e-6, 1e-12);
+    const SphereCrossingMargins fromThePoint = sphereCrossingMargins(rayFrom({0, height, 0}, {1, 0, 0}), sphere, 20.0, 1.0);
+    EXPECT_NEAR(fromThePoint.ends, 1e-6, 1e-12);
+    // A line that misses by 1e-7 and would touch 4.2e-3 beyond a segment's end 1e-6 outside the
+    // sphere: the sphere reaches the range by reaching that end.
+    const double line = 10.0 + 1e-7;
+    const double beyond = std::sqrt((10.0 + 1e-6) * (10.0 + 1e-6) - line * line);
+    EXPECT_GT(beyond, 4e-3);
+    EXPECT_NEAR(sphereCrossingMargin(rayFrom({-20, line, 0}, {1, 0, 0}), sphere, 20.0 - beyond, 1.0), 1e-6, 1e-12);
 }
 
 TEST(OwnSphereShadowMargin, IsTheGapBetweenTheExitAndTheLight) {
