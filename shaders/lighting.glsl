@@ -16,27 +16,37 @@ struct LightPath {
     real shadowLength;  // the shadow ray's distance to the light; 0 when not facing
 };
 
-LightPath lightPath(Surface s, vec3r lightPosition) {
+// For a surface whose shadow rays start at the point itself (planes and spheres seen from outside,
+// in the robust formulation): one square root serves cos theta, the shadow ray's direction and its
+// length.
+LightPath lightPathFromPoint(Surface s, vec3r lightPosition) {
     LightPath path;
-    // Lambert's cosine and the falloff from the point itself, as the reference shades. Off a
-    // sphere seen from inside, the shadow origin lies ten or more units of roundoff of the
-    // sphere's coordinates away (shadowOriginOffSphere): nothing to a shadow test, but beside a
-    // light that close to the point a visible change of both (cos theta 2 % low at differential
-    // seed 2008707).
     vec3r toLight = lightPosition - s.position;
     path.r2 = dot(toLight, toLight);
+    real inverseDistance = inversesqrt(path.r2);
     // A light exactly at the point (r2 = 0) has no direction and contributes nothing.
-    real cosTheta = dot(s.normal, toLight) * inversesqrt(path.r2);
+    real cosTheta = dot(s.normal, toLight) * inverseDistance;
     path.facing = path.r2 > 0.0 && cosTheta > 0.0;
     path.cosTheta = path.r2 == 0.0 ? 0.0 : cosTheta;
-    // The shadow ray from the shadow origin. Where that is the point itself (planes, spheres seen
-    // from outside) these are the same values as above, which the compiler computes once.
+    path.shadowRay = Ray(s.position, toLight * inverseDistance);
+    // A surface facing away asks about an empty segment, whose answer is unused (straight-line
+    // code: lavapipe runs a skipped branch anyway).
+    path.shadowLength = path.facing ? path.r2 * inverseDistance : 0.0;
+    return path;
+}
+
+// Any surface: Lambert's cosine and the falloff from the point itself, as the reference shades, the
+// shadow ray from the shadow origin. Off a sphere seen from inside that lies ten or more units of
+// roundoff of the sphere's coordinates away (shadowOriginOffSphere): nothing to a shadow test, but
+// beside a light that close to the point a visible change of both (cos theta 2 % low at
+// differential seed 2008707).
+LightPath lightPath(Surface s, vec3r lightPosition) {
+    LightPath path = lightPathFromPoint(s, lightPosition);
     vec3r fromOrigin = lightPosition - s.shadowOrigin;
     real originR2 = dot(fromOrigin, fromOrigin);
     real inverseDistance = inversesqrt(originR2);
     path.shadowRay = Ray(s.shadowOrigin, fromOrigin * inverseDistance);
-    // A surface facing away, or a light on the shadow origin itself, asks about an empty segment,
-    // whose answer is unused or nothing (straight-line code: lavapipe runs a skipped branch anyway).
+    // A light on the shadow origin itself asks about an empty segment too.
     path.shadowLength = path.facing && originR2 > 0.0 ? originR2 * inverseDistance : 0.0;
     return path;
 }

@@ -1,5 +1,6 @@
 #include "gpu/kernel_generator.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -282,11 +283,19 @@ private:
         return call("sphereCrossesSegment", f, radius, power, towardSurface, length);
     }
 
+    // Whether every surface's shadow rays start at its point: not off a sphere the camera is in,
+    // nor in the textbook formulation, which pushes them off by a fixed epsilon.
+    bool shadowsFromThePoint() const {
+        return !textbook() && std::none_of(code_.nodes.begin(), code_.nodes.end(), [](const NodeCode& n) {
+                   return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside;
+               });
+    }
+
     void lightBlock(std::uint32_t light) {
         const std::string index = std::to_string(light);
         out_ << "    {\n"
-                "        LightPath path = lightPath(s, "
-             << lightValue(light, "POSITION")
+                "        LightPath path = "
+             << (shadowsFromThePoint() ? "lightPathFromPoint(s, " : "lightPath(s, ") << lightValue(light, "POSITION")
              << ");\n"
                 "        bool shadowed = false;\n";
         for (const ShadowTest& test : code_.shadowTests[light]) {
