@@ -198,6 +198,10 @@ double sphereCheckerMargin(const glm::dvec3& outwardNormal, double size, double 
     return edgeDistance / normalRoundoff;
 }
 
+double lightTermMargin(double normalRoundoff, double directionRoundoff, double unitRoundoff) {
+    return kLightTermTolerance / ((3.0 * directionRoundoff + normalRoundoff) * kLightTermUnits * unitRoundoff);
+}
+
 double facingMargin(double cosTheta, double normalRoundoff, double directionRoundoff) {
     return std::abs(cosTheta) / (normalRoundoff + directionRoundoff);
 }

@@ -172,4 +172,15 @@ double sphereCheckerMargin(const glm::dvec3& outwardNormal, double size, double 
 // of the direction to the light ((hitPointScale + |L - eye|) / |L - p|).
 double facingMargin(double cosTheta, double normalRoundoff, double directionRoundoff);
 
+// Not a decision but the colour a lit light gives: its term I cos / r^2 carries roundoff of r^2 and
+// of the direction to the light (directionRoundoff each, r^2 twice) and of cos (the normal's too),
+// relative to I / r^2, a few units each (kLightTermUnits) of `unitRoundoff`. Where that exceeds
+// kLightTermTolerance (an 8-bit level of a full-bright linear channel, the finest a level is
+// relative to its value), two correct renderers may differ by a level on this light alone: a light
+// close to a point whose position the arithmetic rounds on a far larger scale (a huge sphere's
+// surface beside a light a hair above it). The margin in units of that tolerance.
+inline constexpr double kLightTermTolerance = 0x1p-8;
+inline constexpr double kLightTermUnits = 4.0;
+double lightTermMargin(double normalRoundoff, double directionRoundoff, double unitRoundoff);
+
 }  // namespace hexray

@@ -43,6 +43,7 @@ struct TracedPixel {
 // The parts of a pixel's class that camera-ray decisions leave undecided.
 constexpr PixelAmbiguity kNodePart{true, 0, false};
 constexpr PixelAmbiguity kCheckerPart{false, PixelClass::kOddCheckerBit, false};
+constexpr PixelAmbiguity kColourPart{false, 0, true};
 
 // ---------------------------------------------------------------- margins through the BVH
 //
@@ -293,6 +294,7 @@ void addShadingMargins(const RenderContext& context, const DecisionBounds& bound
             margins.add(facingMargin(cosTheta, normalRoundoff, directionRoundoff));
             if (cosTheta > 0.0) {
                 addShadowMargins(context, nearest.nodeIndex, hit, hitScale, eye, light, margins);
+                decisions.add(lightTermMargin(normalRoundoff, directionRoundoff, context.roundoff.general), kColourPart);
             }
         }
         decisions.add(margins.smallest / bounds.general, lightPart(index));

@@ -628,3 +628,13 @@ TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
         }
     }
 }
+
+// A light's term is computed to a tolerance unless the point's rounding is large beside the light's
+// distance: then the colour may honestly differ (seed 6000528: a huge sphere's wall a hair below a light).
+TEST(LightTermMargin, OnlyALightCloseBesideAWidelyRoundedPointLeavesTheColourOpen) {
+    EXPECT_GT(lightTermMargin(0.0, 2.0, 0x1p-24), 1.0);      // the demo: a light at its own distance
+    EXPECT_GT(lightTermMargin(1000.0, 1.0, 0x1p-24), 1.0);   // a sphere 1000 radii away: its normal roughly
+    EXPECT_LT(lightTermMargin(0.0, 2.4e5, 0x1p-24), 1.0);    // a wall rounded on a 2.4e5 scale, 1 from the light
+    EXPECT_GT(lightTermMargin(0.0, 2.4e5, 0x1p-53), 1.0);    // the same in double
+    EXPECT_DOUBLE_EQ(lightTermMargin(1.0, 1.0, 0x1p-10), 0.25);
+}

@@ -42,7 +42,7 @@ const std::map<std::string, Allowance> kKnifeEdges = {
     {"hard_scene_offset_1e7", {7, 7}},               // rows exactly on checker edges
     {"hard_underflow_tiny_scale", {7, 7}},           // rows exactly on checker edges
     {"hard_terminator_grazing_light", {66, 5}},      // the light grazes every lit point
-    {"hard_tiny_sphere_far_1e5", {69, 5}},           // beyond float32 (auto takes f64)
+    {"hard_tiny_sphere_far_1e5", {95, 5}},           // beyond float32 (auto takes f64): its normals too
     {"hard_tiny_sphere_far_1e7", {100, 5}},          // beyond float32 (auto takes f64)
 };
 
