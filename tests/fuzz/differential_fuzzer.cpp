@@ -151,6 +151,7 @@ int run(const FuzzOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a finding shows as it is made, also in a log file
     CLI::App app("Differential fuzzing: generated scenes through the GPU and the CPU reference");
     FuzzOptions options;
     app.add_option("--seconds", options.seconds, "How long to fuzz")->capture_default_str();
