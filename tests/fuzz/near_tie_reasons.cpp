@@ -49,6 +49,11 @@ bool onPlane(const glm::dvec3& point, const Plane& plane, double reach) {
     return coincide(point.y, plane.height, std::abs(point.y) + std::abs(plane.height) + reach);
 }
 
+// How far x lies from the nearest multiple of `size`, in x's units.
+double offMultiple(double x, double size) {
+    return std::abs(x - size * std::nearbyint(x / size));
+}
+
 std::string name(const char* what, std::size_t index) { return std::string(what) + " " + std::to_string(index); }
 
 class Reasons {
@@ -60,6 +65,7 @@ public:
         touchingSurfaces();
         coincidentPlanes();
         finerThanResolution();
+        edgesThroughTheEye();
         return reasons_;
     }
 
@@ -150,6 +156,47 @@ private:
         const double pixelDegrees =
             scene_.camera.fovDegrees / std::hypot(double(scene_.image.width), double(scene_.image.height));
         return cellDegrees < kSphereCellBounds * bound || pixelDegrees < kSpherePixelBounds * bound;
+    }
+
+    // A boundary surface through the eye is seen edge-on, along a whole line of pixels: a level
+    // camera's horizon (on the image's middle line, where a row of samples may lie) over a plane; a
+    // plane's cell edge below the eye; a sphere's meridian or latitude cone through the eye.
+    void edgesThroughTheEye() {
+        const CameraSettings& camera = scene_.camera;
+        const bool level = camera.pitchDegrees == 0.0 && std::fmod(camera.rollDegrees, 180.0) == 0.0;
+        for (std::size_t n = 0; n < scene_.nodes.size(); ++n) {
+            const Geometry& geometry = scene_.nodes[n].geometry;
+            if (level && std::holds_alternative<Plane>(geometry)) {
+                add("the camera looks level at node " + std::to_string(n));
+            }
+            const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[scene_.nodes[n].shaderIndex]);
+            const bool edgeThroughEye = checker && (std::holds_alternative<Plane>(geometry)
+                                                        ? planeEdgeBelowEye(std::get<Plane>(geometry), checker->size)
+                                                        : sphereEdgeThroughEye(std::get<Sphere>(geometry), checker->size));
+            if (edgeThroughEye) {
+                add("a checker edge of node " + std::to_string(n) + " passes through the eye");
+            }
+        }
+    }
+
+    bool planeEdgeBelowEye(const Plane& plane, double size) const {
+        const glm::dvec3& eye = scene_.camera.position;
+        const double scale = std::abs(plane.height - eye.y) + size;
+        return offMultiple(eye.x, size) <= kCoincidence * (std::abs(eye.x) + scale) ||
+               offMultiple(eye.z, size) <= kCoincidence * (std::abs(eye.z) + scale);
+    }
+
+    // Angles in the sphere's frame, as the renderers' (longitude, latitude) of a normal.
+    bool sphereEdgeThroughEye(const Sphere& sphere, double size) const {
+        const glm::dvec3 v = scene_.camera.position - sphere.center;
+        const double length = glm::length(v);
+        const double axisDistance = std::hypot(v.x, v.z) / length;  // 0 on the polar axis
+        const double cells = std::min(size, 360.0);
+        const double longitude = glm::degrees(std::atan2(v.x, v.z));
+        const double offMeridian = std::min(offMultiple(longitude, cells), 180.0 - std::abs(longitude));
+        const double latitude = glm::degrees(std::asin(std::clamp(v.y / length, -1.0, 1.0)));
+        return glm::radians(offMeridian) * axisDistance <= kCoincidence ||
+               glm::radians(offMultiple(latitude, cells)) <= kCoincidence;
     }
 
     void planeCellsOutOfScale(std::size_t n) {

@@ -14,7 +14,10 @@ namespace {
 // A floor under a ball, lit from above, the camera off to one side: nothing on a boundary.
 Scene clearScene() {
     Scene scene;
+    scene.image.width = 32;  // the differential check's size
+    scene.image.height = 24;
     scene.camera.position = {0.3, 2.1, -5.2};
+    scene.camera.pitchDegrees = -15.0;
     scene.shaderNames = {"matte", "tiles"};
     scene.shaders = {LambertShader{}, CheckerShader{Color(1.0), Color(0.0), 0.7}};
     scene.nodes = {Node{Plane{-1.0}, 1}, Node{Sphere{{0.1, 0.2, 0.3}, 0.9}, 0}};
@@ -51,10 +54,29 @@ TEST(NearTieReasons, FindEachKind) {
                   s.nodes[1].shaderIndex = 2;
               }),
               "node 1's checker cells are finer than float atan resolves; ");
+    // Cells that far out of scale also put an edge (as good as) below the eye.
     EXPECT_EQ(reasonsWith([](Scene& s) { std::get<CheckerShader>(s.shaders[1]).size = 1e-12; }),
-              "node 0's checker cells are out of scale with the points seen on it; ");
+              "node 0's checker cells are out of scale with the points seen on it; "
+              "a checker edge of node 0 passes through the eye; ");
     EXPECT_EQ(reasonsWith([](Scene& s) { std::get<CheckerShader>(s.shaders[1]).size = 1e15; }),
-              "node 0's checker cells are out of scale with the points seen on it; ");
+              "node 0's checker cells are out of scale with the points seen on it; "
+              "a checker edge of node 0 passes through the eye; ");
+}
+
+// Boundaries seen edge-on from the eye: a level camera's horizon, a plane's cell edge below the
+// eye, a sphere's meridian or equator through it.
+TEST(NearTieReasons, EdgesThroughTheEye) {
+    Scene level = clearScene();
+    level.camera.pitchDegrees = 0.0;
+    EXPECT_EQ(reasonsOf(level), "the camera looks level at node 0; ");
+    Scene aboveAnEdge = clearScene();
+    aboveAnEdge.camera.position.x = 1.4;  // two cells of 0.7
+    EXPECT_EQ(reasonsOf(aboveAnEdge), "a checker edge of node 0 passes through the eye; ");
+    Scene onTheEquator = clearScene();
+    onTheEquator.shaderNames.push_back("halves");
+    onTheEquator.shaders.push_back(CheckerShader{Color(1.0), Color(0.0), 180.0});
+    onTheEquator.nodes[1] = Node{Sphere{{0.3, 2.1, 5.0}, 0.9}, 2};  // the eye on its equator and the +-180 meridian
+    EXPECT_EQ(reasonsOf(onTheEquator), "a checker edge of node 1 passes through the eye; ");
 }
 
 // A light far from the plane's rounding but close to it against the scene's extent is on it.
