@@ -42,7 +42,7 @@ if [ "${1:-}" = --differential ]; then
         if ($i == "in" && $(i + 2) == "s:" && $(i + 1) > t) t = $(i + 1)
         if ($(i + 1) == "failed;") f += $i
       } }
-    END { printf "in all: %d scenes from seed %d (every seed to %d) in %.0f s: %.1f scenes per second; %d failed\n",
+    END { printf "in all: %d scenes from seed %.0f (every seed to %.0f) in %.0f s: %.1f scenes per second; %d failed\n",
           n, first, first + least * jobs - 1, t, n / t, f }' "$logs"/*
   exit "$status"
 fi
