@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -37,6 +38,17 @@ constexpr double kFastMaxShadowOutside = 32.0;
 constexpr std::size_t kMaxTileClasses = 12;
 constexpr std::uint64_t kCullingMinSamples = std::uint64_t{32} << 20;
 
+// The first sphere that hides `light` from every visible point (sphereHidesLight), if any.
+std::optional<std::uint32_t> sphereHidingLight(const Scene& scene, const PointLight& light) {
+    for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
+        const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry);
+        if (sphere && sphereHidesLight(*sphere, scene.camera.position, light.position)) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
 // How a ray from `origin`, the same for every pixel (the eye, or a light), meets the sphere.
 SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formulation formulation, double maxOutside) {
     if (formulation == Formulation::Textbook) {
@@ -56,11 +68,8 @@ SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formula
 std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& light, Formulation formulation) {
     std::vector<ShadowTest> tests;
     if (formulation == Formulation::Robust) {
-        for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
-            const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry);
-            if (sphere && sphereHidesLight(*sphere, scene.camera.position, light.position)) {
-                return {ShadowTest{.node = i, .hidesLight = true}};
-            }
+        if (const auto hiding = sphereHidingLight(scene, light)) {
+            return {ShadowTest{.node = *hiding, .hidesLight = true}};
         }
     }
     const double eyeY = scene.camera.position.y;
@@ -189,10 +198,7 @@ bool sphereHidesLight(const Sphere& sphere, const glm::dvec3& eye, const glm::dv
 }
 
 bool isLightHiddenFromView(const Scene& scene, const PointLight& light) {
-    return std::any_of(scene.nodes.begin(), scene.nodes.end(), [&](const Node& node) {
-        const auto* sphere = std::get_if<Sphere>(&node.geometry);
-        return sphere && sphereHidesLight(*sphere, scene.camera.position, light.position);
-    });
+    return sphereHidingLight(scene, light).has_value();
 }
 
 bool isSmallScene(const Scene& scene) {
