@@ -1,10 +1,6 @@
 // The real hexray executable, driven as a user would: exit codes, messages, and which files
 // exist afterwards.
 
-#include <sys/wait.h>
-
-#include <csignal>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -307,20 +303,6 @@ TEST_F(CliTest, AnUnreadablePathIsBadInputNotACrash) {
     const RunResult run = hexray("compare " + std::string(300, 'a') + "/x.json");
     EXPECT_EQ(run.exitCode, 2) << run.err;
     EXPECT_NE(run.err.find("hexray: error: "), std::string::npos) << run.err;
-}
-
-TEST_F(CliTest, AnInterruptedRenderLeavesTheOldImageAndNoTemporaryFile) {
-    std::ofstream(dir_ / "big.png") << "keep me";
-    // A render of several seconds, terminated after one: the partial file must go. (SIGTERM, as
-    // a background job started by sh ignores SIGINT.)
-    const std::string command = "cd '" + dir_.string() + "' && ('" HEXRAY_EXECUTABLE "' render " +
-                                scene("lecture-demo.json") +
-                                " -o big.png --width 8192 --height 8192 --spp 2 >/dev/null 2>&1 & pid=$!; sleep 1; "
-                                "kill -TERM $pid; wait $pid)";
-    const int status = std::system(command.c_str());
-    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 128 + SIGTERM);  // killed by the signal
-    EXPECT_EQ(readFile(dir_ / "big.png"), "keep me");
-    EXPECT_EQ(createdFiles(), std::vector<std::string>{"big.png"});
 }
 
 TEST_F(CliTest, DevicesListsLavapipe) {
