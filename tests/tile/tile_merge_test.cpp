@@ -2,6 +2,8 @@
 // stamps and headers say, before anything is allocated from those sizes.
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -9,8 +11,11 @@
 
 #include "image/image_io.h"
 #include "image/image_row_writer.h"
+#include "fuzz/piece_judgement.h"
+#include "image/image_format.h"
 #include "support/address_space_limit.h"
 #include "support/temporary_directory_test.h"
+#include "support/test_paths.h"
 #include "tile/tile_merge.h"
 #include "tile/tile_stamp.h"
 
@@ -86,6 +91,33 @@ TEST_F(TileMergeTest, APieceReplacedAfterTheCheckDoesNotChangeTheImage) {
     std::vector<std::uint8_t> expected(5 * 2 * 3, 10);
     expected.resize(5 * 4 * 3, 20);
     EXPECT_EQ(readPng(dir_ / "merged.png").bytes, expected);
+}
+
+// The piece fuzzer's seeds (tests/fuzz/pieces/) are pieces merge verifies; with any single bit of
+// them flipped, merge refuses the piece or reads exactly the same pixels.
+TEST_F(TileMergeTest, EverySingleBitFlipOfAPieceIsRefusedOrChangesNoPixel) {
+    for (const auto& entry : fs::directory_iterator(test::sourcePath("tests/fuzz/pieces"))) {
+        const std::string seed = entry.path().string();
+        const ImageFormat format = *imageFormatFor(seed);
+        const test::PieceVerdict original = test::judgePiece(ReadOnlyFile(seed), format);
+        ASSERT_TRUE(original.verified) << seed << ": " << original.refusal;
+        std::ifstream in(seed, std::ios::binary);
+        std::string bytes(std::istreambuf_iterator<char>(in), {});
+        const std::string flipped = (dir_ / entry.path().filename()).string();
+        int refused = 0;
+        for (std::size_t bit = 0; bit < bytes.size() * 8; ++bit) {
+            bytes[bit / 8] = char(bytes[bit / 8] ^ (1 << bit % 8));
+            std::ofstream(flipped, std::ios::binary | std::ios::trunc) << bytes;
+            bytes[bit / 8] = char(bytes[bit / 8] ^ (1 << bit % 8));
+            const test::PieceVerdict verdict = test::judgePiece(ReadOnlyFile(flipped), format);
+            ASSERT_FALSE(verdict.violation) << seed << " bit " << bit << ": " << *verdict.violation;
+            if (verdict.verified) {
+                ASSERT_EQ(verdict.pixels, original.pixels) << seed << ": bit " << bit << " changed the pixels";
+            }
+            refused += !verdict.verified;
+        }
+        EXPECT_GT(refused, 0) << seed;
+    }
 }
 
 }  // namespace
