@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the scene-loader fuzzer (clang-14, libFuzzer, ASan, UBSan) in build-fuzz/ and fuzzes
-# for a fixed time (default 60 s; bash ci/fuzz.sh SECONDS), starting from the shipped scenes
-# and tests/fuzz/regressions/. Fails on any crash, hang, leak, sanitizer report or broken
-# scene invariant; the input that caused it is written to build-fuzz/artifacts/.
+# Builds the fuzzers (clang-14, libFuzzer, ASan, UBSan) in build-fuzz/ and fuzzes for a fixed time
+# (default 60 s; bash ci/fuzz.sh SECONDS), shared equally between them: the scene loader, from the
+# shipped scenes and tests/fuzz/regressions/, and merge's piece reader, from the PNG and OpenEXR
+# pieces in tests/fuzz/pieces/. Fails on any crash, hang, leak, sanitizer report or broken
+# invariant; the input that caused it is written to build-fuzz/artifacts/.
 #
 # bash ci/fuzz.sh --differential SECONDS: instead, the differential fuzzer (generated valid scenes
 # through the GPU in every precision and the CPU reference, judged as `hexray compare` judges) on
@@ -47,17 +48,26 @@ if [ "${1:-}" = --differential ]; then
   exit "$status"
 fi
 seconds=${1:-60}
+fuzzers=2
+share=$(((seconds + fuzzers - 1) / fuzzers))
 
 cmake -S . -B build-fuzz -DHEXRAY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build build-fuzz --parallel "$(nproc)"
 
 # New inputs go to a scratch corpus; the seed folders are only read. Inputs are capped at
 # 4 KiB, above every shipped scene, so mutations stay cheap (the 20 KB deep-nesting seed is cut).
-rm -rf build-fuzz/corpus build-fuzz/artifacts
-mkdir -p build-fuzz/corpus build-fuzz/artifacts
+rm -rf build-fuzz/corpus build-fuzz/corpus-pieces build-fuzz/artifacts
+mkdir -p build-fuzz/corpus build-fuzz/corpus-pieces build-fuzz/artifacts
 # sed drops progress lines and libFuzzer's dictionary suggestions (stats and any report stay);
 # pipefail keeps the fuzzer's exit status.
-build-fuzz/tests/fuzz/scene_loader_fuzzer build-fuzz/corpus scenes tests/fuzz/regressions \
-  -dict=tests/fuzz/scene.dict -max_len=4096 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 |
+quiet() {
   sed -e '/^#[0-9]/d' -e '/^INFO: /d' -e '/^	NEW_FUNC/d' -e '/^###### Recommended/,/^###### End of recommended/d'
+}
+build-fuzz/tests/fuzz/scene_loader_fuzzer build-fuzz/corpus scenes tests/fuzz/regressions \
+  -dict=tests/fuzz/scene.dict -max_len=4096 -max_total_time="$share" -timeout=10 -rss_limit_mb=2048 \
+  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet
+# No single allocation above 64 MiB: a valid piece needs at most a band of 64 rows of 16384 pixels
+# (12 MiB), so a larger one was sized from a field nothing checked.
+build-fuzz/tests/fuzz/tile_piece_fuzzer build-fuzz/corpus-pieces tests/fuzz/pieces \
+  -max_len=16384 -max_total_time="$share" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=64 \
+  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet

@@ -10,9 +10,10 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   glslang-dev spirv-tools  # glslang as a library: generated kernels are compiled at run time
   libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  libssl-dev  # OpenSSL's libcrypto: SHA-256 digests of the tiles' pixels
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
-  clang-14 libclang-rt-14-dev  # the scene-loader fuzzer: clang with libFuzzer and its sanitizers
+  clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
 )
 case "${1:-}" in
   --bench) packages+=(libembree-dev python3-matplotlib) ;;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_version.h"
 #include "cli/command_support.h"
 #include "cli/gpu_session.h"
 #include "cli/progress.h"
@@ -40,15 +41,20 @@ struct SceneRender {
         rows = options.tile ? tileRows(*options.tile, scene.image.height) : RowRange{0, scene.image.height};
     }
 
-    // Opens the output; a tile's records `renderer`, since pieces of one image must share it.
+    // Opens the output; a tile's records `renderer`, since pieces of one image must share it, and
+    // the digest of its stamp and pixels, so that merge can prove it reads what was rendered.
     void open(std::optional<ImageRowWriter>& writer, const std::string& renderer) const {
         std::vector<ImageNote> notes;
+        std::optional<DigestNote> digest;
         if (options.tile) {
             const TileStamp stamp{*options.tile, scene.image.width, scene.image.height, scene.image.samplesPerPixel,
-                                  renderer, sceneIdentity};
-            notes.push_back({kTileStampKey, formatTileStamp(stamp)});
+                                  renderer, sceneIdentity, buildVersion()};
+            const std::string text = formatTileStamp(stamp);
+            notes.push_back({kTileStampKey, text});
+            digest = DigestNote{kTileDigestKey, text};
         }
-        writer.emplace(target.outputPath, *target.format, scene.image.width, rows.count, scene.image.encoding, notes);
+        writer.emplace(target.outputPath, *target.format, scene.image.width, rows.count, scene.image.encoding, notes,
+                       digest);
     }
 
     // With --aov, starts the AOV set.

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/build_version.h"
 #include "cli/command_support.h"
 
 namespace hexray::cli {
@@ -30,7 +31,7 @@ std::string deviceLine() {
 }  // namespace
 
 int runVersion() {
-    std::printf("hexray %s (git %s)\n", HEXRAY_VERSION, HEXRAY_GIT_REVISION);
+    std::printf("hexray %s\n", buildVersion().c_str());
     std::string loader;
     try {
         loader = versionText(vk::raii::Context().enumerateInstanceVersion());

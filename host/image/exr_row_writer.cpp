@@ -1,5 +1,6 @@
 #include "image/exr_row_writer.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -18,12 +19,16 @@
 namespace hexray {
 namespace {
 
-// OpenEXR's output stream over the OutputFile's stdio stream.
+// OpenEXR's output stream over the OutputFile's stdio stream. It keeps a copy of what is written
+// while capturing (the header), so that a note's text can be found there again.
 class StdioStream : public Imf::OStream {
 public:
     explicit StdioStream(const OutputFile& file) : Imf::OStream(file.name().c_str()), file_(file) {}
 
     void write(const char bytes[], int count) override {
+        if (capturing && tellp() == captured.size()) {
+            captured.append(bytes, std::size_t(count));
+        }
         if (std::fwrite(bytes, 1, std::size_t(count), file_.stream()) != std::size_t(count)) {
             file_.fail("cannot write", std::strerror(errno));
         }
@@ -35,9 +40,26 @@ public:
         }
     }
 
+    bool capturing = false;
+    std::string captured;  // the file's first bytes
+
 private:
     const OutputFile& file_;
 };
+
+// Where OpenEXR wrote `note`'s text: a string attribute is its name, NUL, "string", NUL, its
+// length (4 bytes, little-endian), then its text. npos unless exactly once in `header`.
+std::size_t textOffset(const std::string& header, const ImageNote& note) {
+    std::string attribute = note.key + std::string(1, '\0') + "string" + std::string(1, '\0');
+    for (int shift = 0; shift < 32; shift += 8) {
+        attribute += char((note.text.size() >> shift) & 0xff);
+    }
+    const std::size_t at = header.find(attribute + note.text);
+    if (at == std::string::npos || header.find(attribute + note.text, at + 1) != std::string::npos) {
+        return std::string::npos;
+    }
+    return at + attribute.size();
+}
 
 Imf::Header headerFor(std::uint32_t width, std::uint32_t height, const std::vector<std::string>& channelNames,
                       const std::vector<ImageNote>& notes) {
@@ -60,12 +82,29 @@ struct ExrRowWriter::Encoder {
     StdioStream stream;
     std::unique_ptr<Imf::OutputFile> exr;
     std::vector<std::string> channelNames;
+    std::vector<ImageNote> notes;
     std::uint32_t width;
     std::uint32_t height;
     std::uint32_t rowsWritten = 0;
 
-    Encoder(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, const std::vector<std::string>& names)
-        : file(path.string()), stream(file), channelNames(names), width(w), height(h) {}
+    Encoder(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, const std::vector<std::string>& names,
+            const std::vector<ImageNote>& imageNotes)
+        : file(path.string()), stream(file), channelNames(names), notes(imageNotes), width(w), height(h) {}
+
+    // Overwrites the text of the note `replacement.key` in the header written.
+    void replaceText(const ImageNote& replacement) {
+        const auto note = std::find_if(notes.begin(), notes.end(),
+                                       [&](const ImageNote& n) { return n.key == replacement.key; });
+        if (note == notes.end() || note->text.size() != replacement.text.size()) {
+            throw std::invalid_argument("ExrRowWriter::finish: no note " + replacement.key + " of that length");
+        }
+        const std::size_t offset = textOffset(stream.captured, *note);
+        if (offset == std::string::npos) {
+            file.fail("cannot write", "the note " + note->key + " is not where OpenEXR was to write it");
+        }
+        stream.seekp(offset);
+        stream.write(replacement.text.data(), int(replacement.text.size()));
+    }
 
     // Runs an OpenEXR call, turning its exceptions (Iex) into OutputError naming the file.
     template <class Call>
@@ -84,11 +123,13 @@ struct ExrRowWriter::Encoder {
 
 ExrRowWriter::ExrRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                            const std::vector<std::string>& channelNames, const std::vector<ImageNote>& notes)
-    : encoder_(std::make_unique<Encoder>(path, width, height, channelNames)) {
+    : encoder_(std::make_unique<Encoder>(path, width, height, channelNames, notes)) {
     Encoder& e = *encoder_;
+    e.stream.capturing = true;  // OpenEXR writes the header as the file is created
     e.guard([&] {
         e.exr = std::make_unique<Imf::OutputFile>(e.stream, headerFor(width, height, channelNames, notes));
     });
+    e.stream.capturing = false;
 }
 
 ExrRowWriter::~ExrRowWriter() = default;
@@ -113,12 +154,15 @@ void ExrRowWriter::writeRows(std::uint32_t rows, const std::vector<std::span<con
     e.rowsWritten += rows;
 }
 
-void ExrRowWriter::finish() {
+void ExrRowWriter::finish(const std::vector<ImageNote>& replacements) {
     Encoder& e = *encoder_;
     if (e.rowsWritten != e.height) {
         e.file.fail("cannot write", std::to_string(e.height - e.rowsWritten) + " rows were never rendered");
     }
     e.exr.reset();  // writes the offset table; a failed write there leaves the stream's error flag set
+    for (const ImageNote& replacement : replacements) {
+        e.replaceText(replacement);
+    }
     e.file.commit();
 }
 

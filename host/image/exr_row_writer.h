@@ -2,7 +2,9 @@
 // Writes a float OpenEXR file (32-bit channels, ZIP-compressed scanlines, through OpenEXR) a band
 // of rows at a time, so an image need never be whole in memory. The file is an OutputFile
 // (io/output_file.h): it appears at its path only when finish() succeeds. It must be a regular
-// file: the format's offset table is written last, by seeking back.
+// file: the format's offset table is written last, by seeking back. The header, and so every
+// note, comes before the pixels; a text known only at the end (a digest of the pixels) is given
+// a placeholder of its length, replaced by finish() in place.
 
 #include <cstdint>
 #include <filesystem>
@@ -27,8 +29,9 @@ public:
     // The next `rows` rows: one span of rows × width values per channel, in the order the
     // channels were named. Throws OutputError on a write failure.
     void writeRows(std::uint32_t rows, const std::vector<std::span<const float>>& channels);
-    // Throws OutputError unless every row was written and the file is in place.
-    void finish();
+    // Throws OutputError unless every row was written and the file is in place. `replacements`:
+    // new texts for notes given to the constructor, each of the same length as the old.
+    void finish(const std::vector<ImageNote>& replacements = {});
 
 private:
     struct Encoder;

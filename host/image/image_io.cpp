@@ -97,7 +97,8 @@ PngRowWriter::PngRowWriter(const std::filesystem::path& path, std::uint32_t widt
     if (!chunks.empty()) {
         e.check(spng_set_text(e.context.get(), chunks.data(), std::uint32_t(chunks.size())));
     }
-    e.check(spng_encode_image(e.context.get(), nullptr, 0, SPNG_FMT_PNG, SPNG_ENCODE_PROGRESSIVE | SPNG_ENCODE_FINALIZE));
+    // Not SPNG_ENCODE_FINALIZE: finish() writes the chunks after the pixels, and IEND.
+    e.check(spng_encode_image(e.context.get(), nullptr, 0, SPNG_FMT_PNG, SPNG_ENCODE_PROGRESSIVE));
 }
 
 PngRowWriter::~PngRowWriter() = default;
@@ -111,12 +112,29 @@ void PngRowWriter::writeRows(std::span<const std::uint8_t> rows) {
     }
 }
 
-void PngRowWriter::finish() {
+void PngRowWriter::finish(const std::vector<ImageNote>& closingNotes) {
     Encoder& e = *encoder_;
     if (e.rowsLeft != 0) {
         e.file.fail("cannot write", std::to_string(e.rowsLeft) + " rows were never rendered");
     }
-    e.context.reset();  // the last row finished the PNG; release before closing the file
+    // libspng writes text chunks only before the pixels; after them it writes "unknown" chunks,
+    // so a tEXt chunk's data (keyword, NUL, Latin-1 text) is laid out here.
+    std::vector<std::string> data;
+    for (const ImageNote& note : closingNotes) {
+        data.push_back(note.key + std::string(1, '\0') + note.text);
+    }
+    std::vector<spng_unknown_chunk> chunks(data.size());
+    for (std::size_t i = 0; i < chunks.size(); ++i) {
+        std::memcpy(chunks[i].type, "tEXt", 4);
+        chunks[i].length = data[i].size();
+        chunks[i].data = data[i].data();
+        chunks[i].location = SPNG_AFTER_IDAT;
+    }
+    if (!chunks.empty()) {
+        e.check(spng_set_unknown_chunks(e.context.get(), chunks.data(), std::uint32_t(chunks.size())));
+    }
+    e.check(spng_encode_chunks(e.context.get()));  // the closing notes and IEND
+    e.context.reset();  // release before closing the file
     e.file.commit();
 }
 

@@ -41,7 +41,8 @@ struct ImageNote {
 // io/output_file.h): a regular file appears at `path` only when finish() succeeds; a writer
 // destroyed without finish(), or a catchable signal meanwhile, leaves no partial or clobbered
 // image. "-" is standard output. Throws OutputError when the file cannot be written, and
-// std::bad_alloc when the encoder runs out of memory. `notes` go before the pixels.
+// std::bad_alloc when the encoder runs out of memory. `notes` go before the pixels, the closing
+// notes given to finish() after them.
 class PngRowWriter {
 public:
     PngRowWriter(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
@@ -51,7 +52,8 @@ public:
     PngRowWriter& operator=(const PngRowWriter&) = delete;
 
     void writeRows(std::span<const std::uint8_t> rgbRows);  // whole rows, 3 bytes per pixel
-    void finish();
+    // `closingNotes`: text chunks after the pixels, for what is known only once they are written.
+    void finish(const std::vector<ImageNote>& closingNotes = {});
 
 private:
     struct Encoder;

@@ -4,11 +4,27 @@
 
 namespace hexray {
 
+namespace {
+
+// What an OpenEXR header holds for the digest until finish(): not hex, so never taken for one.
+const std::string kDigestPlaceholder(kPixelDigestHexLength, '-');
+
+}  // namespace
+
 ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, ImageFormat format, std::uint32_t width,
-                               std::uint32_t height, Encoding encoding, const std::vector<ImageNote>& notes)
+                               std::uint32_t height, Encoding encoding, const std::vector<ImageNote>& notes,
+                               const std::optional<DigestNote>& digest)
     : encoding_(encoding) {
+    if (digest) {
+        digestKey_ = digest->key;
+        digest_.emplace(digest->preamble);
+    }
     if (format == ImageFormat::Exr) {
-        exr_.emplace(path, width, height, std::vector<std::string>{"R", "G", "B"}, notes);
+        std::vector<ImageNote> headerNotes = notes;
+        if (digest) {
+            headerNotes.push_back({digest->key, kDigestPlaceholder});
+        }
+        exr_.emplace(path, width, height, std::vector<std::string>{"R", "G", "B"}, headerNotes);
     } else {
         png_.emplace(path, width, height, notes);
     }
@@ -19,11 +35,14 @@ void ImageRowWriter::writeEncoded(std::span<const std::uint8_t> rgbRows) {
         throw std::logic_error("ImageRowWriter::writeEncoded: an OpenEXR file takes linear rows");
     }
     png_->writeRows(rgbRows);
+    if (digest_) {
+        digest_->addRgb8Rows(rgbRows);
+    }
 }
 
 void ImageRowWriter::writeLinear(const Image& rows) {
     if (png_) {
-        png_->writeRows(encodeImage(rows, encoding_).bytes);
+        writeEncoded(encodeImage(rows, encoding_).bytes);
         return;
     }
     red_.resize(rows.pixels.size());
@@ -35,13 +54,20 @@ void ImageRowWriter::writeLinear(const Image& rows) {
         blue_[i] = rows.pixels[i].b;
     }
     exr_->writeRows(rows.height, {red_, green_, blue_});
+    if (digest_) {
+        digest_->addFloatRows(red_, green_, blue_);
+    }
 }
 
 void ImageRowWriter::finish() {
+    std::vector<ImageNote> digestNotes;
+    if (digest_) {
+        digestNotes.push_back({*digestKey_, digest_->hex()});
+    }
     if (png_) {
-        png_->finish();
+        png_->finish(digestNotes);
     } else {
-        exr_->finish();
+        exr_->finish(digestNotes);
     }
 }
 

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <optional>
 
-#include "image/exr_row_reader.h"
 #include "image/exr_row_writer.h"
-#include "image/image_format.h"
 #include "image/image_io.h"
-#include "image/png_row_reader.h"
+#include "io/open_file_limit.h"
 
 namespace hexray {
 namespace {
@@ -15,72 +13,20 @@ namespace {
 // Rows copied at a time: memory grows with the width only.
 constexpr std::uint32_t kRowsAtATime = 64;
 
-const std::vector<std::string> kExrChannels = {"R", "G", "B"};
+// Descriptors a merge needs besides its pieces: standard streams, the output and its directory,
+// and the libraries'.
+constexpr std::uint64_t kSpareDescriptors = 16;
 
-struct Piece {
-    std::string path;
-    TileStamp stamp;
-};
+const std::vector<std::string> kExrChannels = {"R", "G", "B"};
 
 std::string formatName(ImageFormat format) {
     return format == ImageFormat::Exr ? "OpenEXR" : "PNG";
 }
 
-std::string rowsText(const TileStamp& stamp) {
-    const RowRange rows = stamp.rows();
-    return "rows " + std::to_string(rows.first) + "-" + std::to_string(rows.end() - 1);
-}
-
 std::string tileText(const TileStamp& stamp) {
-    return "tile " + std::to_string(stamp.tile.index) + "/" + std::to_string(stamp.tile.count) + ", " +
-           rowsText(stamp);
-}
-
-// What the piece's file says about itself, and its size, checked against each other.
-Piece readPiece(const std::string& path, ImageFormat format) {
-    const std::optional<ImageFormat> pieceFormat = imageFormatFor(path);
-    if (pieceFormat != format) {
-        throw TileError(path + ": not a " + formatName(format) + " file (" + extensionOf(format) +
-                        "), as the merged image is");
-    }
-    std::optional<std::string> text;
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    try {
-        if (format == ImageFormat::Png) {
-            const PngRowReader reader(path);
-            text = reader.text(kTileStampKey);
-            width = reader.width();
-            height = reader.height();
-        } else {
-            const ExrRowReader reader(path);
-            const std::vector<std::string> channels = reader.channelNames();
-            for (const std::string& channel : kExrChannels) {
-                if (std::find(channels.begin(), channels.end(), channel) == channels.end()) {
-                    throw TileError(path + ": not an image hexray wrote (no channel " + channel + ")");
-                }
-            }
-            text = reader.stringAttribute(kTileStampKey);
-            width = reader.width();
-            height = reader.height();
-        }
-    } catch (const ImageIoError& error) {
-        throw TileError(error.what());
-    }
-    if (!text) {
-        throw TileError(path + ": not a piece of a tiled render (no " + kTileStampKey +
-                        " stamp: render pieces with --tile I/N)");
-    }
-    const std::optional<TileStamp> stamp = parseTileStamp(*text);
-    if (!stamp) {
-        throw TileError(path + ": its " + kTileStampKey + " stamp is damaged (\"" + *text + "\")");
-    }
-    if (width != stamp->width || height != stamp->rows().count) {
-        throw TileError(path + ": " + std::to_string(width) + "x" + std::to_string(height) +
-                        " pixels, but its stamp says " + rowsText(*stamp) + " of " + std::to_string(stamp->width) +
-                        "x" + std::to_string(stamp->height));
-    }
-    return {path, *stamp};
+    const RowRange rows = stamp.rows();
+    return "tile " + std::to_string(stamp.tile.index) + "/" + std::to_string(stamp.tile.count) + ", rows " +
+           std::to_string(rows.first) + "-" + std::to_string(rows.end() - 1);
 }
 
 // How `piece` differs from `first`, a tile of the image being merged.
@@ -97,99 +43,134 @@ std::string differences(const TileStamp& piece, const TileStamp& first) {
             std::to_string(first.samplesPerPixel));
     compare(piece.renderer == first.renderer, "renderer", piece.renderer, first.renderer);
     compare(piece.scene == first.scene, "scene file", piece.scene, first.scene);
+    compare(piece.version == first.version, "hexray", piece.version, first.version);
     std::string text;
     for (const std::string& part : parts) text += (text.empty() ? "" : ", ") + part;
     return text;
 }
 
-// The pieces in tile order, checked to be every tile of one image exactly once.
-std::vector<Piece> tilesInOrder(const std::vector<std::string>& paths, ImageFormat format) {
-    std::vector<std::optional<Piece>> slots;
-    std::optional<Piece> first;
-    for (const std::string& path : paths) {
-        Piece piece = readPiece(path, format);
-        if (!first) {
-            first = piece;
-            slots.resize(piece.stamp.tile.count);
-        }
-        if (!piece.stamp.sameImage(first->stamp)) {
-            throw TileError(path + ": a tile of another image than " + first->path + ": " +
-                            differences(piece.stamp, first->stamp));
-        }
-        std::optional<Piece>& slot = slots[piece.stamp.tile.index];
-        if (slot && slot->path == path) {
-            throw TileError(path + ": given twice");
-        }
-        if (slot) {
-            throw TileError(path + ": overlaps " + slot->path + " (both are " + tileText(piece.stamp) + ")");
-        }
-        slot = std::move(piece);
+// Every piece stays open from its check to its copy.
+void ensureDescriptorsFor(std::size_t pieces) {
+    const std::uint64_t needed = pieces + kSpareDescriptors;
+    const std::uint64_t limit = raiseOpenFileLimit(needed);
+    if (limit < needed) {
+        throw TileError(std::to_string(pieces) + " pieces, but this process may have only " + std::to_string(limit) +
+                        " files open (ulimit -n), and merge holds every piece open: raise the limit to at least " +
+                        std::to_string(needed));
     }
-    std::vector<Piece> ordered;
-    for (std::uint32_t index = 0; index < slots.size(); ++index) {
-        if (!slots[index]) {
-            TileStamp missing = first->stamp;
-            missing.tile.index = index;
-            throw TileError("missing " + tileText(missing) + " of the image " + first->path + " belongs to");
-        }
-        ordered.push_back(*slots[index]);
-    }
-    return ordered;
 }
 
-void mergePngs(const std::string& output, const std::vector<Piece>& pieces) {
-    const TileStamp& stamp = pieces.front().stamp;
+TilePiece openPiece(const std::string& path, ImageFormat format) {
+    if (imageFormatFor(path) != format) {
+        throw TileError(path + ": not a " + formatName(format) + " file (" + extensionOf(format) +
+                        "), as the merged image is");
+    }
+    try {
+        return TilePiece(ReadOnlyFile(path), format);
+    } catch (const InputError& error) {
+        throw TileError(error.what());
+    }
+}
+
+void mergePngs(const std::string& output, std::vector<TilePiece>& tiles) {
+    const TileStamp& stamp = tiles.front().stamp();
     PngRowWriter writer(output, stamp.width, stamp.height);
     std::vector<std::uint8_t> rows;
-    for (const Piece& piece : pieces) {
-        PngRowReader reader(piece.path);
-        for (std::uint32_t done = 0; done < reader.height(); done += kRowsAtATime) {
-            rows.resize(std::size_t(std::min(kRowsAtATime, reader.height() - done)) * reader.width() * 3);
-            reader.readRows(rows);
+    for (TilePiece& piece : tiles) {
+        for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
+            rows.resize(std::size_t(std::min(kRowsAtATime, piece.rowCount() - done)) * stamp.width * 3);
+            piece.readRgb8Rows(rows);
             writer.writeRows(rows);
         }
+        piece.verify();
     }
     writer.finish();
 }
 
-void mergeExrs(const std::string& output, const std::vector<Piece>& pieces) {
-    const TileStamp& stamp = pieces.front().stamp;
+void mergeExrs(const std::string& output, std::vector<TilePiece>& tiles) {
+    const TileStamp& stamp = tiles.front().stamp();
     ExrRowWriter writer(output, stamp.width, stamp.height, kExrChannels);
-    std::vector<std::vector<float>> channels(kExrChannels.size());
-    for (const Piece& piece : pieces) {
-        ExrRowReader reader(piece.path);
-        for (std::uint32_t done = 0; done < reader.height(); done += kRowsAtATime) {
-            const std::uint32_t rows = std::min(kRowsAtATime, reader.height() - done);
-            std::vector<std::span<const float>> spans;
-            for (std::size_t c = 0; c < kExrChannels.size(); ++c) {
-                channels[c].resize(std::size_t(rows) * reader.width());
-                reader.readRows(kExrChannels[c], done, rows, channels[c]);
-                spans.emplace_back(channels[c]);
+    std::vector<float> red, green, blue;
+    for (TilePiece& piece : tiles) {
+        for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
+            const std::uint32_t rows = std::min(kRowsAtATime, piece.rowCount() - done);
+            for (std::vector<float>* channel : {&red, &green, &blue}) {
+                channel->resize(std::size_t(rows) * stamp.width);
             }
-            writer.writeRows(rows, spans);
+            piece.readFloatRows(rows, red, green, blue);
+            writer.writeRows(rows, {red, green, blue});
         }
+        piece.verify();
     }
     writer.finish();
 }
 
 }  // namespace
 
-TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& pieces) {
-    const std::optional<ImageFormat> format = imageFormatFor(output);
-    if (!format) {
-        throw TileError(output + ": unknown image format (supported: " + kSupportedImageFormats + ")");
+std::vector<TilePiece> openPieces(const std::vector<std::string>& paths, ImageFormat format) {
+    ensureDescriptorsFor(paths.size());
+    std::vector<std::optional<TilePiece>> slots;  // sized from a stamp within the renderer's limits
+    std::optional<TileStamp> first;
+    std::string firstPath;
+    for (const std::string& path : paths) {
+        TilePiece piece = openPiece(path, format);
+        if (!first) {
+            first = piece.stamp();
+            firstPath = path;
+            slots.resize(first->tile.count);
+        }
+        if (!piece.stamp().sameImage(*first)) {
+            throw TileError(path + ": a tile of another image than " + firstPath + ": " +
+                            differences(piece.stamp(), *first));
+        }
+        std::optional<TilePiece>& slot = slots[piece.stamp().tile.index];
+        if (slot && slot->name() == path) {
+            throw TileError(path + ": given twice");
+        }
+        if (slot) {
+            throw TileError(path + ": overlaps " + slot->name() + " (both are " + tileText(piece.stamp()) + ")");
+        }
+        slot = std::move(piece);
     }
-    const std::vector<Piece> ordered = tilesInOrder(pieces, *format);
+    std::vector<TilePiece> ordered;
+    for (std::uint32_t index = 0; index < slots.size(); ++index) {
+        if (!slots[index]) {
+            TileStamp missing = *first;
+            missing.tile.index = index;
+            throw TileError("missing " + tileText(missing) + " of the image " + firstPath + " belongs to");
+        }
+        ordered.push_back(std::move(*slots[index]));
+    }
+    return ordered;
+}
+
+void mergePieces(const std::string& output, std::vector<TilePiece>& tiles) {
+    if (tiles.empty()) {
+        throw TileError("no pieces to merge");
+    }
+    if (imageFormatFor(output) != tiles.front().format()) {
+        throw TileError(output + ": not a " + formatName(tiles.front().format()) + " file (" +
+                        extensionOf(tiles.front().format()) + "), as the pieces are");
+    }
     try {
-        if (*format == ImageFormat::Png) {
-            mergePngs(output, ordered);
+        if (tiles.front().format() == ImageFormat::Exr) {
+            mergeExrs(output, tiles);
         } else {
-            mergeExrs(output, ordered);
+            mergePngs(output, tiles);
         }
     } catch (const ImageIoError& error) {
         throw TileError(error.what());  // a piece damaged past its header
     }
-    return ordered.front().stamp;
+}
+
+TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& paths) {
+    const std::optional<ImageFormat> format = imageFormatFor(output);
+    if (!format) {
+        throw TileError(output + ": unknown image format (supported: " + kSupportedImageFormats + ")");
+    }
+    std::vector<TilePiece> tiles = openPieces(paths, *format);
+    mergePieces(output, tiles);
+    return tiles.front().stamp();
 }
 
 }  // namespace hexray

@@ -1,19 +1,30 @@
 #pragma once
 // `hexray merge`: the pieces of a tiled render assembled into the whole image, a band of rows at
-// a time, pixel for pixel what a single render writes.
+// a time, pixel for pixel what a single render writes. In two steps: openPieces opens every piece
+// once and checks what the pieces declare; mergePieces reads their rows from those same open
+// files into the output and verifies each piece's digest (tile_piece.h).
 
 #include <string>
 #include <vector>
 
+#include "image/image_format.h"
+#include "tile/tile_piece.h"
 #include "tile/tile_stamp.h"
 
 namespace hexray {
 
-// Checks that `pieces` are the N tiles of one image (the same stamp but for the index), each
-// exactly once, each in `output`'s format (PNG or OpenEXR) and of its stamp's size; then writes
-// the image to `output` (atomically, see io/output_file.h). Throws TileError naming the piece
-// that does not fit, or the tile that is missing, before `output` is opened. Returns the stamp
-// of the first tile.
-TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& pieces);
+// Opens every piece in `paths` (raising the soft limit on open files to the hard one if they need
+// it) and checks that they are the N tiles of one image (the same stamp but for the index), each
+// exactly once, each in `format` and of its stamp's size, within the renderer's limits. Returns
+// them in tile order. Throws TileError naming the piece that does not fit or the tile missing.
+std::vector<TilePiece> openPieces(const std::vector<std::string>& paths, ImageFormat format);
+
+// Writes the image of `tiles` (openPieces') to `output` (atomically, see io/output_file.h), in
+// the tiles' format. Throws TileError naming a piece whose pixels are not what it recorded, and
+// then no output is left.
+void mergePieces(const std::string& output, std::vector<TilePiece>& tiles);
+
+// Both, in the format `output`'s name asks for. Returns the stamp of the first tile.
+TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& paths);
 
 }  // namespace hexray

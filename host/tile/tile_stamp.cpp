@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gpu/stable_hash.h"
+#include "scene/scene.h"
 
 namespace hexray {
 namespace {
@@ -16,11 +17,22 @@ bool isSceneIdentity(const std::string& text) {
            std::all_of(text.begin() + 17, text.end(), digit);
 }
 
+// A version as CMake and git give it: printable, without the separator ';'.
+bool isVersion(const std::string& text) {
+    return !text.empty() && text.size() <= 200 &&
+           std::all_of(text.begin(), text.end(), [](char c) { return c >= ' ' && c <= '~' && c != ';'; });
+}
+
+std::string imageSize(std::uint64_t width, std::uint64_t height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
 }  // namespace
 
 bool TileStamp::sameImage(const TileStamp& other) const {
     return tile.count == other.tile.count && width == other.width && height == other.height &&
-           samplesPerPixel == other.samplesPerPixel && renderer == other.renderer && scene == other.scene;
+           samplesPerPixel == other.samplesPerPixel && renderer == other.renderer && scene == other.scene &&
+           version == other.version;
 }
 
 std::string formatTileStamp(const TileStamp& stamp) {
@@ -28,7 +40,7 @@ std::string formatTileStamp(const TileStamp& stamp) {
     char head[160];
     std::snprintf(head, sizeof head, "%u/%u rows %u-%u of %ux%u; spp %u; ", stamp.tile.index, stamp.tile.count,
                   rows.first, rows.end() - 1, stamp.width, stamp.height, stamp.samplesPerPixel);
-    return head + stamp.renderer + "; scene " + stamp.scene;
+    return head + stamp.renderer + "; scene " + stamp.scene + "; hexray " + stamp.version;
 }
 
 std::optional<TileStamp> parseTileStamp(const std::string& text) {
@@ -39,14 +51,16 @@ std::optional<TileStamp> parseTileStamp(const std::string& text) {
     const int read = std::sscanf(text.c_str(), "%u/%u rows %u-%u of %ux%u; spp %u; %n", &stamp.tile.index,
                                  &stamp.tile.count, &first, &last, &stamp.width, &stamp.height,
                                  &stamp.samplesPerPixel, &rendererStart);
-    const std::size_t sceneAt = text.rfind("; scene ");
+    const std::size_t versionAt = text.rfind("; hexray ");
+    const std::size_t sceneAt = versionAt == std::string::npos ? versionAt : text.rfind("; scene ", versionAt);
     if (read != 7 || rendererStart < 0 || sceneAt == std::string::npos || sceneAt < std::size_t(rendererStart) ||
         stamp.tile.count == 0 || stamp.tile.index >= stamp.tile.count || stamp.tile.count > stamp.height) {
         return std::nullopt;
     }
     stamp.renderer = text.substr(std::size_t(rendererStart), sceneAt - std::size_t(rendererStart));
-    stamp.scene = text.substr(sceneAt + 8);
-    if (!isSceneIdentity(stamp.scene)) {
+    stamp.scene = text.substr(sceneAt + 8, versionAt - sceneAt - 8);
+    stamp.version = text.substr(versionAt + 9);
+    if (!isSceneIdentity(stamp.scene) || !isVersion(stamp.version)) {
         return std::nullopt;
     }
     // Strict: anything formatTileStamp would not write (other rows, extra text) is not a stamp.
@@ -54,6 +68,22 @@ std::optional<TileStamp> parseTileStamp(const std::string& text) {
         return std::nullopt;
     }
     return stamp;
+}
+
+std::optional<std::string> beyondRendererLimits(const TileStamp& stamp) {
+    if (stamp.width < 1 || stamp.height < 1 || stamp.width > kMaxImageDimension ||
+        stamp.height > kMaxImageDimension) {
+        return "its stamp declares a " + imageSize(stamp.width, stamp.height) + " image, " +
+               (stamp.width < 1 || stamp.height < 1 ? "which has no pixels" : "larger than hexray renders") +
+               " (at most " + imageSize(kMaxImageDimension, kMaxImageDimension) + ")";
+    }
+    const std::uint64_t samples = std::uint64_t(stamp.width) * stamp.height * stamp.samplesPerPixel;
+    if (stamp.samplesPerPixel < 1 || stamp.samplesPerPixel > kMaxSamplesPerPixel || samples > kMaxImageSamples) {
+        return "its stamp declares " + imageSize(stamp.width, stamp.height) + " pixels at spp " +
+               std::to_string(stamp.samplesPerPixel) + ", more samples than hexray renders (spp at most " +
+               std::to_string(kMaxSamplesPerPixel) + ", " + std::to_string(kMaxImageSamples) + " samples an image)";
+    }
+    return std::nullopt;
 }
 
 std::string sceneTextIdentity(std::string_view text) {

@@ -1,7 +1,9 @@
 // `render --tile I/N` and `hexray merge`: the merged pieces are the single render, pixel for
 // pixel, on both backends and with anti-aliasing; pieces that do not make one image are refused.
 
+#include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,8 +11,13 @@
 
 #include "cli/cli_fixture.h"
 #include "image/exr_io.h"
+#include "image/exr_row_reader.h"
+#include "image/exr_row_writer.h"
 #include "image/image_io.h"
+#include "image/pixel_digest.h"
 #include "image/png_row_reader.h"
+#include "io/read_only_file.h"
+#include "support/png_rewrite.h"
 #include "tile/tile_stamp.h"
 
 namespace hexray {
@@ -40,6 +47,30 @@ protected:
             pieces += " " + piece;
         }
         return hexray("merge merged" + extension + pieces);
+    }
+
+    // Renders the CPU reference's `tiles` tiles of a small image as piece-I.EXTENSION.
+    void renderPieces(std::uint32_t tiles, const std::string& extension) {
+        for (std::uint32_t i = 0; i < tiles; ++i) {
+            const RunResult run = hexray("render " + scene("spheres-and-lights.json") + kImage + " --backend cpu --tile " +
+                                         std::to_string(i) + "/" + std::to_string(tiles) + " -o piece-" +
+                                         std::to_string(i) + extension);
+            ASSERT_EQ(run.exitCode, 0) << run.err;
+        }
+    }
+
+    // What `hexray --version` says of this build: "0.1.0 (git ...)".
+    std::string hexrayVersion() const {
+        const std::string out = hexray("--version").out;
+        return out.substr(7, out.find('\n') - 7);
+    }
+
+    // Merges piece-0..2.png into merged.png: refused, naming `message`, with nothing written.
+    void expectRefusal(const std::string& message) {
+        const RunResult run = hexray("merge merged.png piece-0.png piece-1.png piece-2.png");
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_NE(run.err.find(message), std::string::npos) << run.err;
+        EXPECT_FALSE(fs::exists(dir_ / "merged.png"));
     }
 };
 
@@ -80,12 +111,21 @@ TEST_F(TileCliTest, APieceRecordsItsPlaceInATextChunk) {
     EXPECT_NE(run.out.find("wrote lecture-demo.tile-2-of-5.png (rows 21-30 of 67x53) — cpu reference"),
               std::string::npos)
         << run.out;
-    const PngRowReader piece(dir_ / "lecture-demo.tile-2-of-5.png");
+    const ReadOnlyFile file((dir_ / "lecture-demo.tile-2-of-5.png").string());
+    PngRowReader piece(file);
     EXPECT_EQ(piece.width(), 67u);
     EXPECT_EQ(piece.height(), 10u);  // rows floor(2*53/5) = 21 to floor(3*53/5) - 1 = 30
     const std::string text = piece.text(kTileStampKey).value_or("");
     const std::string sceneText = readFile(test::sourcePath("scenes/lecture-demo.json"));
-    EXPECT_EQ(text, "2/5 rows 21-30 of 67x53; spp 4; cpu reference; scene " + sceneTextIdentity(sceneText)) << text;
+    EXPECT_EQ(text, "2/5 rows 21-30 of 67x53; spp 4; cpu reference; scene " + sceneTextIdentity(sceneText) +
+                        "; hexray " + hexrayVersion())
+        << text;
+    // After the pixels, the SHA-256 of the stamp (and a NUL) and the pixels.
+    std::vector<std::uint8_t> rows(67 * 10 * 3);
+    piece.readRows(rows);
+    PixelDigest digest(text);
+    digest.addRgb8Rows(rows);
+    EXPECT_EQ(piece.textAfterPixels(kTileDigestKey), digest.hex());
 }
 
 TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem) {
@@ -116,7 +156,7 @@ TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem)
         {first + " other-count.png" + last, "other-count.png: a tile of another image than "
                                             "lecture-demo.tile-0-of-3.png: tile count 4 (not 3)"},
         {first + " whole.png" + last, "whole.png: not a piece of a tiled render (no hexray-tile stamp"},
-        {first + " nothing.png" + last, "nothing.png: cannot read PNG"},
+        {first + " nothing.png" + last, "nothing.png: cannot open: No such file or directory"},
     };
     for (const auto& [pieces, message] : cases) {
         const RunResult run = hexray("merge merged.png" + pieces);
@@ -137,6 +177,75 @@ TEST_F(TileCliTest, MergeRefusesAnOutputThatIsAPieceAndAPieceOfAnotherFormat) {
     EXPECT_EQ(run.exitCode, 2) << run.err;
     EXPECT_NE(run.err.find("b.exr: not a PNG file (.png), as the merged image is"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(dir_ / "m.png"));
+}
+
+// What a PNG optimiser may write: the same pixels and text chunks, interlaced. Read as rows, the
+// passes would be a scrambled image.
+TEST_F(TileCliTest, AnInterlacedPieceIsRefusedByName) {
+    renderPieces(3, ".png");
+    test::encodePng(dir_ / "piece-1.png", test::decodePng(dir_ / "piece-1.png"), true);
+    expectRefusal("piece-1.png: an interlaced PNG, which merge does not read");
+}
+
+// A piece re-encoded as a valid PNG with its stamp, one pixel changed: only its checksum tells.
+TEST_F(TileCliTest, APieceWhosePixelsChangedIsRefused) {
+    renderPieces(3, ".png");
+    test::DecodedPng piece = test::decodePng(dir_ / "piece-1.png");
+    piece.rgb[100] ^= 1;
+    test::encodePng(dir_ / "piece-1.png", piece);
+    expectRefusal("piece-1.png: its pixels are not the ones it was rendered with");
+}
+
+TEST_F(TileCliTest, AnOpenExrPieceWhoseValuesChangedIsRefused) {
+    renderPieces(2, ".exr");
+    ExrImage piece = readExr(dir_ / "piece-1.exr");
+    std::vector<ImageNote> notes;
+    {
+        const ExrRowReader reader(dir_ / "piece-1.exr");
+        for (const char* key : {kTileStampKey, "hexray-tile-sha256"}) {
+            if (const std::optional<std::string> text = reader.stringAttribute(key)) {
+                notes.push_back({key, *text});
+            }
+        }
+    }
+    piece.channels["G"][7] = std::nextafter(piece.channels["G"][7], 2.0f);
+    ExrRowWriter writer(dir_ / "piece-1.exr", piece.width, piece.height, {"R", "G", "B"}, notes);
+    writer.writeRows(piece.height, {piece.channels["R"], piece.channels["G"], piece.channels["B"]});
+    writer.finish();
+    const RunResult run = hexray("merge merged.exr piece-0.exr piece-1.exr");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("piece-1.exr: its pixels are not the ones it was rendered with"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "merged.exr"));
+}
+
+// Another build may render other pixels: its pieces are not merged with this one's.
+TEST_F(TileCliTest, PiecesOfTwoVersionsAreRefusedNamingBoth) {
+    const std::string ours = hexrayVersion();
+    renderPieces(3, ".png");
+    test::DecodedPng piece = test::decodePng(dir_ / "piece-1.png");
+    std::string stamp = piece.text(kTileStampKey);
+    stamp = stamp.substr(0, stamp.find("; hexray ")) + "; hexray 0.0.9 (git 0123456789ab)";
+    piece.setText(kTileStampKey, stamp);
+    test::encodePng(dir_ / "piece-1.png", piece);
+    expectRefusal("piece-1.png: a tile of another image than piece-0.png: hexray 0.0.9 (git 0123456789ab) (not " +
+                  ours + ")");
+}
+
+// Every piece stays open from the check to the copy: more pieces than the hard limit on open
+// files are refused up front; a soft limit below it is raised.
+TEST_F(TileCliTest, MorePiecesThanFilesMayBeOpenAreRefusedUpFront) {
+    const RunResult render = shell("for i in $(seq 0 29); do \"$HEXRAY\" render " + scene("lecture-demo.json") +
+                                   " --width 8 --height 30 --backend cpu --tile $i/30 -o p-$i.png || exit 1; done");
+    ASSERT_EQ(render.exitCode, 0) << render.err;
+    RunResult run = shell("ulimit -n 20 && \"$HEXRAY\" merge merged.png p-*.png");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("30 pieces, but this process may have only 20 files open (ulimit -n)"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "merged.png"));
+    run = shell("ulimit -S -n 20 && \"$HEXRAY\" merge merged.png p-*.png");
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_TRUE(fs::exists(dir_ / "merged.png"));
 }
 
 TEST_F(TileCliTest, ATileSpecificationOutsideItsRangeIsExitCode2) {
