@@ -20,6 +20,7 @@
 
 #include "cli/cli_fixture.h"
 #include "image/image_io.h"
+#include "support/terminating_signals.h"
 
 namespace hexray {
 namespace {
@@ -259,9 +260,19 @@ TEST_P(SignalCliTest, ARenderEndedBySignalLeavesTheOldImageAndNoTemporaryFile) {
     EXPECT_EQ(createdFiles(), std::vector<std::string>{"big.png"});
 }
 
-INSTANTIATE_TEST_SUITE_P(CatchableSignals, SignalCliTest,
-                         ::testing::Values(SIGHUP, SIGINT, SIGQUIT, SIGPIPE, SIGTERM, SIGUSR1, SIGUSR2),
-                         [](const auto& info) { return std::string(sigabbrev_np(info.param)); });
+// Every one but the real-time signals between the first and the last (the unit test has them all).
+std::vector<int> signalsToSend() {
+    std::vector<int> signals;
+    for (const int signal : test::catchableTerminatingSignals()) {
+        if (signal <= SIGRTMIN || signal == SIGRTMAX) {
+            signals.push_back(signal);
+        }
+    }
+    return signals;
+}
+
+INSTANTIATE_TEST_SUITE_P(CatchableSignals, SignalCliTest, ::testing::ValuesIn(signalsToSend()),
+                         [](const auto& info) { return test::signalTestName(info.param); });
 
 TEST_F(OutputCliTest, ASignalDuringAovStagingLeavesNoStagingDirectory) {
     const pid_t pid = startLongRender(true);
