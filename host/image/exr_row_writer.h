@@ -1,8 +1,10 @@
 #pragma once
 // Writes a float OpenEXR file (32-bit channels, ZIP-compressed scanlines, through OpenEXR) a band
 // of rows at a time, so an image need never be whole in memory. The file is an OutputFile
-// (io/output_file.h): it appears at its path only when finish() succeeds. It must be a regular
-// file: the format's offset table is written last, by seeking back.
+// (io/output_file.h): it appears at its path only when finish() succeeds. The format's offset
+// table is written last, by seeking back: where the output cannot seek (standard output, a pipe,
+// a FIFO, a terminal, a device), the file is written to an unnamed scratch file
+// (io/anonymous_file.h) and its bytes streamed to the output by finish().
 
 #include <cstdint>
 #include <filesystem>
