@@ -19,6 +19,7 @@
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene.h"
+#include "util/printable.h"
 
 namespace {
 
@@ -263,7 +264,7 @@ void addDevicesCommand(CLI::App& app, CommandLine& line) {
 void defineCommandLine(CLI::App& app, CommandLine& line) {
     app.footer(kExitCodes);
     app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return std::string("hexray: error: ") + error.what() + "\nRun with --help for more information.\n";
+        return "hexray: error: " + printable(error.what()) + "\nRun with --help for more information.\n";
     });
     app.require_subcommand(1);
     app.fallthrough();  // the global options below are accepted after the subcommand too
@@ -383,7 +384,8 @@ int main(int argc, char** argv) {
     CommandLine line;
     defineCommandLine(app, line);
     if (const std::optional<std::string> word = unknownCommand(argc, argv, app)) {
-        printError("unknown command '" + *word + "' (the commands are " + kCommands + "; hexray --help describes them)");
+        printError("unknown command '" + printable(*word) + "' (the commands are " + kCommands +
+                   "; hexray --help describes them)");
         return kBadInput;
     }
     try {

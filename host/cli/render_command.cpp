@@ -22,6 +22,7 @@
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
 #include "tile/tile_stamp.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -239,7 +240,8 @@ int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSes
     if (aovs) {
         // Only now, so a failed render leaves the directory's earlier AOVs as they were.
         const std::size_t files = aovs->commit().size();
-        std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files, options.aovDirectory.c_str());
+        std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files,
+                    printable(options.aovDirectory).c_str());
     }
     return int(kSuccess);
 }
@@ -265,7 +267,7 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
     plan.check();
     for (const RenderTarget& target : targets) {
         if (!target.format) {
-            throw SceneError("-o " + target.outputPath + ": unknown image format (supported: " +
+            throw SceneError("-o " + printable(target.outputPath) + ": unknown image format (supported: " +
                              kSupportedImageFormats + ")");
         }
     }
@@ -286,7 +288,7 @@ int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& ta
     }
     if (targets.size() > 1) {
         std::string names;
-        for (const std::string& name : failed) names += (names.empty() ? "; failed: " : ", ") + name;
+        for (const std::string& name : failed) names += (names.empty() ? "; failed: " : ", ") + printable(name);
         std::printf("rendered %zu of %zu scenes%s\n", targets.size() - failed.size(), targets.size(), names.c_str());
     }
     return firstFailure;

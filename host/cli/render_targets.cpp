@@ -6,6 +6,7 @@
 #include "cli/scene_files.h"
 #include "io/output_error.h"
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -33,11 +34,11 @@ fs::path outputDirectory(const std::string& output, std::size_t scenes) {
         return "";
     }
     if (!namesDirectory(output)) {
-        throw SceneError("-o " + output + ": " + std::to_string(scenes) +
+        throw SceneError("-o " + printable(output) + ": " + std::to_string(scenes) +
                          " scenes are rendered into a directory, and this is not one");
     }
     if (!fs::is_directory(output, ignored)) {
-        throw OutputError("-o " + output + ": no such directory (the scenes' images go into it)");
+        throw OutputError("-o " + printable(output) + ": no such directory (the scenes' images go into it)");
     }
     return output;
 }
@@ -57,8 +58,9 @@ std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
         const std::string output = (directory / defaultName(scene.path, options.tile)).string();
         const auto [earlier, added] = sceneByOutput.emplace(fs::path(output).lexically_normal().string(), scene.path);
         if (!added) {
-            throw SceneError("scenes " + earlier->second + " and " + scene.path + " would both be written to " +
-                             output + " (the image is named after the scene file): render them separately");
+            throw SceneError("scenes " + printable(earlier->second) + " and " + printable(scene.path) +
+                             " would both be written to " + printable(output) +
+                             " (the image is named after the scene file): render them separately");
         }
         targets.push_back({scene.path, output, ImageFormat::Png});
     }

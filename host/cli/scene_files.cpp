@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 
@@ -26,10 +27,10 @@ std::vector<SceneFile> sceneFiles(const std::vector<std::string>& paths) {
             }
         }
         if (error) {
-            throw SceneError(path + ": cannot read the directory: " + error.message());
+            throw SceneError(printable(path) + ": cannot read the directory: " + error.message());
         }
         if (found.empty()) {
-            throw SceneError(path + ": no scene files (*.json) in this directory");
+            throw SceneError(printable(path) + ": no scene files (*.json) in this directory");
         }
         std::sort(found.begin(), found.end(), [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
         files.insert(files.end(), found.begin(), found.end());

@@ -8,6 +8,7 @@
 
 #include "scene/json_path.h"
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -137,7 +138,7 @@ public:
     bool parse_error(std::size_t /*position*/, const std::string& /*last token*/, const Json::exception& error) {
         if (const auto* syntax = dynamic_cast<const Json::parse_error*>(&error)) {
             throw SceneError(source_ + ":" + lineAndColumn(text_, syntax->byte) +
-                             ": JSON syntax error: " + parseErrorDetail(error.what()));
+                             ": JSON syntax error: " + printable(parseErrorDetail(error.what())));
         }
         throw SceneError(source_ + ": " + displayPath(pendingPath()) + ": must be a finite number (got " +
                          overflowingLiteral(error.what()) + ")");

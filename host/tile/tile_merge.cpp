@@ -8,6 +8,7 @@
 #include "image/image_format.h"
 #include "image/image_io.h"
 #include "image/png_row_reader.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -40,7 +41,7 @@ std::string tileText(const TileStamp& stamp) {
 Piece readPiece(const std::string& path, ImageFormat format) {
     const std::optional<ImageFormat> pieceFormat = imageFormatFor(path);
     if (pieceFormat != format) {
-        throw TileError(path + ": not a " + formatName(format) + " file (" + extensionOf(format) +
+        throw TileError(printable(path) + ": not a " + formatName(format) + " file (" + extensionOf(format) +
                         "), as the merged image is");
     }
     std::optional<std::string> text;
@@ -57,7 +58,7 @@ Piece readPiece(const std::string& path, ImageFormat format) {
             const std::vector<std::string> channels = reader.channelNames();
             for (const std::string& channel : kExrChannels) {
                 if (std::find(channels.begin(), channels.end(), channel) == channels.end()) {
-                    throw TileError(path + ": not an image hexray wrote (no channel " + channel + ")");
+                    throw TileError(printable(path) + ": not an image hexray wrote (no channel " + channel + ")");
                 }
             }
             text = reader.stringAttribute(kTileStampKey);
@@ -65,18 +66,19 @@ Piece readPiece(const std::string& path, ImageFormat format) {
             height = reader.height();
         }
     } catch (const ImageIoError& error) {
-        throw TileError(error.what());
+        throw TileError(printable(error.what()));
     }
     if (!text) {
-        throw TileError(path + ": not a piece of a tiled render (no " + kTileStampKey +
+        throw TileError(printable(path) + ": not a piece of a tiled render (no " + kTileStampKey +
                         " stamp: render pieces with --tile I/N)");
     }
     const std::optional<TileStamp> stamp = parseTileStamp(*text);
     if (!stamp) {
-        throw TileError(path + ": its " + kTileStampKey + " stamp is damaged (\"" + *text + "\")");
+        throw TileError(printable(path) + ": its " + kTileStampKey + " stamp is damaged (\"" + printable(*text) +
+                        "\")");
     }
     if (width != stamp->width || height != stamp->rows().count) {
-        throw TileError(path + ": " + std::to_string(width) + "x" + std::to_string(height) +
+        throw TileError(printable(path) + ": " + std::to_string(width) + "x" + std::to_string(height) +
                         " pixels, but its stamp says " + rowsText(*stamp) + " of " + std::to_string(stamp->width) +
                         "x" + std::to_string(stamp->height));
     }
@@ -113,15 +115,16 @@ std::vector<Piece> tilesInOrder(const std::vector<std::string>& paths, ImageForm
             slots.resize(piece.stamp.tile.count);
         }
         if (!piece.stamp.sameImage(first->stamp)) {
-            throw TileError(path + ": a tile of another image than " + first->path + ": " +
-                            differences(piece.stamp, first->stamp));
+            throw TileError(printable(path) + ": a tile of another image than " + printable(first->path) + ": " +
+                            printable(differences(piece.stamp, first->stamp)));
         }
         std::optional<Piece>& slot = slots[piece.stamp.tile.index];
         if (slot && slot->path == path) {
-            throw TileError(path + ": given twice");
+            throw TileError(printable(path) + ": given twice");
         }
         if (slot) {
-            throw TileError(path + ": overlaps " + slot->path + " (both are " + tileText(piece.stamp) + ")");
+            throw TileError(printable(path) + ": overlaps " + printable(slot->path) + " (both are " +
+                            tileText(piece.stamp) + ")");
         }
         slot = std::move(piece);
     }
@@ -130,7 +133,7 @@ std::vector<Piece> tilesInOrder(const std::vector<std::string>& paths, ImageForm
         if (!slots[index]) {
             TileStamp missing = first->stamp;
             missing.tile.index = index;
-            throw TileError("missing " + tileText(missing) + " of the image " + first->path + " belongs to");
+            throw TileError("missing " + tileText(missing) + " of the image " + printable(first->path) + " belongs to");
         }
         ordered.push_back(*slots[index]);
     }
@@ -177,7 +180,7 @@ void mergeExrs(const std::string& output, const std::vector<Piece>& pieces) {
 TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& pieces) {
     const std::optional<ImageFormat> format = imageFormatFor(output);
     if (!format) {
-        throw TileError(output + ": unknown image format (supported: " + kSupportedImageFormats + ")");
+        throw TileError(printable(output) + ": unknown image format (supported: " + kSupportedImageFormats + ")");
     }
     const std::vector<Piece> ordered = tilesInOrder(pieces, *format);
     try {
@@ -187,7 +190,7 @@ TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& 
             mergeExrs(output, ordered);
         }
     } catch (const ImageIoError& error) {
-        throw TileError(error.what());  // a piece damaged past its header
+        throw TileError(printable(error.what()));  // a piece damaged past its header
     }
     return ordered.front().stamp;
 }
