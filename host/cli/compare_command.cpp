@@ -228,7 +228,9 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
 void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& files) {
     OutputPlan plan;
     for (const SceneFile& file : files) {
-        plan.addInput("the scene", file.path);
+        if (file.problem.empty()) {
+            plan.addInput("the scene", file.path);
+        }
     }
     if (!options.diffPath.empty()) {
         plan.addFile("--diff", options.diffPath);
@@ -246,6 +248,7 @@ void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& fil
 // A table's scene that cannot be loaded is a failed row, not the end of the table.
 std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table) {
     try {
+        requireReadable(file);
         return loadScene(file.path, image);
     } catch (const SceneError& error) {
         if (!table) {

@@ -226,6 +226,9 @@ std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallb
 }
 
 int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback) {
+    if (!target.problem.empty()) {
+        throw SceneError(printable(target.scenePath) + ": " + target.problem);
+    }
     const SceneRender job(options, target);
     std::optional<ImageRowWriter> writer;
     std::optional<StagedAovs> aovs;
@@ -254,20 +257,26 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
     if (options.tile && !options.aovDirectory.empty()) {
         throw SceneError("--aov: AOVs are of the whole image, not of a tile");
     }
-    OutputPlan plan;
+    std::vector<const RenderTarget*> rendered;  // a directory that could not be searched fails alone, later
     for (const RenderTarget& target : targets) {
-        plan.addInput("the scene", target.scenePath);
+        if (target.problem.empty()) {
+            rendered.push_back(&target);
+        }
     }
-    for (const RenderTarget& target : targets) {
-        plan.addFile("-o", target.outputPath);
+    OutputPlan plan;
+    for (const RenderTarget* target : rendered) {
+        plan.addInput("the scene", target->scenePath);
+    }
+    for (const RenderTarget* target : rendered) {
+        plan.addFile("-o", target->outputPath);
     }
     if (!options.aovDirectory.empty()) {
         plan.addDirectory("--aov", options.aovDirectory, isAovFileName);
     }
     plan.check();
-    for (const RenderTarget& target : targets) {
-        if (!target.format) {
-            throw SceneError("-o " + printable(target.outputPath) + ": unknown image format (supported: " +
+    for (const RenderTarget* target : rendered) {
+        if (!target->format) {
+            throw SceneError("-o " + printable(target->outputPath) + ": unknown image format (supported: " +
                              kSupportedImageFormats + ")");
         }
     }

@@ -49,12 +49,16 @@ std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
     const std::vector<SceneFile> scenes = sceneFiles(options.scenePaths);
     const bool single = scenes.size() == 1 && !namesDirectory(options.outputPath);
     if (single && !options.outputPath.empty()) {
-        return {{scenes[0].path, options.outputPath, imageFormatFor(options.outputPath)}};
+        return {{scenes[0].path, options.outputPath, imageFormatFor(options.outputPath), scenes[0].problem}};
     }
     const fs::path directory = outputDirectory(options.outputPath, scenes.size());
     std::vector<RenderTarget> targets;
     std::map<std::string, std::string> sceneByOutput;
     for (const SceneFile& scene : scenes) {
+        if (!scene.problem.empty()) {
+            targets.push_back({scene.path, "", std::nullopt, scene.problem});
+            continue;
+        }
         const std::string output = (directory / defaultName(scene.path, options.tile)).string();
         const auto [earlier, added] = sceneByOutput.emplace(fs::path(output).lexically_normal().string(), scene.path);
         if (!added) {
@@ -62,7 +66,7 @@ std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
                              " would both be written to " + printable(output) +
                              " (the image is named after the scene file): render them separately");
         }
-        targets.push_back({scene.path, output, ImageFormat::Png});
+        targets.push_back({scene.path, output, ImageFormat::Png, ""});
     }
     return targets;
 }
