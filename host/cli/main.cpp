@@ -129,7 +129,8 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "Also write, from each pixel's first sample, depth.exr, normal.exr, object-id.exr and "
                      "light-<i>.exr (1 where light i reaches the point), with a PNG preview of each, into this "
                      "directory")
-        ->check(NotEmpty());
+        ->check(NotEmpty())
+        ->check(AovDirectoryName());
     command
         ->add_option("--tile", line.renderTile,
                      "Render only tile I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
@@ -198,7 +199,8 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
         ->add_option("--aov", compare.aovDirectory,
                      "Write both backends' AOVs (as render --aov does) into DIR/gpu and DIR/cpu, and the CPU "
                      "reference's decision margin as DIR/cpu/margin.exr")
-        ->check(NotEmpty());
+        ->check(NotEmpty())
+        ->check(AovDirectoryName());
 }
 
 void addBenchCommand(CLI::App& app, CommandLine& line) {

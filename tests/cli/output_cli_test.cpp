@@ -235,6 +235,17 @@ TEST_F(OutputCliTest, AnUnwritableOutputPathFailsBeforeTheWork) {
     }
 }
 
+TEST_F(OutputCliTest, AnAovSetCannotGoToStandardOutput) {
+    const std::string demo = scene("lecture-demo.json") + " --width 8 --height 8";
+    for (const std::string& command : {"render " + demo + " -o x.png --aov -", "compare " + demo + " --aov -"}) {
+        const RunResult run = hexray(command);
+        EXPECT_EQ(run.exitCode, 2) << command << "\n" << run.err;
+        EXPECT_NE(run.err.find("--aov: an AOV set is several files"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("standard output"), std::string::npos) << run.err;
+        EXPECT_EQ(createdFiles(), std::vector<std::string>{}) << command;
+    }
+}
+
 // ---------------------------------------------------------------- signals
 
 class SignalCliTest : public OutputCliTest, public ::testing::WithParamInterface<int> {
