@@ -299,9 +299,12 @@ private:
 
 // nlohmann's SAX parse of `text`, reporting progress if asked.
 bool saxParse(const std::string& text, DocumentBuilder& builder, const ParseProgress& progress) {
-    if (!progress) return Json::sax_parse(text, &builder);
+    // Comments (// and /* */) are read as whitespace: people annotate their scenes.
+    constexpr bool kStrict = true;
+    constexpr bool kIgnoreComments = true;
+    if (!progress) return Json::sax_parse(text, &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
     return Json::sax_parse(ProgressIterator(text, 0, &progress), ProgressIterator(text, text.size(), &progress),
-                           &builder);
+                           &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
 }
 
 }  // namespace

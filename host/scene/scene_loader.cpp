@@ -21,6 +21,7 @@
 #include "scene/json_reader.h"
 #include "scene/node_reader.h"
 #include "scene/scene_json_parser.h"
+#include "scene/text_encoding.h"
 #include "util/printable.h"
 
 namespace hexray {
@@ -184,6 +185,9 @@ Scene readScene(const JsonReader& root, NodeReader&& nodes) {
 
 Scene parseScene(const std::string& text, const std::string& sourceName, const ParseProgress& progress) {
     const std::string source = printable(sourceName);  // the name as every message shows it
+    if (const std::optional<std::string> problem = wideEncodingProblem(text)) {
+        throw SceneError(source + ": " + *problem);
+    }
     // Valid files take the shortcut; a file with a node it declines is parsed again the general way.
     {
         NodeReader nodes(source);
