@@ -18,6 +18,7 @@
 #include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
 #include "util/milliseconds_since.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -67,7 +68,8 @@ void addReferences(const BenchOptions& options, BenchScene& bench) {
 std::vector<BenchScene> fileScenes(const BenchOptions& options) {
     std::vector<BenchScene> scenes;
     for (const std::string& path : options.scenePaths) {
-        scenes.push_back({std::filesystem::path(path).stem().string(), std::nullopt, loadScene(path, options.image), {}});
+        scenes.push_back({printable(std::filesystem::path(path).stem().string()), std::nullopt,
+                          loadScene(path, options.image), {}});
     }
     if (scenes.empty() && options.sphereCounts.empty()) {
         Scene demo = parseScene(std::string(kDemoSceneJson), "the shipped demo scene");

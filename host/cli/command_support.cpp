@@ -12,11 +12,14 @@
 #include "io/output_plan.h"
 #include "scene/scene_loader.h"
 #include "tile/tile_stamp.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 
 void printError(const std::string& message) {
-    std::fprintf(stderr, "hexray: error: %s\n", message.c_str());
+    // Where the text a message quotes is escaped already, this changes nothing; it catches any
+    // that is not (a library's message quoting a path).
+    std::fprintf(stderr, "hexray: error: %s\n", printable(message).c_str());
 }
 
 int exitCodeFor(VulkanFailure failure) {

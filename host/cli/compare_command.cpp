@@ -17,6 +17,7 @@
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -54,7 +55,7 @@ const char* okText(bool ok) {
 void printDetailed(const std::string& path, const Scene& scene, const Row& row, const std::string& gpuHow,
                    const std::string& cpuHow, const Tolerance& tolerance) {
     const TopologyComparison& t = row.comparison.topology;
-    std::printf("scene %s: %ux%u, %s output\n", path.c_str(), scene.image.width, scene.image.height,
+    std::printf("scene %s: %ux%u, %s output\n", printable(path).c_str(), scene.image.width, scene.image.height,
                 scene.image.encoding == Encoding::Srgb ? "sRGB" : "linear");
     std::printf("  %s\n  %s\n", gpuHow.c_str(), cpuHow.c_str());
     std::printf("  ambiguous pixels (a decision within rounding of flipping): %llu (%.4f%%)\n",
@@ -102,8 +103,8 @@ void printTableHeader() {
 
 void printTableRow(const std::string& scene, const Row& row) {
     const RenderComparison& c = row.comparison;
-    std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n", scene.c_str(),
-                std::string(precisionName(row.precision)).c_str(), row.chosenByAuto ? "✓" : "",
+    std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n",
+                printable(scene).c_str(), std::string(precisionName(row.precision)).c_str(), row.chosenByAuto ? "✓" : "",
                 static_cast<unsigned long long>(c.topology.mismatches), 100.0 * c.topology.ambiguousShare(),
                 100.0 * c.topology.excusedShare(), c.encoded.maxAbs, c.encoded.rmse,
                 100.0 * c.encoded.shareOverOneLevel, row.gpuMilliseconds, verdictText(row).c_str());
@@ -111,7 +112,7 @@ void printTableRow(const std::string& scene, const Row& row) {
 
 void printFailedRow(const std::string& scene) {
     std::printf("| %s | – | | – | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n",
-                scene.c_str());
+                printable(scene).c_str());
 }
 
 // The files a single-scene comparison writes besides its report: the heat map, the mask and
@@ -170,7 +171,8 @@ public:
             gpuAovs_->commit();
             cpuAovs_->commit();
             const fs::path directory(options_.aovDirectory);
-            std::printf("wrote AOVs in %s and %s\n", (directory / "gpu").c_str(), (directory / "cpu").c_str());
+            std::printf("wrote AOVs in %s and %s\n", printable((directory / "gpu").string()).c_str(),
+                        printable((directory / "cpu").string()).c_str());
         }
     }
 
@@ -226,7 +228,9 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
 void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& files) {
     OutputPlan plan;
     for (const SceneFile& file : files) {
-        plan.addInput("the scene", file.path);
+        if (file.problem.empty()) {
+            plan.addInput("the scene", file.path);
+        }
     }
     if (!options.diffPath.empty()) {
         plan.addFile("--diff", options.diffPath);
@@ -244,6 +248,7 @@ void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& fil
 // A table's scene that cannot be loaded is a failed row, not the end of the table.
 std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table) {
     try {
+        requireReadable(file);
         return loadScene(file.path, image);
     } catch (const SceneError& error) {
         if (!table) {

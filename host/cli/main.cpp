@@ -19,6 +19,7 @@
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene.h"
+#include "util/printable.h"
 
 namespace {
 
@@ -128,7 +129,8 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "Also write, from each pixel's first sample, depth.exr, normal.exr, object-id.exr and "
                      "light-<i>.exr (1 where light i reaches the point), with a PNG preview of each, into this "
                      "directory")
-        ->check(NotEmpty());
+        ->check(NotEmpty())
+        ->check(AovDirectoryName());
     command
         ->add_option("--tile", line.renderTile,
                      "Render only tile I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
@@ -197,7 +199,8 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
         ->add_option("--aov", compare.aovDirectory,
                      "Write both backends' AOVs (as render --aov does) into DIR/gpu and DIR/cpu, and the CPU "
                      "reference's decision margin as DIR/cpu/margin.exr")
-        ->check(NotEmpty());
+        ->check(NotEmpty())
+        ->check(AovDirectoryName());
 }
 
 void addBenchCommand(CLI::App& app, CommandLine& line) {
@@ -263,7 +266,7 @@ void addDevicesCommand(CLI::App& app, CommandLine& line) {
 void defineCommandLine(CLI::App& app, CommandLine& line) {
     app.footer(kExitCodes);
     app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return std::string("hexray: error: ") + error.what() + "\nRun with --help for more information.\n";
+        return "hexray: error: " + printable(error.what()) + "\nRun with --help for more information.\n";
     });
     app.require_subcommand(1);
     app.fallthrough();  // the global options below are accepted after the subcommand too
@@ -383,7 +386,8 @@ int main(int argc, char** argv) {
     CommandLine line;
     defineCommandLine(app, line);
     if (const std::optional<std::string> word = unknownCommand(argc, argv, app)) {
-        printError("unknown command '" + *word + "' (the commands are " + kCommands + "; hexray --help describes them)");
+        printError("unknown command '" + printable(*word) + "' (the commands are " + kCommands +
+                   "; hexray --help describes them)");
         return kBadInput;
     }
     try {

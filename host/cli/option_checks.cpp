@@ -69,6 +69,16 @@ CLI::Validator NotEmpty() {
                           "");
 }
 
+CLI::Validator AovDirectoryName() {
+    return CLI::Validator(
+        [](std::string& text) {
+            return text != "-" ? std::string()
+                               : "an AOV set is several files (depth, normal, object id and each light's, with PNG "
+                                 "previews), which standard output cannot hold: name a directory";
+        },
+        "");
+}
+
 std::string tileProblem(const std::string& text) {
     const std::size_t slash = text.find('/');
     std::uint64_t index = 0;

@@ -41,6 +41,8 @@ CLI::Validator AnInteger() {
 CLI::Validator FiniteNumberBetween(double min, double max);
 CLI::Validator FiniteNumberAbove(double min);  // and below the largest double
 CLI::Validator NotEmpty();
+// An --aov directory: not "-", since an AOV set is several files.
+CLI::Validator AovDirectoryName();
 
 // "I/N": tile I of N, 0 <= I < N <= kMaxTiles; "" when `text` is one, else why not.
 std::string tileProblem(const std::string& text);

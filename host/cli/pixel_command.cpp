@@ -14,6 +14,7 @@
 #include "gpu/gpu_renderer.h"
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -316,7 +317,7 @@ int runPixel(const PixelOptions& options) {
         const bool useGpu = options.backend != PixelBackend::Cpu;
         const bool useCpu = options.backend != PixelBackend::Gpu;
 
-        std::printf("pixel (%u, %u) of %s (%ux%u), sample %u of %u\n", x, y, options.scenePath.c_str(),
+        std::printf("pixel (%u, %u) of %s (%ux%u), sample %u of %u\n", x, y, printable(options.scenePath).c_str(),
                     scene.image.width, scene.image.height, sample, scene.image.samplesPerPixel);
         const GpuPixelTrace shader = useGpu ? traceOnGpu(options, scene, log, x, y, sample) : GpuPixelTrace{};
         const CpuPixelExplanation reference = useCpu ? explainPixel(scene, x, y, sample) : CpuPixelExplanation{};

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "util/printable.h"
+
 namespace hexray::cli {
 namespace {
 
@@ -34,7 +36,7 @@ std::string timeLeft(double seconds) {
 }  // namespace
 
 Progress::Progress(std::string task, std::uint64_t total, Unit unit)
-    : task_(std::move(task)), total_(total), unit_(unit), shown_(shown()), start_(std::chrono::steady_clock::now()) {}
+    : task_(printable(task)), total_(total), unit_(unit), shown_(shown()), start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() {
     if (drawn_) {

@@ -23,6 +23,7 @@
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
 #include "tile/tile_stamp.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -231,6 +232,9 @@ std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallb
 }
 
 int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback) {
+    if (!target.problem.empty()) {
+        throw SceneError(printable(target.scenePath) + ": " + target.problem);
+    }
     const SceneRender job(options, target);
     std::optional<ImageRowWriter> writer;
     std::optional<StagedAovs> aovs;
@@ -245,7 +249,8 @@ int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSes
     if (aovs) {
         // Only now, so a failed render leaves the directory's earlier AOVs as they were.
         const std::size_t files = aovs->commit().size();
-        std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files, options.aovDirectory.c_str());
+        std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files,
+                    printable(options.aovDirectory).c_str());
     }
     return int(kSuccess);
 }
@@ -258,20 +263,26 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
     if (options.tile && !options.aovDirectory.empty()) {
         throw SceneError("--aov: AOVs are of the whole image, not of a tile");
     }
-    OutputPlan plan;
+    std::vector<const RenderTarget*> rendered;  // a directory that could not be searched fails alone, later
     for (const RenderTarget& target : targets) {
-        plan.addInput("the scene", target.scenePath);
+        if (target.problem.empty()) {
+            rendered.push_back(&target);
+        }
     }
-    for (const RenderTarget& target : targets) {
-        plan.addFile("-o", target.outputPath);
+    OutputPlan plan;
+    for (const RenderTarget* target : rendered) {
+        plan.addInput("the scene", target->scenePath);
+    }
+    for (const RenderTarget* target : rendered) {
+        plan.addFile("-o", target->outputPath);
     }
     if (!options.aovDirectory.empty()) {
         plan.addDirectory("--aov", options.aovDirectory, isAovFileName);
     }
     plan.check();
-    for (const RenderTarget& target : targets) {
-        if (!target.format) {
-            throw SceneError("-o " + target.outputPath + ": unknown image format (supported: " +
+    for (const RenderTarget* target : rendered) {
+        if (!target->format) {
+            throw SceneError("-o " + printable(target->outputPath) + ": unknown image format (supported: " +
                              kSupportedImageFormats + ")");
         }
     }
@@ -292,7 +303,7 @@ int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& ta
     }
     if (targets.size() > 1) {
         std::string names;
-        for (const std::string& name : failed) names += (names.empty() ? "; failed: " : ", ") + name;
+        for (const std::string& name : failed) names += (names.empty() ? "; failed: " : ", ") + printable(name);
         std::printf("rendered %zu of %zu scenes%s\n", targets.size() - failed.size(), targets.size(), names.c_str());
     }
     return firstFailure;

@@ -6,6 +6,7 @@
 #include "cli/scene_files.h"
 #include "io/output_error.h"
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
@@ -33,11 +34,11 @@ fs::path outputDirectory(const std::string& output, std::size_t scenes) {
         return "";
     }
     if (!namesDirectory(output)) {
-        throw SceneError("-o " + output + ": " + std::to_string(scenes) +
+        throw SceneError("-o " + printable(output) + ": " + std::to_string(scenes) +
                          " scenes are rendered into a directory, and this is not one");
     }
     if (!fs::is_directory(output, ignored)) {
-        throw OutputError("-o " + output + ": no such directory (the scenes' images go into it)");
+        throw OutputError("-o " + printable(output) + ": no such directory (the scenes' images go into it)");
     }
     return output;
 }
@@ -48,19 +49,24 @@ std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
     const std::vector<SceneFile> scenes = sceneFiles(options.scenePaths);
     const bool single = scenes.size() == 1 && !namesDirectory(options.outputPath);
     if (single && !options.outputPath.empty()) {
-        return {{scenes[0].path, options.outputPath, imageFormatFor(options.outputPath)}};
+        return {{scenes[0].path, options.outputPath, imageFormatFor(options.outputPath), scenes[0].problem}};
     }
     const fs::path directory = outputDirectory(options.outputPath, scenes.size());
     std::vector<RenderTarget> targets;
     std::map<std::string, std::string> sceneByOutput;
     for (const SceneFile& scene : scenes) {
+        if (!scene.problem.empty()) {
+            targets.push_back({scene.path, "", std::nullopt, scene.problem});
+            continue;
+        }
         const std::string output = (directory / defaultName(scene.path, options.tile)).string();
         const auto [earlier, added] = sceneByOutput.emplace(fs::path(output).lexically_normal().string(), scene.path);
         if (!added) {
-            throw SceneError("scenes " + earlier->second + " and " + scene.path + " would both be written to " +
-                             output + " (the image is named after the scene file): render them separately");
+            throw SceneError("scenes " + printable(earlier->second) + " and " + printable(scene.path) +
+                             " would both be written to " + printable(output) +
+                             " (the image is named after the scene file): render them separately");
         }
-        targets.push_back({scene.path, output, ImageFormat::Png});
+        targets.push_back({scene.path, output, ImageFormat::Png, ""});
     }
     return targets;
 }

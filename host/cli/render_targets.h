@@ -15,6 +15,7 @@ struct RenderTarget {
     std::string scenePath;
     std::string outputPath;
     std::optional<ImageFormat> format;  // none: an extension hexray does not write
+    std::string problem;                // a directory that could not be searched: no output (scene_files.h)
 };
 
 // The scenes named (directories expanded to their *.json files), each with its output: `-o` as

@@ -8,11 +8,18 @@ namespace hexray::cli {
 
 struct SceneFile {
     std::string path;
-    std::string name;  // for tables: the path under the directory given, without .json
+    std::string name;     // for tables: the path under the directory given, without .json
+    std::string problem;  // a directory that could not be searched: why (the entry then fails)
 };
 
-// The scene files named, with directories expanded to the *.json files under them (sorted by
-// name). Throws SceneError for a directory that cannot be read or holds no scene file.
+// The scene files named, with directories expanded to the files under them whose names end in
+// .json, in any case (sorted by name). A directory (given, or found inside one) that cannot be
+// read becomes an entry with its problem, so that the command reports it as a failed scene and
+// goes on with the others. Throws SceneError for a directory that holds no scene file and no
+// such problem.
 std::vector<SceneFile> sceneFiles(const std::vector<std::string>& paths);
+
+// Throws SceneError "<path>: <problem>" for an entry with a problem.
+void requireReadable(const SceneFile& file);
 
 }  // namespace hexray::cli

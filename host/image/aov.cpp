@@ -12,6 +12,7 @@
 #include "io/removed_on_signal.h"
 #include "io/stale_temporaries.h"
 #include "io/temporary_names.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -24,7 +25,7 @@ void removeQuietly(const fs::path& directory) {
 }
 
 [[noreturn]] void fail(const fs::path& path, const std::string& what, const std::string& why) {
-    throw OutputError(path.string() + ": " + what + ": " + why);
+    throw OutputError(printable(path.string()) + ": " + what + ": " + why);
 }
 
 }  // namespace

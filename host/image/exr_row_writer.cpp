@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -13,30 +14,33 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include "io/anonymous_file.h"
 #include "io/output_error.h"
 #include "io/output_file.h"
 
 namespace hexray {
 namespace {
 
-// OpenEXR's output stream over the OutputFile's stdio stream. It keeps a copy of what is written
-// while capturing (the header), so that a note's text can be found there again.
+// OpenEXR's output stream over a stdio stream: the OutputFile's own, or a scratch copy of it.
+// Failures throw the OutputFile's OutputError, `what` saying which was written. It keeps a copy
+// of what is written while capturing (the header), so that a note's text can be found there again.
 class StdioStream : public Imf::OStream {
 public:
-    explicit StdioStream(const OutputFile& file) : Imf::OStream(file.name().c_str()), file_(file) {}
+    StdioStream(std::FILE* stream, const OutputFile& file, std::string what)
+        : Imf::OStream(file.name().c_str()), stream_(stream), file_(file), what_(std::move(what)) {}
 
     void write(const char bytes[], int count) override {
         if (capturing && tellp() == captured.size()) {
             captured.append(bytes, std::size_t(count));
         }
-        if (std::fwrite(bytes, 1, std::size_t(count), file_.stream()) != std::size_t(count)) {
-            file_.fail("cannot write", std::strerror(errno));
+        if (std::fwrite(bytes, 1, std::size_t(count), stream_) != std::size_t(count)) {
+            file_.fail(what_, std::strerror(errno));
         }
     }
-    uint64_t tellp() override { return std::uint64_t(::ftello(file_.stream())); }
+    uint64_t tellp() override { return std::uint64_t(::ftello(stream_)); }
     void seekp(uint64_t position) override {
-        if (::fseeko(file_.stream(), off_t(position), SEEK_SET) != 0) {
-            file_.fail("cannot write", std::strerror(errno));
+        if (::fseeko(stream_, off_t(position), SEEK_SET) != 0) {
+            file_.fail(what_, std::strerror(errno));
         }
     }
 
@@ -44,8 +48,42 @@ public:
     std::string captured;  // the file's first bytes
 
 private:
+    std::FILE* stream_;
     const OutputFile& file_;
+    std::string what_;
 };
+
+// Where OpenEXR writes: the output itself where it can seek back (a regular file hexray
+// creates), else an unnamed scratch file, copied to the output once complete.
+FilePointer scratchCopyFor(const OutputFile& file) {
+    if (file.seekable()) {
+        return nullptr;
+    }
+    FilePointer scratch = openAnonymousFile();
+    if (!scratch) {
+        const std::string why = std::strerror(errno);
+        file.fail("cannot create output file",
+                  "no scratch file in " + scratchDirectory() + " (OpenEXR is written whole, then streamed): " + why);
+    }
+    return scratch;
+}
+
+// The scratch copy's bytes, from the start, to the output.
+void copyToOutput(std::FILE* scratch, const OutputFile& file) {
+    const std::string scratchWhat = "cannot write its scratch copy in " + scratchDirectory();
+    if (std::fflush(scratch) != 0 || std::ferror(scratch) || std::fseek(scratch, 0, SEEK_SET) != 0) {
+        file.fail(scratchWhat, std::strerror(errno));
+    }
+    std::vector<char> buffer(std::size_t{1} << 16);
+    while (const std::size_t count = std::fread(buffer.data(), 1, buffer.size(), scratch)) {
+        if (std::fwrite(buffer.data(), 1, count, file.stream()) != count) {
+            file.fail("cannot write", std::strerror(errno));
+        }
+    }
+    if (std::ferror(scratch)) {
+        file.fail(scratchWhat, std::strerror(errno));
+    }
+}
 
 // Where OpenEXR wrote `note`'s text: a string attribute is its name, NUL, "string", NUL, its
 // length (4 bytes, little-endian), then its text. npos unless exactly once in `header`.
@@ -77,8 +115,9 @@ Imf::Header headerFor(std::uint32_t width, std::uint32_t height, const std::vect
 }  // namespace
 
 struct ExrRowWriter::Encoder {
-    // Declared in this order so the encoder is released before the stream and the file.
+    // Declared in this order so the encoder is released before the stream and the files.
     OutputFile file;
+    FilePointer scratch;  // null where OpenEXR writes the file itself
     StdioStream stream;
     std::unique_ptr<Imf::OutputFile> exr;
     std::vector<std::string> channelNames;
@@ -89,7 +128,14 @@ struct ExrRowWriter::Encoder {
 
     Encoder(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, const std::vector<std::string>& names,
             const std::vector<ImageNote>& imageNotes)
-        : file(path.string()), stream(file), channelNames(names), notes(imageNotes), width(w), height(h) {}
+        : file(path.string()),
+          scratch(scratchCopyFor(file)),
+          stream(scratch ? scratch.get() : file.stream(), file,
+                 scratch ? "cannot write its scratch copy in " + scratchDirectory() : "cannot write"),
+          channelNames(names),
+          notes(imageNotes),
+          width(w),
+          height(h) {}
 
     // Overwrites the text of the note `replacement.key` in the header written.
     void replaceText(const ImageNote& replacement) {
@@ -162,6 +208,9 @@ void ExrRowWriter::finish(const std::vector<ImageNote>& replacements) {
     e.exr.reset();  // writes the offset table; a failed write there leaves the stream's error flag set
     for (const ImageNote& replacement : replacements) {
         e.replaceText(replacement);
+    }
+    if (e.scratch) {
+        copyToOutput(e.scratch.get(), e.file);
     }
     e.file.commit();
 }

@@ -1,10 +1,12 @@
 #pragma once
 // Writes a float OpenEXR file (32-bit channels, ZIP-compressed scanlines, through OpenEXR) a band
 // of rows at a time, so an image need never be whole in memory. The file is an OutputFile
-// (io/output_file.h): it appears at its path only when finish() succeeds. It must be a regular
-// file: the format's offset table is written last, by seeking back. The header, and so every
-// note, comes before the pixels; a text known only at the end (a digest of the pixels) is given
-// a placeholder of its length, replaced by finish() in place.
+// (io/output_file.h): it appears at its path only when finish() succeeds. The format's offset
+// table is written last, by seeking back: where the output cannot seek (standard output, a pipe,
+// a FIFO, a terminal, a device), the file is written to an unnamed scratch file
+// (io/anonymous_file.h) and its bytes streamed to the output by finish(). The header, and so
+// every note, comes before the pixels; a text known only at the end (a digest of the pixels) is
+// given a placeholder of its length, replaced by finish() in place.
 
 #include <cstdint>
 #include <filesystem>

@@ -11,9 +11,7 @@
 namespace hexray {
 
 std::optional<ImageFormat> imageFormatFor(const std::string& path) {
-    if (namesStandardOutput(path)) {
-        return ImageFormat::Png;
-    }
+    // The extension the user wrote decides, wherever the path leads: standard output included.
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
@@ -23,9 +21,12 @@ std::optional<ImageFormat> imageFormatFor(const std::string& path) {
     if (extension == ".exr") {
         return ImageFormat::Exr;
     }
+    if (!extension.empty()) {
+        return std::nullopt;
+    }
     struct stat status {};
-    if (extension.empty() && ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) &&
-        !S_ISDIR(status.st_mode)) {
+    const bool device = ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) && !S_ISDIR(status.st_mode);
+    if (device || namesStandardOutput(path)) {
         return ImageFormat::Png;
     }
     return std::nullopt;

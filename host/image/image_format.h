@@ -15,8 +15,9 @@ enum class ImageFormat {
 inline constexpr const char* kSupportedImageFormats =
     ".png (8-bit), .exr (linear float RGB), or - (PNG on standard output)";
 
-// .png or .exr (in any case); "-" and any path to standard output are PNG, and so is a path
-// without an extension that is not a regular file (/dev/null, a FIFO). nullopt for anything else.
+// .png or .exr (in any case), wherever the path leads (standard output, a FIFO); a path without
+// an extension that is "-", standard output (/dev/stdout) or not a regular file (/dev/null, a
+// FIFO) is PNG. nullopt for anything else.
 std::optional<ImageFormat> imageFormatFor(const std::string& path);
 
 // ".png" or ".exr".

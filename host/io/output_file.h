@@ -30,6 +30,10 @@ public:
     std::FILE* stream() const { return file_; }
     // The path as given, or "standard output", for messages.
     const std::string& name() const { return name_; }
+    // Whether the stream is a regular file of this object's own from its first byte (a new file
+    // or the temporary that replaces one), where a writer may seek back. Standard output (even
+    // a file), devices, FIFOs and terminals are written straight through, in order.
+    bool seekable() const { return !temporaryPath_.empty(); }
 
     // Flushes, syncs, closes and (for a regular file) renames into place; throws OutputError
     // on any failure.

@@ -9,6 +9,7 @@
 #include "io/output_error.h"
 #include "io/output_target.h"
 #include "io/standard_output.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -25,7 +26,7 @@ void requireCreatableDirectory(const std::string& option, const fs::path& path) 
     }
     const std::string why = unwritableDirectoryReason(existing);
     if (!why.empty()) {
-        throw OutputError(option + " " + path.string() + ": cannot create the directory: " + why);
+        throw OutputError(option + " " + printable(path.string()) + ": cannot create the directory: " + why);
     }
 }
 
@@ -94,7 +95,7 @@ void OutputPlan::checkWritable(const Output& output) {
 void OutputPlan::check() const {
     std::vector<Entry> outputs;
     for (const Output& output : outputs_) {
-        const std::string label = output.option + " " + output.path.string();
+        const std::string label = output.option + " " + printable(output.path.string());
         if (output.owns) {
             Entry directory;
             directory.label = label;
@@ -107,7 +108,7 @@ void OutputPlan::check() const {
     }
     for (const auto& [description, path] : inputs_) {
         if (::access(path.c_str(), F_OK) == 0) {
-            const Entry input = fileEntry(description + " " + path, path);
+            const Entry input = fileEntry(description + " " + printable(path), path);
             for (const Entry& output : outputs) {
                 checkPair(output, input);
             }

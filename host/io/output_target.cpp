@@ -8,6 +8,7 @@
 
 #include "io/output_error.h"
 #include "io/standard_output.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 constexpr int kMaxSymlinkHops = 40;  // as the kernel's ELOOP limit
 
 [[noreturn]] void refuse(const std::string& given, const std::string& why) {
-    throw OutputError(given + ": cannot create output file: " + why);
+    throw OutputError(printable(given) + ": cannot create output file: " + why);
 }
 
 void requireWritableDirectory(const std::string& given, const fs::path& directory) {
@@ -43,7 +44,7 @@ std::string unwritableDirectoryReason(const fs::path& directory) {
     } else if (::access(directory.c_str(), W_OK | X_OK) != 0) {
         error = errno;
     }
-    return error == 0 ? "" : "directory " + directory.string() + ": " + std::strerror(error);
+    return error == 0 ? "" : "directory " + printable(directory.string()) + ": " + std::strerror(error);
 }
 
 fs::path followSymlinks(const std::string& given) {

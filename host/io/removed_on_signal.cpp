@@ -33,7 +33,10 @@ struct Slot {
 std::array<Slot, kSlots> slots;
 std::mutex slotsMutex;  // serialises registration, never taken by the handler
 
-constexpr std::array<int, 7> kSignals = {SIGHUP, SIGINT, SIGQUIT, SIGPIPE, SIGTERM, SIGUSR1, SIGUSR2};
+// Every catchable signal whose default action ends the process, but the faults (see the header);
+// the real-time signals (SIGRTMIN..SIGRTMAX, not constants) are added where handlers are installed.
+constexpr std::array kSignals = {SIGHUP,  SIGINT,    SIGQUIT, SIGPIPE, SIGALRM, SIGTERM, SIGUSR1, SIGUSR2,
+                                 SIGSTKFLT, SIGIO, SIGPROF, SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR};
 
 // Empties a directory of hexray's flat staging layout and removes it, with system calls only
 // (opendir and readdir may allocate).
@@ -108,17 +111,26 @@ int createAndOpen(const char* path, RemovedOnSignal::Kind kind) {
     return descriptor;
 }
 
+// Only where the signal's action is the default: one the process ignores stays ignored, and one
+// it handles (a profiler's, a library's) is not taken from it.
+void installHandler(int signal) {
+    struct sigaction previous {};
+    if (::sigaction(signal, nullptr, &previous) != 0 || (previous.sa_flags & SA_SIGINFO) != 0 ||
+        previous.sa_handler != SIG_DFL) {
+        return;
+    }
+    struct sigaction action {};
+    action.sa_handler = removeAndDie;
+    sigfillset(&action.sa_mask);  // one handler at a time, whichever signals arrive
+    ::sigaction(signal, &action, nullptr);
+}
+
 void installHandlers() {
     for (const int signal : kSignals) {
-        struct sigaction previous {};
-        ::sigaction(signal, nullptr, &previous);
-        if (previous.sa_handler == SIG_IGN) {
-            continue;
-        }
-        struct sigaction action {};
-        action.sa_handler = removeAndDie;
-        sigfillset(&action.sa_mask);  // one handler at a time, whichever signals arrive
-        ::sigaction(signal, &action, nullptr);
+        installHandler(signal);
+    }
+    for (int signal = SIGRTMIN; signal <= SIGRTMAX; ++signal) {
+        installHandler(signal);
     }
 }
 

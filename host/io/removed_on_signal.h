@@ -1,9 +1,18 @@
 #pragma once
-// A temporary file or directory that is removed if a catchable signal that ends the process
-// (SIGHUP, SIGINT, SIGQUIT, SIGPIPE, SIGTERM, SIGUSR1, SIGUSR2) arrives while this object lives.
-// The process then dies of that signal as it would have. A signal the process ignores (nohup, a
-// background job) stays ignored. Destroying the object only unregisters the path: the owner
-// removes or renames it in the ordinary way.
+// A temporary file or directory that is removed if a signal that would end the process arrives
+// while this object lives: every catchable one whose default action is to terminate (SIGHUP,
+// SIGINT, SIGQUIT, SIGPIPE, SIGALRM, SIGTERM, SIGUSR1, SIGUSR2, SIGSTKFLT, SIGIO, SIGPROF,
+// SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR and the real-time signals), sent by a person, a scheduler,
+// a timer or a resource limit. The process then dies of that signal as it would have. A signal
+// the process ignores (nohup, a background job) stays ignored, and one it already handles (a
+// profiler's SIGPROF) keeps its handler.
+// Faults the program raises on itself (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGSYS, SIGTRAP)
+// keep their default action: they may come from corrupted memory, where the registered paths
+// cannot be trusted to name only temporaries, and a debugger, a sanitizer or a core dump wants
+// them untouched. What they leave, like what SIGKILL leaves, the next run removes
+// (stale_temporaries.h).
+// Destroying the object only unregisters the path: the owner removes or renames it in the
+// ordinary way.
 
 #include <memory>
 #include <string>

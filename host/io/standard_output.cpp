@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "io/output_error.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -32,7 +33,7 @@ bool namesStandardOutput(const std::string& path) {
 }
 
 std::string displayName(const std::string& path) {
-    return path == "-" ? "standard output" : path;
+    return path == "-" ? "standard output" : printable(path);
 }
 
 void reserveStandardOutputForData(const std::vector<std::string>& outputs) {

@@ -12,7 +12,8 @@ namespace hexray {
 // device (a terminal, /dev/null) is simply written directly.
 bool namesStandardOutput(const std::string& path);
 
-// `path` for messages: "standard output" for "-".
+// `path` for messages: "standard output" for "-", else the path with its control characters
+// escaped (util/printable.h).
 std::string displayName(const std::string& path);
 
 // If one of `outputs` names standard output, keeps standard output for data and sends what is

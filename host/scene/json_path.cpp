@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/printable.h"
+
 namespace hexray {
 namespace {
 
@@ -22,7 +24,7 @@ std::string quotedForMessage(const std::string& text) {
     const std::string shown = text.size() > kMaxShown ? text.substr(0, kMaxShown) : text;
     std::string result = Json(shown).dump(-1, ' ', false, Json::error_handler_t::replace);
     if (shown.size() < text.size()) result += "...";
-    return result;
+    return printable(result);  // JSON leaves DEL and C1 controls as they are
 }
 
 std::string childPath(const std::string& parent, const std::string& key) {

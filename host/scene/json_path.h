@@ -10,7 +10,8 @@ namespace hexray {
 // Longer user strings are cut in messages, so a huge key or name cannot flood the terminal.
 inline constexpr std::size_t kMaxShown = 40;
 
-// JSON-quoted (control characters and quotes stay readable) and cut to kMaxShown characters.
+// JSON-quoted (control characters and quotes stay readable, DEL and C1 controls escaped as by
+// util/printable.h) and cut to kMaxShown characters.
 std::string quotedForMessage(const std::string& text);
 
 // "camera" + "fov" -> camera.fov; a key like "my ball" becomes shaders["my ball"].

@@ -8,6 +8,7 @@
 
 #include "scene/json_path.h"
 #include "scene/scene_loader.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -137,7 +138,7 @@ public:
     bool parse_error(std::size_t /*position*/, const std::string& /*last token*/, const Json::exception& error) {
         if (const auto* syntax = dynamic_cast<const Json::parse_error*>(&error)) {
             throw SceneError(source_ + ":" + lineAndColumn(text_, syntax->byte) +
-                             ": JSON syntax error: " + parseErrorDetail(error.what()));
+                             ": JSON syntax error: " + printable(parseErrorDetail(error.what())));
         }
         throw SceneError(source_ + ": " + displayPath(pendingPath()) + ": must be a finite number (got " +
                          overflowingLiteral(error.what()) + ")");
@@ -298,9 +299,12 @@ private:
 
 // nlohmann's SAX parse of `text`, reporting progress if asked.
 bool saxParse(const std::string& text, DocumentBuilder& builder, const ParseProgress& progress) {
-    if (!progress) return Json::sax_parse(text, &builder);
+    // Comments (// and /* */) are read as whitespace: people annotate their scenes.
+    constexpr bool kStrict = true;
+    constexpr bool kIgnoreComments = true;
+    if (!progress) return Json::sax_parse(text, &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
     return Json::sax_parse(ProgressIterator(text, 0, &progress), ProgressIterator(text, text.size(), &progress),
-                           &builder);
+                           &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 #pragma once
 // The JSON layer of scene files: text to a document, rejecting what only the parser sees (a
 // syntax error at its line:column; a duplicate key, nesting deeper than 64 levels or a number
-// too large for a double at its JSON path) with a SceneError. Time and memory are linear in
-// the text.
+// too large for a double at its JSON path) with a SceneError. Comments (// to the end of the
+// line, /* ... */) are read as whitespace, and a UTF-8 byte order mark is skipped. Time and
+// memory are linear in the text.
 
 #include <cstddef>
 #include <functional>

@@ -21,6 +21,8 @@
 #include "scene/json_reader.h"
 #include "scene/node_reader.h"
 #include "scene/scene_json_parser.h"
+#include "scene/text_encoding.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -171,29 +173,33 @@ Scene readScene(const JsonReader& root, NodeReader&& nodes) {
 }
 
 [[noreturn]] void failToRead(const std::filesystem::path& path, int error) {
-    throw SceneError(path.string() + ": cannot read scene file: " + std::strerror(error));
+    throw SceneError(printable(path.string()) + ": cannot read scene file: " + std::strerror(error));
 }
 
 [[noreturn]] void failTooLarge(const std::filesystem::path& path) {
-    throw SceneError(path.string() + ": cannot read scene file: larger than " +
+    throw SceneError(printable(path.string()) + ": cannot read scene file: larger than " +
                      std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
 }
 
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& sourceName, const ParseProgress& progress) {
+    const std::string source = printable(sourceName);  // the name as every message shows it
+    if (const std::optional<std::string> problem = wideEncodingProblem(text)) {
+        throw SceneError(source + ": " + *problem);
+    }
     // Valid files take the shortcut; a file with a node it declines is parsed again the general way.
     {
-        NodeReader nodes(sourceName);
+        NodeReader nodes(source);
         UsualNodeShortcut shortcut(nodes);
-        if (const std::optional<Json> document = parseSceneJson(text, sourceName, shortcut, progress)) {
-            return readScene(JsonReader(*document, sourceName, ""), std::move(nodes));
+        if (const std::optional<Json> document = parseSceneJson(text, source, shortcut, progress)) {
+            return readScene(JsonReader(*document, source, ""), std::move(nodes));
         }
     }
-    NodeReader nodes(sourceName);
+    NodeReader nodes(source);
     const auto takeNode = [&nodes](const Json& element, std::size_t index) { nodes.read(element, index); };
-    const Json document = parseSceneJson(text, sourceName, takeNode, progress);
-    return readScene(JsonReader(document, sourceName, ""), std::move(nodes));
+    const Json document = parseSceneJson(text, source, takeNode, progress);
+    return readScene(JsonReader(document, source, ""), std::move(nodes));
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {

@@ -1,5 +1,7 @@
 #pragma once
-// Reads scene files (JSON) into the scene model, rejecting anything the renderers cannot use.
+// Reads scene files (UTF-8 JSON, comments allowed) into the scene model, rejecting anything the
+// renderers cannot use. Messages name the source with its control characters escaped
+// (util/printable.h).
 
 #include <cstdint>
 #include <filesystem>

@@ -6,6 +6,7 @@
 #include "image/exr_row_writer.h"
 #include "image/image_io.h"
 #include "io/open_file_limit.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -62,13 +63,13 @@ void ensureDescriptorsFor(std::size_t pieces) {
 
 TilePiece openPiece(const std::string& path, ImageFormat format) {
     if (imageFormatFor(path) != format) {
-        throw TileError(path + ": not a " + formatName(format) + " file (" + extensionOf(format) +
+        throw TileError(printable(path) + ": not a " + formatName(format) + " file (" + extensionOf(format) +
                         "), as the merged image is");
     }
     try {
         return TilePiece(ReadOnlyFile(path), format);
     } catch (const InputError& error) {
-        throw TileError(error.what());
+        throw TileError(printable(error.what()));
     }
 }
 
@@ -120,15 +121,15 @@ std::vector<TilePiece> openPieces(const std::vector<std::string>& paths, ImageFo
             slots.resize(first->tile.count);
         }
         if (!piece.stamp().sameImage(*first)) {
-            throw TileError(path + ": a tile of another image than " + firstPath + ": " +
-                            differences(piece.stamp(), *first));
+            throw TileError(printable(path) + ": a tile of another image than " + printable(firstPath) + ": " +
+                            printable(differences(piece.stamp(), *first)));
         }
         std::optional<TilePiece>& slot = slots[piece.stamp().tile.index];
         if (slot && slot->name() == path) {
-            throw TileError(path + ": given twice");
+            throw TileError(printable(path) + ": given twice");
         }
         if (slot) {
-            throw TileError(path + ": overlaps " + slot->name() + " (both are " + tileText(piece.stamp()) + ")");
+            throw TileError(printable(path) + ": overlaps " + printable(slot->name()) + " (both are " + tileText(piece.stamp()) + ")");
         }
         slot = std::move(piece);
     }
@@ -137,7 +138,7 @@ std::vector<TilePiece> openPieces(const std::vector<std::string>& paths, ImageFo
         if (!slots[index]) {
             TileStamp missing = *first;
             missing.tile.index = index;
-            throw TileError("missing " + tileText(missing) + " of the image " + firstPath + " belongs to");
+            throw TileError("missing " + tileText(missing) + " of the image " + printable(firstPath) + " belongs to");
         }
         ordered.push_back(std::move(*slots[index]));
     }
@@ -149,7 +150,7 @@ void mergePieces(const std::string& output, std::vector<TilePiece>& tiles) {
         throw TileError("no pieces to merge");
     }
     if (imageFormatFor(output) != tiles.front().format()) {
-        throw TileError(output + ": not a " + formatName(tiles.front().format()) + " file (" +
+        throw TileError(printable(output) + ": not a " + formatName(tiles.front().format()) + " file (" +
                         extensionOf(tiles.front().format()) + "), as the pieces are");
     }
     try {
@@ -159,14 +160,14 @@ void mergePieces(const std::string& output, std::vector<TilePiece>& tiles) {
             mergePngs(output, tiles);
         }
     } catch (const ImageIoError& error) {
-        throw TileError(error.what());  // a piece damaged past its header
+        throw TileError(printable(error.what()));  // a piece damaged past its header
     }
 }
 
 TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& paths) {
     const std::optional<ImageFormat> format = imageFormatFor(output);
     if (!format) {
-        throw TileError(output + ": unknown image format (supported: " + kSupportedImageFormats + ")");
+        throw TileError(printable(output) + ": unknown image format (supported: " + kSupportedImageFormats + ")");
     }
     std::vector<TilePiece> tiles = openPieces(paths, *format);
     mergePieces(output, tiles);

@@ -8,6 +8,7 @@
 #include "image/image_io.h"
 #include "image/pixel_digest.h"
 #include "image/png_row_reader.h"
+#include "util/printable.h"
 
 namespace hexray {
 namespace {
@@ -25,9 +26,9 @@ decltype(auto) refusingBadInput(Call&& call) {
     try {
         return call();
     } catch (const ImageIoError& error) {
-        throw TileError(error.what());
+        throw TileError(printable(error.what()));
     } catch (const InputError& error) {
-        throw TileError(error.what());
+        throw TileError(printable(error.what()));
     }
 }
 
@@ -39,18 +40,19 @@ std::string rowsText(const TileStamp& stamp) {
 // The stamp in `header`, checked: well formed, within the renderer's limits, and of the header's size.
 TileStamp checkedStamp(const std::string& name, const PieceHeader& header) {
     if (!header.stamp) {
-        throw TileError(name + ": not a piece of a tiled render (no " + kTileStampKey +
+        throw TileError(printable(name) + ": not a piece of a tiled render (no " + kTileStampKey +
                         " stamp: render pieces with --tile I/N)");
     }
     const std::optional<TileStamp> stamp = parseTileStamp(*header.stamp);
     if (!stamp) {
-        throw TileError(name + ": its " + kTileStampKey + " stamp is damaged (\"" + *header.stamp + "\")");
+        throw TileError(printable(name) + ": its " + kTileStampKey + " stamp is damaged (\"" +
+                        printable(*header.stamp) + "\")");
     }
     if (const std::optional<std::string> problem = beyondRendererLimits(*stamp)) {
-        throw TileError(name + ": " + *problem);
+        throw TileError(printable(name) + ": " + *problem);
     }
     if (header.width != stamp->width || header.height != stamp->rows().count) {
-        throw TileError(name + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+        throw TileError(printable(name) + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) +
                         " pixels, but its stamp says " + rowsText(*stamp) + " of " + std::to_string(stamp->width) +
                         "x" + std::to_string(stamp->height));
     }
@@ -99,7 +101,7 @@ TilePiece::Reading& TilePiece::reading() {
             [&] { return std::make_unique<Reading>(file_, format_, stampText_, rowCount()); });
         const PieceHeader header = refusingBadInput([&] { return reading_->header(); });
         if (header.stamp != stampText_ || header.width != stamp_.width || header.height != rowCount()) {
-            throw TileError(name() + ": changed while being merged (its header is not the one checked)");
+            throw TileError(printable(name()) + ": changed while being merged (its header is not the one checked)");
         }
     }
     return *reading_;
@@ -135,12 +137,12 @@ void TilePiece::verify() {
     const std::optional<std::string> recorded = refusingBadInput(
         [&] { return r.png ? r.png->textAfterPixels(kTileDigestKey) : r.exr->stringAttribute(kTileDigestKey); });
     if (!recorded) {
-        throw TileError(name() + ": no " + kTileDigestKey + " checksum " +
+        throw TileError(printable(name()) + ": no " + kTileDigestKey + " checksum " +
                         (r.png ? "after its pixels" : "in its header") +
                         " (a piece of an older hexray, or cut short): render it again");
     }
     if (*recorded != r.digest.hex()) {
-        throw TileError(name() + ": its pixels are not the ones it was rendered with (their SHA-256 is not the " +
+        throw TileError(printable(name()) + ": its pixels are not the ones it was rendered with (their SHA-256 is not the " +
                         kTileDigestKey + " it records): it was changed or damaged; render it again");
     }
     reading_.reset();

@@ -1,5 +1,8 @@
 // `hexray render` of several scenes in one process: an image each, named after its scene,
-// collisions refused before any work, a failed scene reported while the others render.
+// collisions refused before any work, a failed scene (or a directory that cannot be searched)
+// reported while the others render.
+
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -100,6 +103,48 @@ TEST_F(CliTest, AFailedSceneIsReportedTheOthersStillRenderAndTheExitCodeIsTheFir
     EXPECT_NE(run.err.find("missing.json: cannot read scene file"), std::string::npos) << run.err;
     EXPECT_NE(run.out.find("rendered 2 of 4 scenes; failed: bad.json, missing.json"), std::string::npos) << run.out;
     EXPECT_EQ(createdFiles(), std::vector<std::string>({"constant-debug.png", "lecture-demo.png"}));
+}
+
+// scenes/a.json, scenes/B.JSON, and scenes/locked/c.json in a directory hexray may not read.
+class SceneDirectoryTest : public CliTest {
+protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        fs::create_directories(dir_ / "scenes" / "locked");
+        fs::copy_file(test::sourcePath("scenes/lecture-demo.json"), dir_ / "scenes" / "a.json");
+        fs::copy_file(test::sourcePath("scenes/constant-debug.json"), dir_ / "scenes" / "B.JSON");
+        fs::copy_file(test::sourcePath("scenes/constant-debug.json"), dir_ / "scenes" / "locked" / "c.json");
+        fs::permissions(dir_ / "scenes" / "locked", fs::perms::none);
+    }
+    void TearDown() override {
+        fs::permissions(dir_ / "scenes" / "locked", fs::perms::owner_all);
+        CliTest::TearDown();
+    }
+
+    // Runs hexray without root's power to read any directory.
+    RunResult hexrayUnprivileged(const std::string& arguments) const {
+        return hexray(arguments, ::geteuid() == 0 ? "setpriv --bounding-set=-dac_override,-dac_read_search" : "");
+    }
+};
+
+TEST_F(SceneDirectoryTest, RenderReportsADirectoryItCannotReadAsAFailedSceneAndRendersTheRest) {
+    const RunResult run = hexrayUnprivileged("render scenes --backend cpu" + std::string(kSize));
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("scenes/locked: cannot read the directory: Permission denied"), std::string::npos)
+        << run.err;
+    EXPECT_NE(run.out.find("rendered 2 of 3 scenes; failed: scenes/locked"), std::string::npos) << run.out;
+    EXPECT_EQ(createdFiles(), std::vector<std::string>({"B.png", "a.png", "scenes"}));
+}
+
+TEST_F(SceneDirectoryTest, CompareReportsADirectoryItCannotReadAsAFailedRow) {
+    const RunResult run = hexrayUnprivileged("compare scenes" + std::string(kSize));
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("scenes/locked: cannot read the directory: Permission denied"), std::string::npos)
+        << run.err;
+    for (const char* row : {"| a ", "| B ", "| locked "}) {
+        EXPECT_NE(run.out.find(row), std::string::npos) << row << "\n" << run.out;
+    }
+    EXPECT_NE(run.out.find("FAIL"), std::string::npos) << run.out;
 }
 
 TEST_F(CliTest, WithoutAUsableGpuEveryScenesFallsBackToTheCpuAfterOneNote) {

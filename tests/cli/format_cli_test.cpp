@@ -1,5 +1,8 @@
 // Output formats chosen by the output's extension: 8-bit PNG, linear float OpenEXR (the values
-// before encoding), PNG on standard output for "-", and an error naming the supported ones.
+// before encoding), PNG on standard output for "-", and an error naming the supported ones. A
+// name's extension holds wherever it leads: to standard output, a pipe or a FIFO.
+
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <string>
@@ -70,6 +73,44 @@ TEST_F(CliTest, ExtensionsAreReadInAnyCaseAndMinusIsAPngOnStandardOutput) {
                                 " --width 20 --height 10 -o - > piped.png");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(readPng(dir_ / "piped.png").height, 10u);
+}
+
+// Whether `path` holds the OpenEXR image `expected` does, value for value.
+void expectSameExr(const fs::path& path, const fs::path& expected) {
+    const ExrImage image = readExr(path);
+    const ExrImage reference = readExr(expected);
+    EXPECT_EQ(image.width, reference.width) << path;
+    EXPECT_EQ(image.height, reference.height) << path;
+    EXPECT_EQ(image.channels, reference.channels) << path;
+}
+
+TEST_F(CliTest, AnExrNameThatIsStandardOutputGetsOpenExrThroughAFileAPipeOrAFifo) {
+    writeScene("bright.json", kBrightScene);
+    ASSERT_EQ(hexray("render bright.json -o reference.exr").exitCode, 0);
+    // The file standard output is redirected to.
+    RunResult run = shell("\"$HEXRAY\" render bright.json -o same.exr > same.exr");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("wrote same.exr (16x12)"), std::string::npos) << run.err;
+    expectSameExr(dir_ / "same.exr", dir_ / "reference.exr");
+    // A link to standard output that is a pipe: nothing to seek back in.
+    fs::create_symlink("/proc/self/fd/1", dir_ / "link.exr");
+    run = shell("(\"$HEXRAY\" render bright.json -o link.exr; echo $? > code.txt) | cat > piped.exr");
+    EXPECT_EQ(test::readFile(dir_ / "code.txt"), "0\n") << run.err;
+    expectSameExr(dir_ / "piped.exr", dir_ / "reference.exr");
+    // A FIFO.
+    ASSERT_EQ(::mkfifo((dir_ / "fifo.exr").c_str(), 0644), 0);
+    run = shell("timeout 60 cat fifo.exr > from-fifo.exr & \"$HEXRAY\" render bright.json -o fifo.exr; code=$?; wait; "
+                "exit $code");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    expectSameExr(dir_ / "from-fifo.exr", dir_ / "reference.exr");
+    EXPECT_TRUE(fs::is_fifo(fs::symlink_status(dir_ / "fifo.exr")));
+    // merge alike.
+    for (const char* tile : {"0", "1"}) {
+        ASSERT_EQ(hexray(std::string("render bright.json --tile ") + tile + "/2 -o piece" + tile + ".exr").exitCode, 0);
+    }
+    run = shell("\"$HEXRAY\" merge merged.exr piece0.exr piece1.exr > merged.exr");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    expectSameExr(dir_ / "merged.exr", dir_ / "reference.exr");
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 
 #include "cli/cli_fixture.h"
 #include "image/image_io.h"
+#include "support/terminating_signals.h"
 
 namespace hexray {
 namespace {
@@ -234,6 +235,17 @@ TEST_F(OutputCliTest, AnUnwritableOutputPathFailsBeforeTheWork) {
     }
 }
 
+TEST_F(OutputCliTest, AnAovSetCannotGoToStandardOutput) {
+    const std::string demo = scene("lecture-demo.json") + " --width 8 --height 8";
+    for (const std::string& command : {"render " + demo + " -o x.png --aov -", "compare " + demo + " --aov -"}) {
+        const RunResult run = hexray(command);
+        EXPECT_EQ(run.exitCode, 2) << command << "\n" << run.err;
+        EXPECT_NE(run.err.find("--aov: an AOV set is several files"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("standard output"), std::string::npos) << run.err;
+        EXPECT_EQ(createdFiles(), std::vector<std::string>{}) << command;
+    }
+}
+
 // ---------------------------------------------------------------- signals
 
 class SignalCliTest : public OutputCliTest, public ::testing::WithParamInterface<int> {
@@ -259,9 +271,19 @@ TEST_P(SignalCliTest, ARenderEndedBySignalLeavesTheOldImageAndNoTemporaryFile) {
     EXPECT_EQ(createdFiles(), std::vector<std::string>{"big.png"});
 }
 
-INSTANTIATE_TEST_SUITE_P(CatchableSignals, SignalCliTest,
-                         ::testing::Values(SIGHUP, SIGINT, SIGQUIT, SIGPIPE, SIGTERM, SIGUSR1, SIGUSR2),
-                         [](const auto& info) { return std::string(sigabbrev_np(info.param)); });
+// Every one but the real-time signals between the first and the last (the unit test has them all).
+std::vector<int> signalsToSend() {
+    std::vector<int> signals;
+    for (const int signal : test::catchableTerminatingSignals()) {
+        if (signal <= SIGRTMIN || signal == SIGRTMAX) {
+            signals.push_back(signal);
+        }
+    }
+    return signals;
+}
+
+INSTANTIATE_TEST_SUITE_P(CatchableSignals, SignalCliTest, ::testing::ValuesIn(signalsToSend()),
+                         [](const auto& info) { return test::signalTestName(info.param); });
 
 TEST_F(OutputCliTest, ASignalDuringAovStagingLeavesNoStagingDirectory) {
     const pid_t pid = startLongRender(true);

@@ -104,13 +104,16 @@ inline std::optional<std::string> sceneInvariantViolation(const Scene& scene) {
     return std::nullopt;
 }
 
-// Whether a rejection message has the promised shape: "SOURCE:LINE:COLUMN: JSON syntax error: ..."
-// or "SOURCE: PATH: REASON", PATH being (root) or a JSON path such as nodes[3].geometry.radius.
+// Whether a rejection message has the promised shape: "SOURCE:LINE:COLUMN: JSON syntax error: ...",
+// "SOURCE: PATH: REASON", PATH being (root) or a JSON path such as nodes[3].geometry.radius, or,
+// for text in another encoding than UTF-8, "SOURCE: the file is ENCODING text, ...".
 inline bool rejectionNamesPlace(const std::string& message, const std::string& source) {
     if (message.rfind(source + ":", 0) != 0) return false;
     const std::string rest = message.substr(source.size() + 1);
     const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
     const auto hasReasonAfter = [&](std::size_t at) { return at < rest.size() && rest[at] != ' '; };
+    const std::string kEncoding = " the file is UTF-";
+    if (rest.compare(0, kEncoding.size(), kEncoding) == 0) return hasReasonAfter(kEncoding.size());
     // LINE:COLUMN
     std::size_t i = 0;
     while (i < rest.size() && isDigit(rest[i])) ++i;

@@ -1,9 +1,11 @@
-// Registered temporaries go when a catchable signal ends the process, which then dies of it.
+// Registered temporaries go when a catchable signal ends the process, which then dies of it; a
+// handler the process already has is kept, and faults are left to their default action.
 
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +15,7 @@
 
 #include "io/removed_on_signal.h"
 #include "support/temporary_directory_test.h"
+#include "support/terminating_signals.h"
 
 namespace hexray {
 namespace {
@@ -59,9 +62,46 @@ TEST_P(EachSignal, RemovesTheFilesAndDirectoriesRegisteredAndDiesOfTheSignal) {
     EXPECT_TRUE(fs::exists(dir_ / "kept.png"));
 }
 
-INSTANTIATE_TEST_SUITE_P(CatchableSignals, EachSignal,
-                         ::testing::Values(SIGHUP, SIGINT, SIGQUIT, SIGPIPE, SIGTERM, SIGUSR1, SIGUSR2),
-                         [](const auto& info) { return std::string(sigabbrev_np(info.param)); });
+INSTANTIATE_TEST_SUITE_P(CatchableSignals, EachSignal, ::testing::ValuesIn(test::catchableTerminatingSignals()),
+                         [](const auto& info) { return test::signalTestName(info.param); });
+
+std::atomic<int> handled{0};
+extern "C" void countSignal(int) { handled.fetch_add(1); }
+
+TEST_F(RemovedOnSignalTest, AHandlerTheProcessAlreadyHasIsKept) {
+    std::ofstream(dir_ / "partial.png") << "partial";
+    // A profiler's SIGPROF, or a program's own SIGUSR1: the signal is theirs, not an end.
+    for (const int signal : {SIGUSR1, SIGPROF}) {
+        const int status = inChildRaising(SIGKILL, [&] {
+            struct sigaction action {};
+            action.sa_handler = countSignal;
+            ::sigaction(signal, &action, nullptr);
+            static RemovedOnSignal file((dir_ / "partial.png").string(), RemovedOnSignal::Kind::File);
+            std::raise(signal);
+            ::_exit(handled.load() == 1 ? 0 : 1);
+        });
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << sigabbrev_np(signal) << ": status " << status;
+        EXPECT_TRUE(fs::exists(dir_ / "partial.png")) << sigabbrev_np(signal);
+    }
+}
+
+TEST_F(RemovedOnSignalTest, FaultsKeepTheirDefaultAction) {
+    // A fault may come from corrupted memory, where the paths themselves cannot be trusted; a
+    // debugger, a sanitizer or a core dump wants it untouched. What it leaves, the next run removes.
+    const int status = inChildRaising(SIGKILL, [&] {
+        static RemovedOnSignal file((dir_ / "partial.png").string(), RemovedOnSignal::Kind::File);
+        for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGSYS, SIGTRAP}) {
+            struct sigaction action {};
+            ::sigaction(signal, nullptr, &action);
+            if (action.sa_handler != SIG_DFL) {
+                ::_exit(signal);
+            }
+        }
+        ::_exit(0);
+    });
+    EXPECT_TRUE(WIFEXITED(status)) << "status " << status;
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "this fault has a handler: " << sigabbrev_np(WEXITSTATUS(status));
+}
 
 }  // namespace
 }  // namespace hexray

@@ -324,6 +324,60 @@ TEST(SceneLoaderRejects, LongKeysAreCutInMessages) {
               "test.json: image[\"" + std::string(40, 'k') + "\"...]: unknown key (allowed: encoding, height, sampling, spp, width)");
 }
 
+// ---------------------------------------------------------------- text encodings and comments
+
+// `text` (ASCII) in a wider encoding: each character `width` bytes, little- or big-endian.
+std::string widened(const std::string& text, int width, bool littleEndian) {
+    std::string wide;
+    for (const char c : text) {
+        std::string unit(std::size_t(width), '\0');
+        unit[littleEndian ? 0 : std::size_t(width - 1)] = c;
+        wide += unit;
+    }
+    return wide;
+}
+
+TEST(SceneLoaderRejects, Utf16AndUtf32WithOrWithoutAByteOrderMarkByName) {
+    struct Case {
+        const char* bom;
+        int width;
+        bool littleEndian;
+        const char* name;
+        const char* iconvName;
+    };
+    for (const Case& c : {Case{"\xFF\xFE", 2, true, "UTF-16 (little-endian)", "UTF-16LE"},
+                          Case{"\xFE\xFF", 2, false, "UTF-16 (big-endian)", "UTF-16BE"},
+                          Case{"\xFF\xFE\0\0", 4, true, "UTF-32 (little-endian)", "UTF-32LE"},
+                          Case{"\0\0\xFE\xFF", 4, false, "UTF-32 (big-endian)", "UTF-32BE"}}) {
+        const std::string bom(c.bom, std::size_t(c.width));
+        for (const std::string& text : {bom + widened(kValidScene, c.width, c.littleEndian),
+                                        widened(kValidScene, c.width, c.littleEndian)}) {
+            EXPECT_EQ(errorFor(text), std::string("test.json: the file is ") + c.name +
+                                          " text, and scene files are UTF-8: convert it, e.g. with iconv -f " +
+                                          c.iconvName + " -t UTF-8");
+        }
+    }
+}
+
+TEST(SceneLoader, AcceptsAUtf8ByteOrderMarkAndCountsNoColumnForIt) {
+    const Scene scene = parseScene("\xEF\xBB\xBF" + kValidScene, "test.json");
+    EXPECT_EQ(scene.image.width, 8u);
+    EXPECT_EQ(errorFor("\xEF\xBB\xBF{]"), "test.json:1:2: JSON syntax error: syntax error while parsing object key - "
+                                          "unexpected ']'; expected string literal");
+}
+
+TEST(SceneLoader, LineAndBlockCommentsAreIgnored) {
+    const std::string commented = validSceneWith(R"("image": {"width": 8, "height": 6},)",
+                                                 "// the image\n  \"image\": {\"width\": /* small */ 8, \"height\": 6},"
+                                                 " /* a block\n  over lines */");
+    const Scene scene = parseScene("/* first */" + commented + "\n// last", "test.json");
+    EXPECT_EQ(scene.image.width, 8u);
+    EXPECT_EQ(scene.nodes.size(), 1u);
+    EXPECT_EQ(errorFor("{\n  /* never closed"),
+              "test.json:2:18: JSON syntax error: syntax error while parsing object key - invalid comment; missing "
+              "closing '*/'; last read: '{<U+000A>  /* never closed'; expected string literal");
+}
+
 // ---------------------------------------------------------------- structure and types
 
 TEST(SceneLoaderRejects, RootThatIsNotAnObject) {
