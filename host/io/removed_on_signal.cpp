@@ -9,9 +9,13 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "io/temporary_names.h"
 
@@ -163,6 +167,23 @@ RemovedOnSignal::~RemovedOnSignal() {
     }
 }
 
+namespace {
+
+// The test hook described in the header: read once per process.
+std::optional<RemovedOnSignal::Kind> stopAtTemporaryKind() {
+    static const std::optional<RemovedOnSignal::Kind> kind = []() -> std::optional<RemovedOnSignal::Kind> {
+        const char* value = std::getenv("HEXRAY_TEST_STOP_AT_TEMPORARY");
+        const std::string text = value ? value : "";
+        if (text.empty()) return std::nullopt;
+        if (text == "file") return RemovedOnSignal::Kind::File;
+        if (text == "directory") return RemovedOnSignal::Kind::Directory;
+        throw std::invalid_argument("HEXRAY_TEST_STOP_AT_TEMPORARY: \"" + text + "\" is neither file nor directory");
+    }();
+    return kind;
+}
+
+}  // namespace
+
 RegisteredTemporary createTemporary(const std::string& pattern, RemovedOnSignal::Kind kind) {
     constexpr int kAttempts = 100;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
@@ -173,6 +194,9 @@ RegisteredTemporary createTemporary(const std::string& pattern, RemovedOnSignal:
         temporary.removal = std::make_unique<RemovedOnSignal>(temporary.path, kind);
         temporary.descriptor = createAndOpen(temporary.path.c_str(), kind);
         if (temporary.descriptor >= 0) {
+            if (stopAtTemporaryKind() == kind) {
+                std::raise(SIGSTOP);
+            }
             return temporary;
         }
         if (errno != EEXIST) {

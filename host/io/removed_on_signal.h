@@ -42,6 +42,9 @@ struct RegisteredTemporary {
 
 // Creates a file (mode 0600) or directory (0700) named by `pattern`, whose trailing "XXXXXX" is
 // randomised (see temporary_names.h), retrying while the name is taken.
+// Test hook: with HEXRAY_TEST_STOP_AT_TEMPORARY=file (or =directory) the process stops itself
+// (SIGSTOP) once such a temporary exists, so a test can signal it at that point whatever the
+// machine's speed; any other non-empty value throws std::invalid_argument.
 RegisteredTemporary createTemporary(const std::string& pattern, RemovedOnSignal::Kind kind);
 
 }  // namespace hexray

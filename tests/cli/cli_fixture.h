@@ -9,13 +9,11 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -64,8 +62,9 @@ protected:
     }
 
     // Starts hexray in the test's directory with every signal at its default action (a shell's
-    // background job would ignore SIGINT and SIGQUIT); stdout and stderr go to the usual files.
-    pid_t start(const std::vector<std::string>& arguments) const {
+    // background job would ignore SIGINT and SIGQUIT) and `environment` ("NAME=value") added to
+    // this process's; stdout and stderr go to the usual files.
+    pid_t start(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {}) const {
         std::vector<std::string> words = {HEXRAY_EXECUTABLE};
         words.insert(words.end(), arguments.begin(), arguments.end());
         std::vector<char*> argv;
@@ -89,23 +88,19 @@ protected:
         posix_spawnattr_setsigmask(&attributes, &none);
         posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
         pid_t pid = -1;
-        const int error = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
+        std::vector<std::string> variables(environment);
+        for (char** variable = environ; *variable; ++variable) {
+            variables.emplace_back(*variable);
+        }
+        std::vector<char*> envp;
+        for (std::string& variable : variables) {
+            envp.push_back(variable.data());
+        }
+        envp.push_back(nullptr);
+        const int error = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), envp.data());
         posix_spawn_file_actions_destroy(&actions);
         posix_spawnattr_destroy(&attributes);
         return error == 0 ? pid : -1;
-    }
-
-    // Whether an entry whose name starts with `prefix` appears in `directory` within `timeout`.
-    static bool waitForEntry(const fs::path& directory, const std::string& prefix,
-                             std::chrono::seconds timeout = std::chrono::seconds(120)) {
-        const auto deadline = std::chrono::steady_clock::now() + timeout;
-        while (std::chrono::steady_clock::now() < deadline) {
-            if (!entriesStartingWith(directory, prefix).empty()) {
-                return true;
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        }
-        return false;
     }
 
     static std::vector<std::string> entriesStartingWith(const fs::path& directory, const std::string& prefix) {

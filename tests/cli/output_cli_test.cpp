@@ -61,15 +61,31 @@ protected:
     // The hidden entries (temporary files and directories) in `directory`.
     static std::vector<std::string> hidden(const fs::path& directory) { return entriesStartingWith(directory, "."); }
 
-    // Starts a render of several seconds to big.png (or with --aov into aov/).
-    pid_t startLongRender(bool aov = false) const {
+    // Starts a render to big.png (or with --aov into aov/) and returns once it has stopped itself
+    // with its temporary file (or AOV staging directory) in place: the test hook of
+    // io/removed_on_signal.h, so what the test then sends finds the render at that point on any
+    // machine, however fast or loaded. -1 if it did not stop there.
+    pid_t startStoppedRender(bool aov = false) const {
         std::vector<std::string> arguments = {"render", test::sourcePath("scenes/lecture-demo.json").string(),
-                                              "-o", "big.png", "--width", "8192", "--height", "8192", "--spp", "2"};
+                                              "-o", "big.png", "--width", "64", "--height", "48"};
         if (aov) {
-            arguments = {"render", test::sourcePath("scenes/lecture-demo.json").string(), "-o", "big.png",
-                         "--width", "4096", "--height", "4096", "--aov", "aov"};
+            arguments.insert(arguments.end(), {"--aov", "aov"});
         }
-        return start(arguments);
+        const pid_t pid =
+            start(arguments, {std::string("HEXRAY_TEST_STOP_AT_TEMPORARY=") + (aov ? "directory" : "file")});
+        int status = 0;
+        if (pid < 0 || ::waitpid(pid, &status, WUNTRACED) != pid || !WIFSTOPPED(status)) {
+            return -1;
+        }
+        return pid;
+    }
+
+    // Sends `signal` to a process stopped by startStoppedRender, lets it go on, and returns how it ended.
+    static int signalStopped(pid_t pid, int signal) {
+        ::kill(pid, signal);
+        ::kill(pid, SIGCONT);
+        int status = 0;
+        return ::waitpid(pid, &status, 0) == pid ? status : -1;
     }
 };
 
@@ -260,12 +276,10 @@ protected:
 TEST_P(SignalCliTest, ARenderEndedBySignalLeavesTheOldImageAndNoTemporaryFile) {
     const int signal = GetParam();
     std::ofstream(dir_ / "big.png") << "keep me";
-    const pid_t pid = startLongRender();
-    ASSERT_GT(pid, 0);
-    ASSERT_TRUE(waitForEntry(dir_, ".")) << "no temporary file appeared";
-    ::kill(pid, signal);
-    int status = 0;
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    const pid_t pid = startStoppedRender();
+    ASSERT_GT(pid, 0) << "the render did not stop at its temporary file";
+    ASSERT_EQ(hidden(dir_).size(), 1u);
+    const int status = signalStopped(pid, signal);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "status " << status;
     EXPECT_EQ(readFile(dir_ / "big.png"), "keep me");
     EXPECT_EQ(createdFiles(), std::vector<std::string>{"big.png"});
@@ -286,23 +300,19 @@ INSTANTIATE_TEST_SUITE_P(CatchableSignals, SignalCliTest, ::testing::ValuesIn(si
                          [](const auto& info) { return test::signalTestName(info.param); });
 
 TEST_F(OutputCliTest, ASignalDuringAovStagingLeavesNoStagingDirectory) {
-    const pid_t pid = startLongRender(true);
-    ASSERT_GT(pid, 0);
-    ASSERT_TRUE(waitForEntry(dir_ / "aov", ".hexray-aov-")) << "no staging directory appeared";
-    ::kill(pid, SIGINT);
-    int status = 0;
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    const pid_t pid = startStoppedRender(true);
+    ASSERT_GT(pid, 0) << "the render did not stop at its staging directory";
+    ASSERT_FALSE(hidden(dir_ / "aov").empty());
+    const int status = signalStopped(pid, SIGINT);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << "status " << status;
     EXPECT_EQ(hidden(dir_ / "aov"), std::vector<std::string>{});
     EXPECT_EQ(hidden(dir_), std::vector<std::string>{});
 }
 
 TEST_F(OutputCliTest, WhatSigkillLeavesSaysWhatItIsAndTheNextRunRemovesIt) {
-    const pid_t pid = startLongRender();
+    const pid_t pid = startStoppedRender();
     ASSERT_GT(pid, 0);
-    ASSERT_TRUE(waitForEntry(dir_, "."));
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, nullptr, 0);
+    signalStopped(pid, SIGKILL);
     const std::vector<std::string> left = hidden(dir_);
     ASSERT_EQ(left.size(), 1u);
     EXPECT_EQ(left[0].rfind(".hexray-partial-", 0), 0u) << left[0];
@@ -312,11 +322,9 @@ TEST_F(OutputCliTest, WhatSigkillLeavesSaysWhatItIsAndTheNextRunRemovesIt) {
 }
 
 TEST_F(OutputCliTest, AnAovStagingDirectoryLeftBySigkillIsRemovedByTheNextRunIntoIt) {
-    const pid_t pid = startLongRender(true);
+    const pid_t pid = startStoppedRender(true);
     ASSERT_GT(pid, 0);
-    ASSERT_TRUE(waitForEntry(dir_ / "aov", ".hexray-aov-"));
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, nullptr, 0);
+    signalStopped(pid, SIGKILL);
     ASSERT_FALSE(hidden(dir_ / "aov").empty());
     std::ofstream(dir_ / "aov" / ".not-hexrays") << "kept";
     const RunResult run = renderTo("small.png", "--aov aov");
