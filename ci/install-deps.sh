@@ -9,6 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   glslang-dev spirv-tools  # glslang as a library: generated kernels are compiled at run time
+  libssl-dev  # OpenSSL's libcrypto: SHA-256 of the kernel cache's files
   libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)

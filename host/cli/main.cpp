@@ -16,6 +16,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cpu/cpu_renderer.h"
+#include "gpu/kernel_cache.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene.h"
@@ -400,6 +401,12 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);
         return code == 0 ? kSuccess : kBadInput;
+    }
+    try {  // refused before any work, whatever the command
+        KernelCache::configuredMaxBytes();
+    } catch (const KernelCacheSettingError& error) {
+        printError(error.what());
+        return kBadInput;
     }
     // Standard output carries the data when an output is "-" (or a path to it): what the command
     // prints goes to standard error then.

@@ -70,13 +70,15 @@ std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
     const std::string name = classes ? "generated for each of " + std::to_string(classes) + " tile classes"
                                      : plan.kernel.name;
     char text[160];
-    std::snprintf(text, sizeof text, "%s, written in %.2f ms, %s", name.c_str(), build.generateMilliseconds,
-                  build.fromDiskCache ? "SPIR-V from the kernel cache" : "");
+    std::snprintf(text, sizeof text, "%s, written in %.2f ms, ", name.c_str(), build.generateMilliseconds);
     std::string description = text;
-    if (!build.fromDiskCache) {
+    if (build.fromDiskCache) {
+        std::snprintf(text, sizeof text, "SPIR-V from the kernel cache (read and checked in %.1f ms)",
+                      build.loadMilliseconds);
+    } else {
         std::snprintf(text, sizeof text, "glslang %.1f ms", build.compileMilliseconds);
-        description += text;
     }
+    description += text;
     return description;
 }
 

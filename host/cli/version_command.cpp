@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/command_support.h"
+#include "util/build_version.h"
 
 namespace hexray::cli {
 namespace {
@@ -30,7 +31,7 @@ std::string deviceLine() {
 }  // namespace
 
 int runVersion() {
-    std::printf("hexray %s (git %s)\n", HEXRAY_VERSION, HEXRAY_GIT_REVISION);
+    std::printf("hexray %s (git %s)\n", hexrayVersion(), hexrayGitRevision());
     std::string loader;
     try {
         loader = versionText(vk::raii::Context().enumerateInstanceVersion());

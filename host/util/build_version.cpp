@@ -1,0 +1,13 @@
+#include "util/build_version.h"
+
+namespace hexray {
+
+const char* hexrayVersion() {
+    return HEXRAY_VERSION;
+}
+
+const char* hexrayGitRevision() {
+    return HEXRAY_GIT_REVISION;
+}
+
+}  // namespace hexray
