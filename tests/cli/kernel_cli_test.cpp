@@ -2,7 +2,7 @@
 // compiled by glslang or loaded from the kernel cache under $XDG_CACHE_HOME/hexray) and how long the
 // driver's compile took; a corrupt, spliced or refused cache file, or a FIFO in its place, is
 // reported, compiled afresh and rewritten, and an unusable cache is no cache; the cache keeps its
-// bound; culling by tile classes leaves the image as it was.
+// bound, and `hexray cache` shows and clears it; culling by tile classes leaves the image as it was.
 
 #include <sys/stat.h>
 
@@ -149,6 +149,32 @@ TEST_F(KernelCliTest, TheCacheKeepsItsBound) {
     EXPECT_NE(bad.err.find("hexray: error: HEXRAY_KERNEL_CACHE_MAX_SIZE: must be a size in bytes"), std::string::npos)
         << bad.err;
     EXPECT_FALSE(fs::exists(dir_ / "bad.png"));
+}
+
+TEST_F(KernelCliTest, TheCacheCommandSaysWhereTheCacheIsWhatItHoldsAndClearsIt) {
+    const std::string cacheHome = "XDG_CACHE_HOME='" + (dir_ / "cache").string() + "'";
+    ASSERT_EQ(render("lecture-demo.json", "a.png").exitCode, 0);
+    const std::uintmax_t bytes = fs::file_size(cacheFiles().front());
+    const RunResult shown = hexray("cache", cacheHome);
+    ASSERT_EQ(shown.exitCode, 0) << shown.err;
+    char size[32];
+    std::snprintf(size, sizeof size, "%.1f MiB", double(bytes) / double(1 << 20));
+    EXPECT_EQ(shown.out, "kernel cache: " + (dir_ / "cache" / "hexray").string() + "\n1 entry, " + size +
+                             " of at most 128 MiB (HEXRAY_KERNEL_CACHE_MAX_SIZE sets the bound)\n");
+    EXPECT_EQ(shown.err, "");
+    EXPECT_NE(hexray("cache", cacheHome + " HEXRAY_KERNEL_CACHE_MAX_SIZE=1G").out.find("of at most 1024 MiB"),
+              std::string::npos);
+
+    const RunResult cleared = hexray("cache --clear", cacheHome);
+    ASSERT_EQ(cleared.exitCode, 0) << cleared.err;
+    EXPECT_EQ(cleared.out,
+              "kernel cache: " + (dir_ / "cache" / "hexray").string() + "\nremoved 1 entry, " + size + "\n");
+    EXPECT_TRUE(cacheFiles().empty());
+    EXPECT_NE(render("lecture-demo.json", "a.png").out.find("glslang"), std::string::npos);
+
+    const RunResult none = hexray("cache", "env -u XDG_CACHE_HOME -u HOME");
+    EXPECT_EQ(none.exitCode, 0) << none.err;
+    EXPECT_EQ(none.out, "kernel cache: none (neither XDG_CACHE_HOME nor HOME is set)\n");
 }
 
 TEST_F(KernelCliTest, AnUnusableCacheIsNoCacheAndNoError) {
