@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the scene-loader fuzzer (clang-14, libFuzzer, ASan, UBSan) in build-fuzz/ and fuzzes
-# for a fixed time (default 60 s; bash ci/fuzz.sh SECONDS), starting from the shipped scenes
-# and tests/fuzz/regressions/. Fails on any crash, hang, leak, sanitizer report or broken
-# scene invariant; the input that caused it is written to build-fuzz/artifacts/.
+# Builds the fuzzers (clang-14, libFuzzer, ASan, UBSan) in build-fuzz/ and fuzzes for a fixed time
+# in all (default 60 s; bash ci/fuzz.sh SECONDS): two thirds for the scene loader, starting from the
+# shipped scenes and tests/fuzz/regressions/, a third for the kernel cache's reader, starting from
+# tests/fuzz/kernel_cache_seeds/. Fails on any crash, hang, leak, sanitizer report or broken
+# invariant; the input that caused it is written to build-fuzz/artifacts/.
 #
 # bash ci/fuzz.sh --differential SECONDS: instead, the differential fuzzer (generated valid scenes
 # through the GPU in every precision and the CPU reference, judged as `hexray compare` judges) on
@@ -47,17 +48,25 @@ if [ "${1:-}" = --differential ]; then
   exit "$status"
 fi
 seconds=${1:-60}
+cache_seconds=$((seconds / 3))
+scene_seconds=$((seconds - cache_seconds))
 
 cmake -S . -B build-fuzz -DHEXRAY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build build-fuzz --parallel "$(nproc)"
 
-# New inputs go to a scratch corpus; the seed folders are only read. Inputs are capped at
-# 4 KiB, above every shipped scene, so mutations stay cheap (the 20 KB deep-nesting seed is cut).
-rm -rf build-fuzz/corpus build-fuzz/artifacts
-mkdir -p build-fuzz/corpus build-fuzz/artifacts
+# New inputs go to scratch corpora; the seed folders are only read. Inputs are capped at
+# 4 KiB, above every shipped scene and seed entry, so mutations stay cheap (the 20 KB deep-nesting
+# seed is cut).
+rm -rf build-fuzz/corpus build-fuzz/kernel-cache-corpus build-fuzz/artifacts
+mkdir -p build-fuzz/corpus build-fuzz/kernel-cache-corpus build-fuzz/artifacts
 # sed drops progress lines and libFuzzer's dictionary suggestions (stats and any report stay);
 # pipefail keeps the fuzzer's exit status.
-build-fuzz/tests/fuzz/scene_loader_fuzzer build-fuzz/corpus scenes tests/fuzz/regressions \
-  -dict=tests/fuzz/scene.dict -max_len=4096 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 |
+quiet() {
   sed -e '/^#[0-9]/d' -e '/^INFO: /d' -e '/^	NEW_FUNC/d' -e '/^###### Recommended/,/^###### End of recommended/d'
+}
+build-fuzz/tests/fuzz/scene_loader_fuzzer build-fuzz/corpus scenes tests/fuzz/regressions \
+  -dict=tests/fuzz/scene.dict -max_len=4096 -max_total_time="$scene_seconds" -timeout=10 -rss_limit_mb=2048 \
+  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet
+build-fuzz/tests/fuzz/kernel_cache_fuzzer build-fuzz/kernel-cache-corpus tests/fuzz/kernel_cache_seeds \
+  -max_len=4096 -max_total_time="$cache_seconds" -timeout=10 -rss_limit_mb=2048 \
+  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet

@@ -17,7 +17,9 @@
 #include "gpu/kernel_compiler.h"
 #include "gpu/kernel_cache_entry.h"
 #include "gpu/shader_compiler.h"
+#include "fuzz/kernel_cache_fuzz_input.h"
 #include "support/temporary_directory_test.h"
+#include "support/test_paths.h"
 #include "util/build_version.h"
 
 namespace hexray {
@@ -430,6 +432,26 @@ TEST_F(KernelCacheTest, SpirvTheDriverRefusedIsRemovedCompiledAfreshAndStoredAga
     EXPECT_EQ(compiler.spirv(kernel).data(), fresh.data());  // the fresh one is kept
     EXPECT_EQ(readBytes(file), stored);                      // written again: the same bytes, a new file
     EXPECT_GT(fs::last_write_time(file), fs::file_time_type::clock::now() - std::chrono::minutes(30));
+}
+
+// The kernel cache fuzzer's seeds (tests/fuzz/kernel_cache_seeds/) are valid entries of its key,
+// as a file and resealed. HEXRAY_WRITE_KERNEL_CACHE_SEEDS=1 writes them afresh (after a change of
+// the file's format).
+TEST(KernelCacheFuzzSeeds, AreValidEntriesOfTheFuzzersKey) {
+    const fs::path seeds = test::sourcePath("tests/fuzz/kernel_cache_seeds");
+    const std::string entry = sealKernelCacheEntry(test::kKernelCacheFuzzKey, smallKernel(3));
+    if (std::getenv("HEXRAY_WRITE_KERNEL_CACHE_SEEDS")) {
+        writeBytes(seeds / "valid-entry", std::string(1, '\0') + entry);
+        writeBytes(seeds / "valid-entry-resealed", std::string(1, '\1') + entry);
+    }
+    for (const char* name : {"valid-entry", "valid-entry-resealed"}) {
+        const std::string input = readBytes(seeds / name);
+        ASSERT_FALSE(input.empty()) << name;
+        const std::string file =
+            test::kernelCacheFileFromFuzzInput(reinterpret_cast<const std::uint8_t*>(input.data()), input.size());
+        EXPECT_EQ(openKernelCacheEntry(file, test::kKernelCacheFuzzKey).problem, "")
+            << name << ": run this test with HEXRAY_WRITE_KERNEL_CACHE_SEEDS=1 to write the seeds afresh";
+    }
 }
 
 }  // namespace
