@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the fuzzers (clang-14, libFuzzer, ASan, UBSan) in build-fuzz/ and fuzzes for a fixed time
-# (default 60 s; bash ci/fuzz.sh SECONDS), shared equally between them: the scene loader, from the
-# shipped scenes and tests/fuzz/regressions/, and merge's piece reader, from the PNG and OpenEXR
-# pieces in tests/fuzz/pieces/. Fails on any crash, hang, leak, sanitizer report or broken
+# in all (default 60 s; bash ci/fuzz.sh SECONDS): half for the scene loader, from the shipped scenes
+# and tests/fuzz/regressions/, a quarter each for merge's piece reader, from the PNG and OpenEXR
+# pieces in tests/fuzz/pieces/, and for the kernel cache's reader, from tests/fuzz/kernel_cache_seeds/.
+# Fails on any crash, hang, leak, sanitizer report or broken
 # invariant; the input that caused it is written to build-fuzz/artifacts/.
 #
 # bash ci/fuzz.sh --differential SECONDS: instead, the differential fuzzer (generated valid scenes
@@ -48,26 +49,30 @@ if [ "${1:-}" = --differential ]; then
   exit "$status"
 fi
 seconds=${1:-60}
-fuzzers=2
-share=$(((seconds + fuzzers - 1) / fuzzers))
+piece_seconds=$((seconds / 4))
+cache_seconds=$((seconds / 4))
+scene_seconds=$((seconds - piece_seconds - cache_seconds))
 
 cmake -S . -B build-fuzz -DHEXRAY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build build-fuzz --parallel "$(nproc)"
 
-# New inputs go to a scratch corpus; the seed folders are only read. Inputs are capped at
+# New inputs go to scratch corpora; the seed folders are only read. Scene inputs are capped at
 # 4 KiB, above every shipped scene, so mutations stay cheap (the 20 KB deep-nesting seed is cut).
-rm -rf build-fuzz/corpus build-fuzz/corpus-pieces build-fuzz/artifacts
-mkdir -p build-fuzz/corpus build-fuzz/corpus-pieces build-fuzz/artifacts
+rm -rf build-fuzz/corpus build-fuzz/corpus-pieces build-fuzz/kernel-cache-corpus build-fuzz/artifacts
+mkdir -p build-fuzz/corpus build-fuzz/corpus-pieces build-fuzz/kernel-cache-corpus build-fuzz/artifacts
 # sed drops progress lines and libFuzzer's dictionary suggestions (stats and any report stay);
 # pipefail keeps the fuzzer's exit status.
 quiet() {
   sed -e '/^#[0-9]/d' -e '/^INFO: /d' -e '/^	NEW_FUNC/d' -e '/^###### Recommended/,/^###### End of recommended/d'
 }
 build-fuzz/tests/fuzz/scene_loader_fuzzer build-fuzz/corpus scenes tests/fuzz/regressions \
-  -dict=tests/fuzz/scene.dict -max_len=4096 -max_total_time="$share" -timeout=10 -rss_limit_mb=2048 \
+  -dict=tests/fuzz/scene.dict -max_len=4096 -max_total_time="$scene_seconds" -timeout=10 -rss_limit_mb=2048 \
   -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet
 # No single allocation above 64 MiB: a valid piece needs at most a band of 64 rows of 16384 pixels
 # (12 MiB), so a larger one was sized from a field nothing checked.
 build-fuzz/tests/fuzz/tile_piece_fuzzer build-fuzz/corpus-pieces tests/fuzz/pieces \
-  -max_len=16384 -max_total_time="$share" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=64 \
+  -max_len=16384 -max_total_time="$piece_seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=64 \
+  -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet
+build-fuzz/tests/fuzz/kernel_cache_fuzzer build-fuzz/kernel-cache-corpus tests/fuzz/kernel_cache_seeds \
+  -max_len=4096 -max_total_time="$cache_seconds" -timeout=10 -rss_limit_mb=2048 \
   -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet

@@ -100,12 +100,18 @@ struct BenchOptions {
     std::string csvPath;                          // empty: no CSV
 };
 
+struct CacheOptions {
+    bool clear = false;  // remove every entry
+};
+
 int runRender(const RenderOptions& options);
 int runCompare(const CompareOptions& options);
 int runDevices(const VulkanOptions& options);
 int runBench(const BenchOptions& options);
 int runPixel(const PixelOptions& options);
 int runMerge(const MergeOptions& options);
+// `hexray cache`: the kernel cache's directory, entries, size and bound; or, with --clear, empties it.
+int runCache(const CacheOptions& options);
 // `hexray --version`: hexray's version and git revision, the Vulkan loader's version and the
 // device hexray would use, with its driver (or why Vulkan is unavailable). Exit code 0 either way.
 int runVersion();

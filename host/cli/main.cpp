@@ -16,6 +16,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cpu/cpu_renderer.h"
+#include "gpu/kernel_cache.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene.h"
@@ -37,7 +38,7 @@ constexpr const char* kExitCodes =
     "unknown --device or a missing validation layer), 7 or 8. render of several scenes renders every one it can\n"
     "and exits with the first failed scene's code.";
 
-constexpr const char* kCommands = "render, merge, compare, bench, pixel, devices";
+constexpr const char* kCommands = "render, merge, compare, bench, pixel, devices, cache";
 
 // Every subcommand's options, as parsing fills them in.
 struct CommandLine {
@@ -55,6 +56,7 @@ struct CommandLine {
     std::string pixelBackend = "both";
     std::string pixelPrecision = "auto";
     VulkanOptions devices;
+    CacheOptions cache;
 };
 
 void addImageOptions(CLI::App& command, ImageOverride& image) {
@@ -263,6 +265,13 @@ void addDevicesCommand(CLI::App& app, CommandLine& line) {
     addDeviceOption(*command, line.devices);
 }
 
+void addCacheCommand(CLI::App& app, CommandLine& line) {
+    CLI::App* command = app.add_subcommand(
+        "cache", "Show where the kernel cache is (compiled kernels, $XDG_CACHE_HOME/hexray), its entries, size and "
+                 "bound (HEXRAY_KERNEL_CACHE_MAX_SIZE, e.g. 256M; default 128M)");
+    command->add_flag("--clear", line.cache.clear, "Remove every entry");
+}
+
 void defineCommandLine(CLI::App& app, CommandLine& line) {
     app.footer(kExitCodes);
     app.failure_message([](const CLI::App*, const CLI::Error& error) {
@@ -283,6 +292,7 @@ void defineCommandLine(CLI::App& app, CommandLine& line) {
     addBenchCommand(app, line);
     addPixelCommand(app, line);
     addDevicesCommand(app, line);
+    addCacheCommand(app, line);
 }
 
 // The first word that is not an option, when it names no command: CLI11 would only say that a
@@ -373,6 +383,9 @@ int runCommand(const CLI::App& app, CommandLine& line) {
     if (app.got_subcommand("pixel")) {
         return runPixelCommand(line);
     }
+    if (app.got_subcommand("cache")) {
+        return runCache(line.cache);
+    }
     line.devices.validate = line.validate;
     return runDevices(line.devices);
 }
@@ -404,6 +417,12 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);
         return code == 0 ? kSuccess : kBadInput;
+    }
+    try {  // refused before any work, whatever the command
+        KernelCache::configuredMaxBytes();
+    } catch (const KernelCacheSettingError& error) {
+        printError(error.what());
+        return kBadInput;
     }
     // Standard output carries the data when an output is "-" (or a path to it): what the command
     // prints goes to standard error then.

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "cli/build_version.h"
 #include "cli/command_support.h"
 #include "cli/gpu_session.h"
 #include "cli/progress.h"
@@ -23,6 +22,7 @@
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
 #include "tile/tile_stamp.h"
+#include "util/build_version.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -77,13 +77,15 @@ std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
     const std::string name = classes ? "generated for each of " + std::to_string(classes) + " tile classes"
                                      : plan.kernel.name;
     char text[160];
-    std::snprintf(text, sizeof text, "%s, written in %.2f ms, %s", name.c_str(), build.generateMilliseconds,
-                  build.fromDiskCache ? "SPIR-V from the kernel cache" : "");
+    std::snprintf(text, sizeof text, "%s, written in %.2f ms, ", name.c_str(), build.generateMilliseconds);
     std::string description = text;
-    if (!build.fromDiskCache) {
+    if (build.fromDiskCache) {
+        std::snprintf(text, sizeof text, "SPIR-V from the kernel cache (read and checked in %.1f ms)",
+                      build.loadMilliseconds);
+    } else {
         std::snprintf(text, sizeof text, "glslang %.1f ms", build.compileMilliseconds);
-        description += text;
     }
+    description += text;
     return description;
 }
 

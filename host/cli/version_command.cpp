@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <string>
 
-#include "cli/build_version.h"
 #include "cli/command_support.h"
+#include "util/build_version.h"
 
 namespace hexray::cli {
 namespace {

@@ -18,6 +18,7 @@
 #include "gpu/scene_constants.h"
 #include "gpu/tile_classes.h"
 #include "util/milliseconds_since.h"
+#include "vulkan/fault_injection.h"
 #include "vulkan/host_visible_buffer.h"
 
 namespace hexray {
@@ -79,6 +80,9 @@ SpecializationData specializationData(const gpu::Specialization& common, std::sp
 
 vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii::PipelineLayout& layout,
                                   std::span<const std::uint32_t> spirv, const SpecializationData& data) {
+    if (injectedOnce(InjectedFault::PipelineFailsOnce)) {
+        throw vk::UnknownError("vkCreateComputePipelines");
+    }
     const vk::raii::ShaderModule module(device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
     const vk::SpecializationInfo specialization(data.entries, vk::ArrayProxyNoTemporaries<const std::byte>(data.bytes));
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main",
@@ -223,6 +227,27 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> s
             pipelines_.emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data)).first;
     }
     return found->second;
+}
+
+const vk::raii::Pipeline& GpuRenderer::kernelPipeline(const Kernel& kernel, KernelBuild& build, SceneLayout layout,
+                                                      const gpu::Specialization& specialization,
+                                                      std::span<const std::byte> sceneValues,
+                                                      std::span<const std::uint32_t> sceneSizes) {
+    std::span<const std::uint32_t> spirv = kernels_.spirv(kernel, &build);
+    try {
+        return pipeline(spirv, layout, specialization, sceneValues, sceneSizes);
+    } catch (const vk::SystemError& error) {
+        if (!kernels_.fromDiskCache(spirv.data())) {
+            throw;
+        }
+        // The cached SPIR-V is a miss after all: its pipelines go with it, and glslang compiles it afresh.
+        std::erase_if(pipelines_, [&](const auto& entry) { return std::get<0>(entry.first) == spirv.data(); });
+        KernelBuild fresh;
+        spirv = kernels_.recompile(kernel, std::string("the driver refused its SPIR-V (") + error.what() + ")", &fresh);
+        build.compileMilliseconds += fresh.compileMilliseconds;
+        build.fromDiskCache = false;
+        return pipeline(spirv, layout, specialization, sceneValues, sceneSizes);
+    }
 }
 
 void GpuRenderer::releaseGeneratedKernels() {
@@ -459,11 +484,12 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     std::vector<const vk::raii::Pipeline*> pipelines;
     for (const Kernel& kernel : kernels) {
         KernelBuild build;
-        const std::span<const std::uint32_t> spirv = kernels_.spirv(kernel, &build);
+        pipelines.push_back(
+            &kernelPipeline(kernel, build, plan.layout, specialization, packed.constants, packed.constantSizes));
         result.timing.kernel.generateMilliseconds += build.generateMilliseconds;
         result.timing.kernel.compileMilliseconds += build.compileMilliseconds;
+        result.timing.kernel.loadMilliseconds += build.loadMilliseconds;
         result.timing.kernel.fromDiskCache = build.fromDiskCache;
-        pipelines.push_back(&pipeline(spirv, plan.layout, specialization, packed.constants, packed.constantSizes));
     }
     const SceneBindings& sceneBindings = bindings(plan.layout);
     const std::uint32_t width = scene.image.width;

@@ -174,6 +174,13 @@ private:
     const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, SceneLayout layout,
                                        const gpu::Specialization& specialization,
                                        std::span<const std::byte> sceneValues, std::span<const std::uint32_t> sceneSizes);
+    // `kernel`'s SPIR-V (see KernelCompiler) and its pipeline. SPIR-V from the disk cache that the
+    // driver refuses is a miss: it is compiled afresh and the pipeline made again; only a failure on
+    // fresh SPIR-V is an error.
+    const vk::raii::Pipeline& kernelPipeline(const Kernel& kernel, KernelBuild& build, SceneLayout layout,
+                                             const gpu::Specialization& specialization,
+                                             std::span<const std::byte> sceneValues,
+                                             std::span<const std::uint32_t> sceneSizes);
 
     const VulkanContext& context_;
     std::uint64_t maxBandBytes_;

@@ -1,68 +1,65 @@
 #include "gpu/kernel_cache.h"
 
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <iterator>
-
+#include <fcntl.h>
 #include <unistd.h>
 
-#include "gpu/stable_hash.h"
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+#include "gpu/kernel_cache_entry.h"
+#include "gpu/kernel_cache_files.h"
+#include "io/remove_without_following.h"
+#include "io/untrusted_file.h"
+#include "util/sha256.h"
 
 namespace hexray {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr char kMagic[8] = {'H', 'X', 'K', 'E', 'R', 'N', 'L', '1'};
-constexpr std::uint32_t kSpirvMagic = 0x07230203u;
+constexpr const char* kMaxSizeVariable = "HEXRAY_KERNEL_CACHE_MAX_SIZE";
 
-// The file: kMagic, the key's length (uint64) and bytes, the SPIR-V's word count (uint64) and words.
-std::string serialize(const std::string& key, std::span<const std::uint32_t> spirv) {
-    std::string bytes(kMagic, sizeof kMagic);
-    const auto appendCount = [&](std::uint64_t count) {
-        bytes.append(reinterpret_cast<const char*>(&count), sizeof count);
-    };
-    appendCount(key.size());
-    bytes += key;
-    appendCount(spirv.size());
-    bytes.append(reinterpret_cast<const char*>(spirv.data()), spirv.size_bytes());
-    return bytes;
+// A temporary this old was left by a process that died while storing (a store takes milliseconds).
+constexpr auto kAbandonedTemporaryAge = std::chrono::hours(1);
+
+std::uint64_t parseSize(std::string_view text) {
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    const std::string_view suffix(end, text.data() + text.size() - end);
+    const int shift = suffix.empty() ? 0 : suffix == "K" ? 10 : suffix == "M" ? 20 : suffix == "G" ? 30 : -1;
+    if (error != std::errc() || end == text.data() || shift < 0 ||
+        value > (std::numeric_limits<std::uint64_t>::max() >> shift)) {
+        throw KernelCacheSettingError(std::string(kMaxSizeVariable) +
+                                      ": must be a size in bytes, or with a suffix K, M or G (e.g. 128M; 0 turns "
+                                      "the kernel cache off) (got '" + std::string(text) + "')");
+    }
+    return value << shift;
 }
 
-std::optional<std::vector<std::uint32_t>> deserialize(const std::string& bytes, const std::string& key) {
-    std::size_t at = 0;
-    const auto read = [&](void* into, std::size_t size) {
-        if (bytes.size() - at < size) {
+bool writeAll(int descriptor, const std::string& bytes) {
+    std::size_t written = 0;
+    while (written < bytes.size()) {
+        const ssize_t count = ::write(descriptor, bytes.data() + written, bytes.size() - written);
+        if (count <= 0) {
             return false;
         }
-        std::memcpy(into, bytes.data() + at, size);
-        at += size;
-        return true;
-    };
-    char magic[sizeof kMagic];
-    std::uint64_t keySize = 0;
-    if (!read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 || !read(&keySize, sizeof keySize) ||
-        keySize != key.size() || bytes.compare(at, key.size(), key) != 0) {
-        return std::nullopt;
+        written += std::size_t(count);
     }
-    at += key.size();
-    std::uint64_t words = 0;
-    if (!read(&words, sizeof words) || words == 0 || (bytes.size() - at) != words * sizeof(std::uint32_t)) {
-        return std::nullopt;
-    }
-    std::vector<std::uint32_t> spirv(words);
-    read(spirv.data(), words * sizeof(std::uint32_t));
-    if (spirv[0] != kSpirvMagic) {
-        return std::nullopt;
-    }
-    return spirv;
+    return true;
 }
 
 }  // namespace
 
-KernelCache::KernelCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+void KernelCache::reportOnStandardError(const std::string& line) {
+    std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+KernelCache::KernelCache(std::filesystem::path directory, std::uint64_t maxBytes, Reporter report)
+    : directory_(std::move(directory)), maxBytes_(maxBytes), report_(std::move(report)) {}
 
 std::filesystem::path KernelCache::defaultDirectory() {
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
@@ -74,45 +71,127 @@ std::filesystem::path KernelCache::defaultDirectory() {
     return {};
 }
 
-std::filesystem::path KernelCache::fileFor(const std::string& key) const {
-    StableHash hash;
-    hash.add(key);
-    return directory_ / (hash.hex() + ".spv");
+std::uint64_t KernelCache::configuredMaxBytes() {
+    const char* value = std::getenv(kMaxSizeVariable);
+    return value && *value ? parseSize(value) : kDefaultMaxBytes;
+}
+
+std::string KernelCache::entryName(const std::string& key) const {
+    return sha256Hex(key) + ".spv";
+}
+
+void KernelCache::remove(const std::string& name, const std::string& reason) const {
+    const bool removed = removeWithoutFollowing(directory_, name);
+    report_("hexray: note: kernel cache entry '" + (directory_ / name).string() + "' " +
+            (removed ? "removed" : "ignored (it could not be removed)") + ": " + reason);
 }
 
 std::optional<std::vector<std::uint32_t>> KernelCache::load(const std::string& key) const {
-    if (directory_.empty()) {
+    if (!enabled()) {
         return std::nullopt;
     }
-    std::ifstream in(fileFor(key), std::ios::binary);
-    if (!in) {
-        return std::nullopt;
+    try {
+        const std::string name = entryName(key);
+        UntrustedFile file(directory_ / name, kMaxKernelCacheEntryBytes);
+        if (file.absent()) {
+            return std::nullopt;
+        }
+        const std::optional<std::string> bytes = file.read();
+        KernelCacheEntry entry = bytes ? openKernelCacheEntry(*bytes, key) : KernelCacheEntry{{}, file.problem()};
+        if (entry.problem.empty()) {
+            file.touch();
+            return std::move(entry.spirv);
+        }
+        if (!bytes || file.stillNamedBy(directory_ / name)) {  // not a good entry stored over it meanwhile
+            remove(name, entry.problem);
+        }
+    } catch (const std::exception& error) {  // out of memory, libcrypto: no cache this time
+        report_(std::string("hexray: note: kernel cache not read: ") + error.what());
     }
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return deserialize(bytes, key);
+    return std::nullopt;
 }
 
 void KernelCache::store(const std::string& key, std::span<const std::uint32_t> spirv) const {
-    if (directory_.empty()) {
+    if (!enabled()) {
         return;
     }
-    std::error_code error;
-    fs::create_directories(directory_, error);
-    const fs::path target = fileFor(key);
-    std::string name = ".";  // built in steps: GCC 12 misreads "." + std::string as overlapping (-Wrestrict)
-    name += target.filename().string();
-    name += ".XXXXXX";
-    std::string temporary = (directory_ / name).string();
-    const int fd = ::mkstemp(temporary.data());
-    if (fd < 0) {
-        return;  // an unwritable cache is no cache
+    try {
+        const std::string bytes = sealKernelCacheEntry(key, spirv);
+        if (bytes.size() > kMaxKernelCacheEntryBytes) {
+            return;
+        }
+        std::error_code error;
+        fs::create_directories(directory_, error);
+        const std::string name = entryName(key);
+        std::string temporary = (directory_ / ("." + name + ".XXXXXX")).string();
+        const int descriptor = ::mkostemp(temporary.data(), O_CLOEXEC);
+        if (descriptor < 0) {
+            return;  // an unwritable cache is no cache
+        }
+        const bool written = writeAll(descriptor, bytes);
+        const bool closed = ::close(descriptor) == 0;
+        if (!written || !closed || std::rename(temporary.c_str(), (directory_ / name).c_str()) != 0) {
+            ::unlink(temporary.c_str());
+            return;
+        }
+        evictDownToBound(name);
+    } catch (const std::exception&) {
+        // Out of memory, libcrypto: the kernel is simply not cached.
     }
-    const std::string bytes = serialize(key, spirv);
-    const bool written = ::write(fd, bytes.data(), bytes.size()) == ssize_t(bytes.size());
-    const bool closed = ::close(fd) == 0;
-    if (!written || !closed || std::rename(temporary.c_str(), target.c_str()) != 0) {
-        ::unlink(temporary.c_str());
+}
+
+void KernelCache::discard(const std::string& key, const std::string& reason) const {
+    if (enabled()) {
+        remove(entryName(key), reason);
     }
+}
+
+void KernelCache::evictDownToBound(const std::string& keep) const {
+    KernelCacheFiles files = listKernelCacheFiles(directory_);
+    const auto abandoned = fs::file_time_type::clock::now() - kAbandonedTemporaryAge;
+    for (const KernelCacheFile& temporary : files.temporaries) {
+        if (temporary.lastUsed < abandoned) {
+            removeWithoutFollowing(directory_, temporary.name);
+        }
+    }
+    std::erase_if(files.entries, [](const KernelCacheFile& file) { return !file.regular; });
+    std::uint64_t total = 0;
+    for (const KernelCacheFile& entry : files.entries) {
+        total += entry.bytes;
+    }
+    std::ranges::sort(files.entries, {}, &KernelCacheFile::lastUsed);
+    for (const KernelCacheFile& entry : files.entries) {
+        if (total <= maxBytes_) {
+            break;
+        }
+        if (entry.name != keep && removeWithoutFollowing(directory_, entry.name)) {
+            total -= entry.bytes;
+        }
+    }
+}
+
+KernelCache::Usage KernelCache::usage() const {
+    Usage usage;
+    for (const KernelCacheFile& entry : listKernelCacheFiles(directory_).entries) {
+        usage.entries += entry.regular ? 1 : 0;
+        usage.bytes += entry.bytes;
+    }
+    return usage;
+}
+
+KernelCache::Usage KernelCache::clear() const {
+    Usage removed;
+    const KernelCacheFiles files = listKernelCacheFiles(directory_);
+    for (const KernelCacheFile& entry : files.entries) {
+        if (removeWithoutFollowing(directory_, entry.name) && entry.regular) {
+            ++removed.entries;
+            removed.bytes += entry.bytes;
+        }
+    }
+    for (const KernelCacheFile& temporary : files.temporaries) {
+        removeWithoutFollowing(directory_, temporary.name);
+    }
+    return removed;
 }
 
 }  // namespace hexray

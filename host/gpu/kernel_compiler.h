@@ -18,24 +18,45 @@ namespace hexray {
 struct KernelBuild {
     double generateMilliseconds = 0;  // writing the GLSL
     double compileMilliseconds = 0;   // glslang (0 when the disk cache or this process had it)
+    double loadMilliseconds = 0;      // looking in the disk cache: reading and checking a file
     bool fromDiskCache = false;
 };
+
+// The disk cache's key for a generated kernel's source: the source, and everything else that
+// decides its SPIR-V: glslang and the shader library (shaderCompilerFingerprint, with the SPIR-V
+// target) and this build of hexray (its version and git revision). Not the device or driver:
+// SPIR-V is the same for every device, and a driver that refuses it is handled where the
+// pipeline is made (KernelCompiler::recompile).
+std::string kernelCacheKey(const std::string& source);
 
 class KernelCompiler {
 public:
     explicit KernelCompiler(KernelCache cache = KernelCache(KernelCache::defaultDirectory()));
 
-    // Valid as long as this compiler (or, for a prebuilt kernel, its SPIR-V) lives, until forgetGenerated.
+    // Valid as long as this compiler (or, for a prebuilt kernel, its SPIR-V) lives, until forgetGenerated
+    // or recompile.
     std::span<const std::uint32_t> spirv(const Kernel& kernel, KernelBuild* build = nullptr);
 
     // Whether `spirv` is a generated kernel's, held here.
     bool holds(const std::uint32_t* spirv) const;
+    // Whether `spirv` is a generated kernel's that came from the disk cache.
+    bool fromDiskCache(const std::uint32_t* spirv) const;
+    // The driver refused `kernel`'s SPIR-V from the disk cache for `reason`: the entry is removed
+    // (and reported), and the kernel compiled afresh with glslang and stored again.
+    std::span<const std::uint32_t> recompile(const Kernel& kernel, const std::string& reason,
+                                             KernelBuild* build = nullptr);
     // Drops every generated kernel's SPIR-V (the disk cache keeps them).
     void forgetGenerated() { compiled_.clear(); }
 
 private:
+    struct Compiled {
+        std::vector<std::uint32_t> spirv;
+        bool fromDiskCache = false;
+    };
+    std::vector<std::uint32_t> compileAndStore(const std::string& source, KernelBuild& record);
+
     KernelCache cache_;
-    std::map<std::string, std::vector<std::uint32_t>> compiled_;  // by generated source
+    std::map<std::string, Compiled> compiled_;  // by generated source
 };
 
 }  // namespace hexray

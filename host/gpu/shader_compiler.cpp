@@ -7,11 +7,15 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
-#include "gpu/stable_hash.h"
 #include "shader_library.h"
+#include "util/sha256.h"
 
 namespace hexray {
 namespace {
+
+// What compileComputeShader targets (its setEnvClient and setEnvTarget), for the fingerprint; the
+// kernel cache validates for the same (spirv_validation.h).
+constexpr const char* kShaderTarget = "SPIR-V 1.3 for Vulkan 1.1";
 
 // Resolves every include, local or system, to a file of the embedded library.
 class LibraryIncluder : public glslang::TShader::Includer {
@@ -79,14 +83,14 @@ ShaderCompilerWarmUp::~ShaderCompilerWarmUp() {
 const std::string& shaderCompilerFingerprint() {
     static const std::string fingerprint = [] {
         const glslang::Version version = glslang::GetVersion();
-        StableHash hash;
+        std::string library;
         for (const shader_library::File& file : shader_library::kFiles) {
-            hash.add(file.name);
-            hash.add(file.text);
+            library += std::to_string(file.name.size()) + ":" + std::string(file.name) +
+                       std::to_string(file.text.size()) + ":" + std::string(file.text);
         }
         return "glslang " + std::to_string(version.major) + "." + std::to_string(version.minor) + "." +
                std::to_string(version.patch) + (version.flavor ? std::string("-") + version.flavor : "") +
-               ", library " + hash.hex();
+               ", " + kShaderTarget + ", library " + sha256Hex(library);
     }();
     return fingerprint;
 }

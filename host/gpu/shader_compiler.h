@@ -34,8 +34,9 @@ private:
     std::thread thread_;
 };
 
-// Changes whenever the same source could compile to different SPIR-V: glslang's version and the
-// embedded library's text. Part of every kernel cache key.
+// Changes whenever the same source could compile to different SPIR-V: glslang's version, the
+// SPIR-V and Vulkan versions targeted and the embedded library's text (its SHA-256). Part of every
+// kernel cache key.
 const std::string& shaderCompilerFingerprint();
 
 }  // namespace hexray

@@ -1,6 +1,6 @@
 #pragma once
-// A 64-bit FNV-1a hash: the same value on every run and build, for cache file names. Not a
-// guard against collisions on its own: the kernel cache stores the key text and compares it.
+// A 64-bit FNV-1a hash: the same value on every run and build, for a tile stamp's scene identity.
+// Not a guard against collisions or tampering (the kernel cache uses SHA-256, util/sha256.h).
 
 #include <cstdint>
 #include <cstdio>

@@ -6,13 +6,12 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-struct evp_md_ctx_st;
+#include "util/sha256.h"
 
 namespace hexray {
 
@@ -22,9 +21,6 @@ class PixelDigest {
 public:
     // Hashes `preamble` and a NUL byte.
     explicit PixelDigest(std::string_view preamble);
-    ~PixelDigest();
-    PixelDigest(PixelDigest&&) noexcept;
-    PixelDigest& operator=(PixelDigest&&) noexcept;
 
     void addRgb8Rows(std::span<const std::uint8_t> rgbRows);
     // Rows of `width` pixels, one plane a channel.
@@ -33,7 +29,7 @@ public:
     std::string hex();
 
 private:
-    std::unique_ptr<evp_md_ctx_st, void (*)(evp_md_ctx_st*)> context_;
+    Sha256 hash_;
     std::vector<std::uint8_t> bytes_;  // float rows in their hashed form, reused
 };
 

@@ -1,5 +1,6 @@
 #include "vulkan/fault_injection.h"
 
+#include <atomic>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -15,9 +16,10 @@ InjectedFault parse(const char* value) {
     if (name == "device-lost") return InjectedFault::DeviceLost;
     if (name == "device-hang") return InjectedFault::DeviceHang;
     if (name == "out-of-device-memory") return InjectedFault::OutOfDeviceMemory;
+    if (name == "pipeline-fails-once") return InjectedFault::PipelineFailsOnce;
     throw std::invalid_argument("HEXRAY_INJECT_VULKAN_FAULT: unknown fault \"" + std::string(name) +
                                 "\" (known: no-compute-queue, no-float64, device-lost, device-hang, "
-                                "out-of-device-memory)");
+                                "out-of-device-memory, pipeline-fails-once)");
 }
 
 }  // namespace
@@ -25,6 +27,11 @@ InjectedFault parse(const char* value) {
 InjectedFault injectedVulkanFault() {
     static const InjectedFault fault = parse(std::getenv("HEXRAY_INJECT_VULKAN_FAULT"));
     return fault;
+}
+
+bool injectedOnce(InjectedFault fault) {
+    static std::atomic<bool> happened = false;
+    return injected(fault) && !happened.exchange(true);
 }
 
 }  // namespace hexray

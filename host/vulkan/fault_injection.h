@@ -6,13 +6,23 @@
 //   device-lost           the fence wait of a render ends in VK_ERROR_DEVICE_LOST
 //   device-hang           the fence wait of a render times out at once (the work still running)
 //   out-of-device-memory  the render's buffer allocation fails with VK_ERROR_OUT_OF_DEVICE_MEMORY
+//   pipeline-fails-once   the process's first compute pipeline creation fails with VK_ERROR_UNKNOWN,
+//                         as lavapipe's does for SPIR-V it cannot compile
 // Unset or empty: no fault. Any other value is an error, so a mistyped test cannot pass quietly.
 
 #include <string_view>
 
 namespace hexray {
 
-enum class InjectedFault { None, NoComputeQueue, NoFloat64, DeviceLost, DeviceHang, OutOfDeviceMemory };
+enum class InjectedFault {
+    None,
+    NoComputeQueue,
+    NoFloat64,
+    DeviceLost,
+    DeviceHang,
+    OutOfDeviceMemory,
+    PipelineFailsOnce
+};
 
 // Read once per process; throws std::invalid_argument for an unknown value.
 InjectedFault injectedVulkanFault();
@@ -20,5 +30,8 @@ InjectedFault injectedVulkanFault();
 inline bool injected(InjectedFault fault) {
     return injectedVulkanFault() == fault;
 }
+
+// True the first time it is asked in this process when `fault` is the one injected. Thread-safe.
+bool injectedOnce(InjectedFault fault);
 
 }  // namespace hexray

@@ -1,0 +1,17 @@
+#include "util/build_version.h"
+
+namespace hexray {
+
+const char* hexrayVersion() {
+    return HEXRAY_VERSION;
+}
+
+const char* hexrayGitRevision() {
+    return HEXRAY_GIT_REVISION;
+}
+
+std::string buildVersion() {
+    return std::string(hexrayVersion()) + " (git " + hexrayGitRevision() + ")";
+}
+
+}  // namespace hexray
