@@ -173,6 +173,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
       kernels_(std::move(kernelCache)),
       uniformScene_{createSetLayout(context.device(), true), nullptr},
       storageScene_{createSetLayout(context.device(), false), nullptr},
+      pipelines_(kKeptPipelines),
       commandPool_(context.device(),
                    vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, context.queueFamily())),
       timestamps_(nullptr) {
@@ -189,9 +190,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
 
 GpuRenderer::~GpuRenderer() {
     if (context_.abandoned()) {  // the hung work may still use them: see LeakIfAbandoned
-        for (auto& [key, pipeline] : pipelines_) {
-            pipeline.release();
-        }
+        pipelines_.forEach([](vk::raii::Pipeline& pipeline) { pipeline.release(); });
         for (SceneBindings* bindings : {&uniformScene_, &storageScene_}) {
             bindings->pipelineLayout.release();
             bindings->setLayout.release();
@@ -214,19 +213,19 @@ Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
     return resolvePrecision(scene, requested, abilities());
 }
 
-const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> spirv, SceneLayout layout,
-                                                const gpu::Specialization& specialization,
+const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> spirv, std::uint64_t generatedId,
+                                                SceneLayout layout, const gpu::Specialization& specialization,
                                                 std::span<const std::byte> sceneValues,
                                                 std::span<const std::uint32_t> sceneSizes) {
     const bool uniform = layout == SceneLayout::Uniform;
-    const PipelineKey key{spirv.data(), uniform, specialization, {sceneValues.begin(), sceneValues.end()}};
-    auto found = pipelines_.find(key);
-    if (found == pipelines_.end()) {
-        const SpecializationData data = specializationData(specialization, sceneValues, sceneSizes);
-        found =
-            pipelines_.emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data)).first;
+    PipelineKey key{generatedId ? nullptr : spirv.data(), generatedId, uniform, specialization,
+                    {sceneValues.begin(), sceneValues.end()}};
+    if (const vk::raii::Pipeline* found = pipelines_.find(key)) {
+        return *found;
     }
-    return found->second;
+    const SpecializationData data = specializationData(specialization, sceneValues, sceneSizes);
+    return pipelines_.insert(std::move(key),
+                             createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data));
 }
 
 const vk::raii::Pipeline& GpuRenderer::kernelPipeline(const Kernel& kernel, KernelBuild& build, SceneLayout layout,
@@ -235,23 +234,25 @@ const vk::raii::Pipeline& GpuRenderer::kernelPipeline(const Kernel& kernel, Kern
                                                       std::span<const std::uint32_t> sceneSizes) {
     std::span<const std::uint32_t> spirv = kernels_.spirv(kernel, &build);
     try {
-        return pipeline(spirv, layout, specialization, sceneValues, sceneSizes);
+        return pipeline(spirv, build.generatedId, layout, specialization, sceneValues, sceneSizes);
     } catch (const vk::SystemError& error) {
         if (!kernels_.fromDiskCache(spirv.data())) {
             throw;
         }
         // The cached SPIR-V is a miss after all: its pipelines go with it, and glslang compiles it afresh.
-        std::erase_if(pipelines_, [&](const auto& entry) { return std::get<0>(entry.first) == spirv.data(); });
+        const std::uint64_t refused = build.generatedId;
+        pipelines_.eraseIf([&](const PipelineKey& key, const auto&) { return std::get<1>(key) == refused; });
         KernelBuild fresh;
         spirv = kernels_.recompile(kernel, std::string("the driver refused its SPIR-V (") + error.what() + ")", &fresh);
         build.compileMilliseconds += fresh.compileMilliseconds;
         build.fromDiskCache = false;
-        return pipeline(spirv, layout, specialization, sceneValues, sceneSizes);
+        build.generatedId = fresh.generatedId;
+        return pipeline(spirv, build.generatedId, layout, specialization, sceneValues, sceneSizes);
     }
 }
 
 void GpuRenderer::releaseGeneratedKernels() {
-    std::erase_if(pipelines_, [&](const auto& entry) { return kernels_.holds(std::get<0>(entry.first)); });
+    pipelines_.eraseIf([](const PipelineKey& key, const auto&) { return std::get<1>(key) != 0; });
     kernels_.forgetGenerated();
 }
 

@@ -10,6 +10,7 @@
 
 #include "camera/camera.h"
 #include "gpu/candidate_lists.h"
+#include "gpu/kept_kernels.h"
 #include "gpu/prebuilt_kernels.h"
 #include "gpu/tile_classes.h"
 #include "shader_interface.h"
@@ -36,6 +37,7 @@ constexpr double kFastMaxShadowOutside = 32.0;
 // lavapipe a class kernel's compile costs about as much as culling saves on 5 to 50 million samples
 // (warm or cold driver cache), so a single frame of ordinary size renders faster whole.
 constexpr std::size_t kMaxTileClasses = 12;
+static_assert(kMaxTileClasses < kKeptPipelines, "a render holds a pipeline per tile class at once");
 constexpr std::uint64_t kCullingMinSamples = std::uint64_t{32} << 20;
 
 // The first sphere that hides `light` from every visible point (sphereHidesLight), if any.
