@@ -139,7 +139,7 @@ bool fitsDevice(const CandidateLists& lists, FloatWidth width, const DeviceAbili
     constexpr std::size_t kTexelBytes = 16;  // RGBA32UI
     const std::size_t largest = std::max({lists.entries.size(), lists.cellStarts.size(),
                                           lists.sphereNodes.size() * record / kTexelBytes,
-                                          lists.gridBytes().size() / kTexelBytes});
+                                          lists.gridByteCount() / kTexelBytes});
     return largest <= device.maxTexelBufferElements;
 }
 
