@@ -580,8 +580,9 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     const std::size_t cells = fixedCells + cameraGrid->cells;
     const std::size_t entries = fixedEntries + cameraGrid->entries;
     const std::size_t samples = std::size_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
-    const LightBudget budget{lightCount ? (total.entries - entries) / lightCount : 0,
-                             lightCount ? std::min((total.cells - cells) / lightCount, kLightCellsPerSample * samples) : 0};
+    const std::size_t lightShare = std::max<std::size_t>(lightCount, 1);
+    const LightBudget budget{(total.entries - entries) / lightShare,
+                             std::min((total.cells - cells) / lightShare, kLightCellsPerSample * samples)};
     const std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
     const bool listsEverySphere = lightCount > 0 && (formulation == Formulation::Textbook ||
                                                      std::ranges::any_of(plans, [](const LightGridPlan& plan) {

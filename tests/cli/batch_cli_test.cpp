@@ -58,7 +58,8 @@ std::string sceneOfStructure(unsigned structure) {
     return R"({"image": {"width": 24, "height": 16}, "camera": {"position": [0, 2, -6]}, "ambient": [0.1, 0.1, 0.1],
                "lights": [{"position": [3, 8, -2], "intensity": 60}],
                "shaders": {"matte": {"type": "lambert", "color": [0.7, 0.4, 0.2]},
-                           "squares": {"type": "checker", "color1": [0.9, 0.9, 0.9], "color2": [0.1, 0.1, 0.1], "size": 1}},
+                           "squares": {"type": "checker", "color1": [0.9, 0.9, 0.9], "color2": [0.1, 0.1, 0.1],
+                                       "size": 1}},
                "nodes": [)" + nodes + "]}";
 }
 
@@ -79,7 +80,8 @@ TEST_F(CliTest, ABatchOfMoreScenesThanTheRendererKeepsKernelsForGivesEachTheImag
         ASSERT_EQ(alone.exitCode, 0) << alone.err;
         EXPECT_EQ(pixelsOf(dir_ / "out" / (name + ".png")), pixelsOf(dir_ / "alone.png")) << name;
     }
-    EXPECT_EQ(pixelsOf(dir_ / "out" / "s100.png"), pixelsOf(dir_ / "out" / ("s" + std::to_string(100 + scenes) + ".png")));
+    const std::string last = "s" + std::to_string(100 + scenes) + ".png";
+    EXPECT_EQ(pixelsOf(dir_ / "out" / "s100.png"), pixelsOf(dir_ / "out" / last));
 }
 
 TEST_F(CliTest, RenderOfADirectoryRendersEverySceneInItIntoTheCurrentDirectory) {

@@ -133,7 +133,8 @@ Scene manyLightsScene() {
     const double side = 4.0 * std::sqrt(24.0) + 10.0;
     scene.lights.clear();
     for (int i = 0; i < 1500; ++i) {
-        const glm::dvec3 position(uniform(engine, -0.5, 0.5) * side, uniform(engine, 3.0, 20.0), uniform(engine, 0.0, 1.0) * side);
+        const glm::dvec3 position(uniform(engine, -0.5, 0.5) * side, uniform(engine, 3.0, 20.0),
+                                  uniform(engine, 0.0, 1.0) * side);
         scene.lights.push_back(PointLight{position, Color(1.0), 0.4 * side * side / 1500.0});
     }
     return scene;
