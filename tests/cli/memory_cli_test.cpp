@@ -117,6 +117,21 @@ TEST_F(MemoryCliTest, AFileOfManyLightsLoadsInAFewTimesItsSizeOfAddressSpace) {
     EXPECT_EQ(pngSize(dir_ / "lights.png"), std::make_pair(16u, 16u));
 }
 
+TEST_F(MemoryCliTest, RunningOutOfMemoryWhileLoadingNamesTheSceneFileNotTheImage) {
+    const std::uint64_t baseline =
+        smallestWorkingLimit("render empty.json --backend cpu --threads 1 --width 1 --height 1 -o tiny.png");
+    const std::uint64_t fileKiB = writeManyLights(dir_ / "lights.json", 350000) / 1024;
+    const RunResult run =
+        underLimit(baseline + fileKiB / 2, "render lights.json --backend cpu --threads 1 -o lights.png");
+    EXPECT_EQ(run.exitCode, 6) << run.err;
+    EXPECT_NE(run.err.find("hexray: error: out of memory: the scene file lights.json (" +
+                           std::to_string((fileKiB + 1023) / 1024) + " MiB): loading a scene takes about twice"),
+              std::string::npos)
+        << run.err;
+    EXPECT_EQ(run.err.find("--width"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "lights.png"));
+}
+
 TEST_F(MemoryCliTest, RunningOutOfMemoryIsExitCode6AndNamesTheSizeToReduce) {
     // What the process needs before any image memory; a few MiB more cannot hold even one band
     // of a 16384-pixel-wide image.
