@@ -12,6 +12,7 @@
 #include "io/output_plan.h"
 #include "scene/scene_loader.h"
 #include "tile/tile_stamp.h"
+#include "util/out_of_memory.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -58,7 +59,11 @@ int guarded(const std::function<int()>& command) {
     } catch (const std::filesystem::filesystem_error& error) {
         printError(error.what());
         return kBadInput;  // a path on the command line that cannot be read
+    } catch (const OutOfMemory& error) {
+        printError(std::string("out of memory: ") + error.what());
+        return kInternalError;
     } catch (const std::bad_alloc&) {
+        // Everything that grows with the scene says so (OutOfMemory); what is left is the image.
         printError("out of memory: make the image narrower (--width): hexray's memory grows with the image's width "
                    "(and, with --aov, its number of lights), not with its height");
         return kInternalError;
@@ -68,7 +73,9 @@ int guarded(const std::function<int()>& command) {
     }
 }
 
-Scene loadScene(const std::string& path, const ImageOverride& image, std::string* identity) {
+namespace {
+
+Scene readAndParse(const std::string& path, const ImageOverride& image, std::string* identity) {
     const std::string text = readSceneFile(path);
     if (identity) {
         *identity = sceneTextIdentity(text);
@@ -81,6 +88,19 @@ Scene loadScene(const std::string& path, const ImageOverride& image, std::string
     Scene scene = parseScene(text, path, parseProgress);
     applyImageOverride(scene, image);
     return scene;
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const ImageOverride& image, std::string* identity) {
+    const auto what = [&] {
+        std::error_code unknown;
+        const std::uintmax_t bytes = std::filesystem::file_size(path, unknown);
+        const std::uint64_t mebibytes = (bytes + (std::uint64_t{1} << 20) - 1) >> 20;
+        const std::string size = unknown ? "" : " (" + std::to_string(mebibytes) + " MiB)";
+        return "the scene file " + printable(path) + size + ": loading a scene takes about twice its file's size";
+    };
+    return holding(what, [&] { return readAndParse(path, image, identity); });
 }
 
 void applyImageOverride(Scene& scene, const ImageOverride& image) {

@@ -32,8 +32,8 @@ constexpr const char* kExitCodes =
     "does not fit a merge, or an output that is an input or another output); 3 Vulkan unavailable or failed (no\n"
     "driver or device, no compute queue, no float64 for --precision f64); 4 --validate and the validation layer\n"
     "reported messages; 5 an output cannot be written (its directory is checked before any work); 6 any other\n"
-    "failure (out of memory: make the image narrower); 7 the Vulkan device was lost or hung during the render;\n"
-    "8 the Vulkan driver ran out of device (or host) memory.\n"
+    "failure (out of memory: the message names what is too big, the scene or the image); 7 the Vulkan device\n"
+    "was lost or hung during the render; 8 the Vulkan driver ran out of device (or host) memory.\n"
     "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except an\n"
     "unknown --device or a missing validation layer), 7 or 8. render of several scenes renders every one it can\n"
     "and exits with the first failed scene's code.";

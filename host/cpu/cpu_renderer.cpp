@@ -19,6 +19,8 @@
 #include "cpu/cpu_intersect.h"
 #include "cpu/cpu_margins.h"
 #include "cpu/cpu_shading.h"
+#include "scene/scene_contents.h"
+#include "util/out_of_memory.h"
 
 namespace hexray {
 
@@ -413,15 +415,29 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acc
     return render;
 }
 
+namespace {
+
+// What the reference holds for a scene, when it cannot: its own copy of the scene and its BVH.
+std::string tooBigForTheCpuReference(const Scene& scene) {
+    const std::uint64_t bytes = scene.nodes.size() * (sizeof(Node) + 2 * sizeof(BvhNode) + sizeof(std::uint32_t)) +
+                                scene.lights.size() * sizeof(PointLight);
+    const std::uint64_t mebibytes = (bytes + (std::uint64_t{1} << 20) - 1) >> 20;
+    return "the scene's " + sceneContents(scene) + " need about " + std::to_string(mebibytes) +
+           " MiB in the CPU reference (its copy of the scene and its BVH)";
+}
+
+}  // namespace
+
 CpuBandRenderer::CpuBandRenderer(const Scene& scene, unsigned threadCount, Acceleration acceleration, bool withAovs,
                                  DecisionRoundoff roundoff)
-    : frame_(inEyeFrame(scene)),
+    : frame_(holding([&] { return tooBigForTheCpuReference(scene); }, [&] { return inEyeFrame(scene); })),
       sheet_(makePixelSheet(frame_.scene.camera, sheetAspect(frame_.scene))),
       threads_(std::min({cpuThreadCount(threadCount), kMaxCpuThreads, std::max(scene.image.height, 1u)})),
       withAovs_(withAovs),
       roundoff_(roundoff) {
     checkShaderIndices(frame_.scene);
-    bvh_ = bvhFor(frame_.scene, acceleration);  // built once and shared, read-only, by every worker
+    // Built once and shared, read-only, by every worker.
+    bvh_ = holding([&] { return tooBigForTheCpuReference(scene); }, [&] { return bvhFor(frame_.scene, acceleration); });
 }
 
 std::uint32_t CpuBandRenderer::rowsPerBand(std::size_t bandBytes) const {

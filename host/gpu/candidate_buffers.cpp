@@ -1,6 +1,7 @@
 #include "gpu/candidate_buffers.h"
 
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 namespace hexray {
@@ -19,23 +20,35 @@ bool CandidateBuffers::isCandidateBinding(std::uint32_t binding) {
 
 CandidateBuffers::TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
                                                             const vk::raii::PhysicalDevice& physicalDevice,
-                                                            std::span<const std::byte> bytes, vk::Format format) {
-    HostVisibleBuffer buffer(device, physicalDevice, bytes.size(), vk::BufferUsageFlagBits::eUniformTexelBuffer);
-    buffer.upload(bytes);
+                                                            std::initializer_list<std::span<const std::byte>> pieces,
+                                                            vk::Format format) {
+    std::size_t size = 0;
+    for (const std::span<const std::byte> piece : pieces) {
+        size += piece.size();
+    }
+    HostVisibleBuffer buffer(device, physicalDevice, size, vk::BufferUsageFlagBits::eUniformTexelBuffer);
+    std::size_t offset = 0;
+    for (const std::span<const std::byte> piece : pieces) {
+        if (!piece.empty()) {  // an empty span may have a null data(), which memcpy must not get
+            std::memcpy(buffer.data() + offset, piece.data(), piece.size());
+        }
+        offset += piece.size();
+    }
     vk::raii::BufferView view(device, vk::BufferViewCreateInfo({}, *buffer.buffer(), format, 0, VK_WHOLE_SIZE));
     return TexelBuffer{std::move(buffer), std::move(view)};
 }
 
 CandidateBuffers::CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                                    const CandidateLists* lists, std::span<const std::byte> sphereRecords)
-    : buffers_{
-          texelBuffer(device, physicalDevice, lists ? std::span<const std::byte>(lists->gridBytes()) : std::span<const std::byte>(),
-                      vk::Format::eR32G32B32A32Uint),
-          texelBuffer(device, physicalDevice, lists ? bytesOf(lists->cellStarts) : std::span<const std::byte>(),
-                      vk::Format::eR32Uint),
-          texelBuffer(device, physicalDevice, lists ? bytesOf(lists->entries) : std::span<const std::byte>(),
-                      vk::Format::eR32Uint),
-          texelBuffer(device, physicalDevice, sphereRecords, vk::Format::eR32G32B32A32Uint)} {}
+    : buffers_{texelBuffer(device, physicalDevice,
+                           {lists ? std::as_bytes(std::span(&lists->cameraAxes, 1)) : std::span<const std::byte>(),
+                            lists ? bytesOf(lists->grids) : std::span<const std::byte>()},
+                           vk::Format::eR32G32B32A32Uint),
+               texelBuffer(device, physicalDevice, {lists ? bytesOf(lists->cellStarts) : std::span<const std::byte>()},
+                           vk::Format::eR32Uint),
+               texelBuffer(device, physicalDevice, {lists ? bytesOf(lists->entries) : std::span<const std::byte>()},
+                           vk::Format::eR32Uint),
+               texelBuffer(device, physicalDevice, {sphereRecords}, vk::Format::eR32G32B32A32Uint)} {}
 
 void CandidateBuffers::write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const {
     for (std::size_t i = 0; i < kBindings.size(); ++i) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 
 #include <vulkan/vulkan_raii.hpp>
@@ -34,8 +35,9 @@ private:
         HostVisibleBuffer buffer;
         vk::raii::BufferView view;
     };
+    // A buffer of `pieces` one after the other (no joined copy of them on the host).
     static TexelBuffer texelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
-                                   std::span<const std::byte> bytes, vk::Format format);
+                                   std::initializer_list<std::span<const std::byte>> pieces, vk::Format format);
 
     std::array<TexelBuffer, 4> buffers_;  // in kBindings' order
 };

@@ -32,6 +32,7 @@ struct PlacedSphere {
     glm::dvec3 center;
     double radius;
     std::uint32_t node;
+    double centerSize;  // |center|
 };
 
 struct PlacedScene {
@@ -65,7 +66,8 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
     glm::dvec3 high = placed.eye;
     for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
         if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry)) {
-            const PlacedSphere s{placement.position(sphere->center), placement.length(sphere->radius), i};
+            const glm::dvec3 center = placement.position(sphere->center);
+            const PlacedSphere s{center, placement.length(sphere->radius), i, glm::length(center)};
             low = glm::min(low, s.center - s.radius);
             high = glm::max(high, s.center + s.radius);
             spheres.push_back(s);
@@ -195,10 +197,16 @@ struct ViewPart {
                                      std::max(window->u1, padded.u1), std::max(window->v1, padded.v1)}
                         : padded;
     }
+
+    void clear() {
+        footprints.clear();
+        window.reset();
+        sampledSides.clear();
+    }
 };
 
-// views[v] as seen by each thread: parts[thread][v]. View 0 is the camera's, then CUBE_FACES per
-// light.
+// Some views (the camera's, or one light's cube faces) as seen by each thread that sighted them:
+// parts[thread][view].
 struct Sightings {
     std::vector<TangentView> views;
     std::vector<std::vector<ViewPart>> parts;
@@ -212,47 +220,57 @@ struct Sightings {
     }
 };
 
-void sightSphere(const PlacedScene& placed, const Sightings& sightings, const Reach& reach, std::uint32_t record,
-                 std::vector<ViewPart>& part) {
-    const PlacedSphere& s = placed.spheres[record];
-    const double center = glm::length(s.center);
-    const glm::dvec3 fromEye = s.center - placed.eye;
-    const double eyeReach = reach.camera(s.radius, glm::length(fromEye), center, placed.eyeSize);
-    if (const auto box = ballFootprint(sightings.views[0], fromEye, eyeReach)) {
-        part[0].add(record, *box);
-    }
-    for (std::size_t light = 0; light < placed.lights.size(); ++light) {
-        const glm::dvec3 fromLight = s.center - placed.lights[light];
-        const double radius = reach.shadow(s.radius, glm::length(fromLight), center, placed.lightSizes[light],
-                                           placed.shadowReach[light]);
-        for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-            const std::size_t view = 1 + light * gpu::CUBE_FACES + face;
-            if (!mayShowOnFace(fromLight, radius, face)) {
-                continue;
-            }
-            if (const auto box = ballFootprint(sightings.views[view], fromLight, radius)) {
-                part[view].add(record, *box);
-            }
-        }
-    }
-}
-
-Sightings sight(const PlacedScene& placed, const Scene& scene, const Reach& reach, unsigned threads) {
+// The camera's view, sighted by `threads` threads, each over its share of the spheres.
+Sightings sightCamera(const PlacedScene& placed, const Scene& scene, const Reach& reach, unsigned threads) {
     Sightings sightings;
     sightings.views.push_back(cameraView(scene));
-    for (std::size_t light = 0; light < placed.lights.size(); ++light) {
-        for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-            sightings.views.push_back(cubeFace(face));
-        }
-    }
-    sightings.parts.assign(threads, std::vector<ViewPart>(sightings.views.size()));
+    sightings.parts.assign(threads, std::vector<ViewPart>(1));
+    const std::size_t spheres = placed.spheres.size();
     runParts(threads, [&](unsigned thread) {
-        const std::size_t end = partBegin(placed.spheres.size(), threads, thread + 1);
-        for (std::size_t record = partBegin(placed.spheres.size(), threads, thread); record < end; ++record) {
-            sightSphere(placed, sightings, reach, std::uint32_t(record), sightings.parts[thread]);
+        ViewPart& part = sightings.parts[thread][0];
+        for (std::size_t record = partBegin(spheres, threads, thread); record < partBegin(spheres, threads, thread + 1);
+             ++record) {
+            const PlacedSphere& s = placed.spheres[record];
+            const glm::dvec3 fromEye = s.center - placed.eye;
+            const double eyeReach = reach.camera(s.radius, glm::length(fromEye), s.centerSize, placed.eyeSize);
+            if (const auto box = ballFootprint(sightings.views[0], fromEye, eyeReach)) {
+                part.add(std::uint32_t(record), *box);
+            }
         }
     });
     return sightings;
+}
+
+// A light's cube faces, for one thread to sight light after light (sightFromLight).
+Sightings lightFaces() {
+    Sightings faces;
+    for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+        faces.views.push_back(cubeFace(face));
+    }
+    faces.parts.assign(1, std::vector<ViewPart>(gpu::CUBE_FACES));
+    return faces;
+}
+
+// What light `light`'s cube faces see, into `faces` (lightFaces), replacing the previous light's.
+void sightFromLight(const PlacedScene& placed, const Reach& reach, std::size_t light, Sightings& faces) {
+    std::vector<ViewPart>& parts = faces.parts[0];
+    for (ViewPart& part : parts) {
+        part.clear();
+    }
+    for (std::uint32_t record = 0; record < placed.spheres.size(); ++record) {
+        const PlacedSphere& s = placed.spheres[record];
+        const glm::dvec3 fromLight = s.center - placed.lights[light];
+        const double radius = reach.shadow(s.radius, glm::length(fromLight), s.centerSize, placed.lightSizes[light],
+                                           placed.shadowReach[light]);
+        for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+            if (!mayShowOnFace(fromLight, radius, face)) {
+                continue;
+            }
+            if (const auto box = ballFootprint(faces.views[face], fromLight, radius)) {
+                parts[face].add(record, *box);
+            }
+        }
+    }
 }
 
 // ---------------------------------------------------------------- grids
@@ -264,6 +282,7 @@ struct ViewSet {
 };
 
 struct GridChoice {
+    double side = 0;                   // of a cell
     std::vector<CandidateGrid> grids;  // one per view of the set
     std::size_t cells = 0;
     std::size_t entries = 0;
@@ -283,6 +302,7 @@ std::optional<TangentBox> viewWindow(const Sightings& sightings, std::size_t vie
 
 GridChoice gridsOfSide(const Sightings& sightings, const ViewSet& set, double cell) {
     GridChoice choice;
+    choice.side = cell;
     for (std::size_t v = set.firstView; v < set.firstView + set.viewCount; ++v) {
         const auto window = viewWindow(sightings, v);
         choice.grids.push_back(window ? gridOver(*window, cell) : CandidateGrid{});
@@ -352,13 +372,127 @@ float floatNotAbove(double x) {
     return double(f) <= x ? f : std::nextafter(f, 0.0f);
 }
 
+// ---------------------------------------------------------------- lights
+
+// What each light may take: the lights share equally what the camera leaves, so that each light's
+// lists depend on it alone and the lights can be built in any order, on any thread.
+struct LightBudget {
+    std::size_t entries = 0;
+    std::size_t cells = 0;
+};
+
+// One light's grids: the side of their cells, or 0 when its lists do not fit its budget (its
+// shadow rays then take the list of every sphere, as if they had no lists).
+struct LightGridPlan {
+    double cellSide = 0;
+    std::size_t cells = 0;
+    std::size_t entries = 0;
+};
+
+constexpr ViewSet kLightFaces{0, gpu::CUBE_FACES};
+
+// Each light's grids, decided light by light on up to `threads` threads (each its own lights; the
+// threads never depend on the number of lights), seeing the spheres anew for each light: only one
+// light's footprints per thread exist at a time.
+std::vector<LightGridPlan> planLightGrids(const PlacedScene& placed, const Reach& reach, const LightBudget& budget,
+                                          unsigned threads) {
+    const std::size_t lights = placed.lights.size();
+    std::vector<LightGridPlan> plans(lights);
+    const unsigned parts = unsigned(std::min<std::size_t>(threads, lights));
+    if (parts == 0) {
+        return plans;
+    }
+    runParts(parts, [&](unsigned part) {
+        Sightings faces = lightFaces();
+        for (std::size_t light = partBegin(lights, parts, part); light < partBegin(lights, parts, part + 1); ++light) {
+            sightFromLight(placed, reach, light, faces);
+            const double side = lightCellSide(faces, kLightFaces, budget.cells);
+            if (const auto choice = chooseGrids(faces, kLightFaces, side, budget.entries, budget.cells)) {
+                plans[light] = {choice->side, choice->cells, choice->entries};
+            }
+        }
+    });
+    return plans;
+}
+
+// A grid whose every ray takes the list in `cell`: a ray longer than 0 is past its reach.
+gpu::GpuCandidateGrid everySphereGrid(std::uint32_t cell) {
+    gpu::GpuCandidateGrid g{};
+    g.window = glm::vec4(-4.0f, -4.0f, 0.125f, 0.125f);  // any face's tangents land in its one cell
+    g.cells = glm::uvec4(1, 1, cell, cell);
+    g.reach = glm::vec4(0.0f, 0, 0, 0);
+    return g;
+}
+
+// Where each light's cells and entries begin, from `firstCell` and `firstEntry` on, light after
+// light; the last element is where the lights' end.
+struct LightOffsets {
+    std::vector<std::size_t> cells;
+    std::vector<std::size_t> entries;
+};
+
+LightOffsets lightOffsets(std::span<const LightGridPlan> plans, std::size_t firstCell, std::size_t firstEntry) {
+    LightOffsets offsets;
+    offsets.cells.reserve(plans.size() + 1);
+    offsets.entries.reserve(plans.size() + 1);
+    for (const LightGridPlan& plan : plans) {
+        offsets.cells.push_back(firstCell);
+        offsets.entries.push_back(firstEntry);
+        firstCell += plan.cells;
+        firstEntry += plan.entries;
+    }
+    offsets.cells.push_back(firstCell);
+    offsets.entries.push_back(firstEntry);
+    return offsets;
+}
+
+// Fills each light's cells, entries and grids as planned, on up to `threads` threads; a light's
+// shadow rays past its reach take `everySphereCell`.
+void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<const LightGridPlan> plans,
+                     const LightOffsets& offsets, std::uint32_t everySphereCell, CandidateLists& lists,
+                     unsigned threads) {
+    const std::size_t lights = plans.size();
+    const unsigned parts = unsigned(std::min<std::size_t>(threads, lights));
+    if (parts == 0) {
+        return;
+    }
+    runParts(parts, [&](unsigned part) {
+        Sightings faces = lightFaces();
+        CellBinner binner(lists.cellStarts, lists.entries);
+        for (std::size_t light = partBegin(lights, parts, part); light < partBegin(lights, parts, part + 1); ++light) {
+            gpu::GpuCandidateGrid* grids = &lists.grids[1 + light * gpu::CUBE_FACES];
+            if (plans[light].cellSide == 0) {
+                std::fill(grids, grids + gpu::CUBE_FACES, everySphereGrid(everySphereCell));
+                continue;
+            }
+            sightFromLight(placed, reach, light, faces);
+            GridChoice choice = gridsOfSide(faces, kLightFaces, plans[light].cellSide);
+            std::size_t cell = offsets.cells[light];
+            std::size_t entry = offsets.entries[light];
+            for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+                CandidateGrid& grid = choice.grids[face];
+                grid.firstCell = std::uint32_t(cell);
+                cell += grid.cellCount();
+                entry = binner.bin(grid, faces.footprints(face), entry);
+            }
+            const bool robust = std::isinf(placed.shadowReach[light]);
+            const std::uint32_t pastReach = robust ? choice.grids[0].firstCell : everySphereCell;
+            for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(placed.shadowReach[light]));
+            }
+        }
+    });
+}
+
 // ---------------------------------------------------------------- assembly
 
+// The cells before the lights': the planes', the camera's, and the list of every sphere.
 class ListWriter {
 public:
     ListWriter(CandidateLists& lists, std::size_t cells, std::size_t entries) : lists_(lists), binner_(lists.cellStarts, lists.entries) {
         lists_.cellStarts.resize(cells + 1);
         lists_.entries.resize(entries);
+        lists_.cellStarts[cells] = std::uint32_t(entries);
     }
 
     // A cell holding `entries`.
@@ -366,6 +500,15 @@ public:
         lists_.cellStarts[nextCell_] = std::uint32_t(nextEntry_);
         std::copy(entries.begin(), entries.end(), lists_.entries.begin() + std::ptrdiff_t(nextEntry_));
         nextEntry_ += entries.size();
+        return nextCell_++;
+    }
+
+    // A cell listing every record, 0 to `count` - 1.
+    std::uint32_t everyRecord(std::size_t count) {
+        lists_.cellStarts[nextCell_] = std::uint32_t(nextEntry_);
+        for (std::size_t record = 0; record < count; ++record) {
+            lists_.entries[nextEntry_++] = std::uint32_t(record);
+        }
         return nextCell_++;
     }
 
@@ -377,14 +520,21 @@ public:
         nextEntry_ = binner_.bin(grid, parts, nextEntry_);
     }
 
-    void finish() { lists_.cellStarts[nextCell_] = std::uint32_t(nextEntry_); }
-
 private:
     CandidateLists& lists_;
     CellBinner binner_;
     std::uint32_t nextCell_ = 0;
     std::size_t nextEntry_ = 0;
 };
+
+// The camera's grid, in the lists' first grid and the cells after the planes'.
+void writeCameraGrid(ListWriter& writer, CandidateGrid grid, const Sightings& camera, CandidateLists& lists) {
+    writer.grid(grid, camera, 0);
+    lists.grids[gpu::CAMERA_GRID] = gpuGrid(grid, grid.firstCell, std::numeric_limits<float>::infinity());
+    const TangentView& view = camera.views[0];
+    lists.cameraAxes = {glm::vec4(glm::vec3(view.right), 0), glm::vec4(glm::vec3(view.down), 0),
+                        glm::vec4(glm::vec3(view.forward), 0)};
+}
 
 }  // namespace
 
@@ -402,72 +552,53 @@ std::size_t CandidateLists::cameraEntries() const {
 }
 
 std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Placement& placement, FloatWidth width,
-                                                  Formulation formulation, unsigned threadCount) {
+                                                  Formulation formulation, unsigned threadCount,
+                                                  const CandidateBudget& total) {
     const auto start = std::chrono::steady_clock::now();
     const unsigned threads = threadsFor(threadCount);
     const PlacedScene placed = placeScene(scene, placement, formulation);
-    const Sightings sightings = sight(placed, scene, Reach(width, formulation), threads);
+    const Reach reach(width, formulation);
+    const Sightings camera = sightCamera(placed, scene, reach, threads);
 
     // The camera's cells start at a pixel's size and may take up to half the budgets; the lights
-    // share what it leaves.
+    // share what it leaves. One list of every sphere serves every light's rays past its reach
+    // (f32-naive) and the lights whose lists do not fit.
     const std::size_t lightCount = placed.lights.size();
-    const bool textbook = formulation == Formulation::Textbook;
-    const std::size_t fixedEntries = placed.planes.size() + (textbook ? lightCount * placed.spheres.size() : 0);
-    std::size_t cells = 1 + (textbook ? lightCount : 0);
-    if (fixedEntries > kMaxEntries) {
+    const std::size_t everySphere = lightCount > 0 ? placed.spheres.size() : 0;
+    const std::size_t fixedEntries = placed.planes.size() + everySphere;
+    const std::size_t fixedCells = 1 + (lightCount > 0 ? 1 : 0);
+    if (fixedEntries > total.entries || fixedCells > total.cells) {
         return std::nullopt;
     }
     const double pixel = glm::length(makePixelSheet(scene.camera, sheetAspect(scene)).right) / scene.image.width;
-    auto camera = chooseGrids(sightings, {0, 1}, pixel, (kMaxEntries - fixedEntries) / kCameraBudgetShareDivisor,
-                              (kMaxCells - cells) / kCameraBudgetShareDivisor);
-    if (!camera) {
+    const auto cameraGrid =
+        chooseGrids(camera, {0, 1}, pixel, (total.entries - fixedEntries) / kCameraBudgetShareDivisor,
+                    (total.cells - fixedCells) / kCameraBudgetShareDivisor);
+    if (!cameraGrid) {
         return std::nullopt;
     }
-    cells += camera->cells;
-    std::size_t entries = fixedEntries + camera->entries;
+    const std::size_t cells = fixedCells + cameraGrid->cells;
+    const std::size_t entries = fixedEntries + cameraGrid->entries;
     const std::size_t samples = std::size_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
-    std::vector<GridChoice> lightGrids;
-    for (std::size_t light = 0; light < lightCount; ++light) {
-        const ViewSet set{1 + light * gpu::CUBE_FACES, gpu::CUBE_FACES};
-        const std::size_t entryBudget = (kMaxEntries - entries) / (lightCount - light);
-        const std::size_t cellBudget =
-            std::min((kMaxCells - cells) / (lightCount - light), kLightCellsPerSample * samples);
-        auto choice = chooseGrids(sightings, set, lightCellSide(sightings, set, cellBudget), entryBudget, cellBudget);
-        if (!choice) {
-            return std::nullopt;
-        }
-        cells += choice->cells;
-        entries += choice->entries;
-        lightGrids.push_back(std::move(*choice));
-    }
+    const std::size_t lightShare = std::max<std::size_t>(lightCount, 1);
+    const LightBudget budget{(total.entries - entries) / lightShare,
+                             std::min((total.cells - cells) / lightShare, kLightCellsPerSample * samples)};
+    const std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
+    const bool listsEverySphere = lightCount > 0 && (formulation == Formulation::Textbook ||
+                                                     std::ranges::any_of(plans, [](const LightGridPlan& plan) {
+                                                         return plan.cellSide == 0;
+                                                     }));
+    const bool unusedEverySphere = lightCount > 0 && !listsEverySphere;  // its cell and entries go unused
+    const LightOffsets offsets = lightOffsets(plans, cells - (unusedEverySphere ? 1 : 0),
+                                              entries - (unusedEverySphere ? everySphere : 0));
 
     CandidateLists lists;
-    ListWriter writer(lists, cells, entries);
+    lists.grids.resize(1 + lightCount * gpu::CUBE_FACES);
+    ListWriter writer(lists, offsets.cells.back(), offsets.entries.back());
     writer.cell(placed.planes);  // gpu::PLANE_CELL
-    CandidateGrid& cameraGrid = camera->grids[0];
-    writer.grid(cameraGrid, sightings, 0);
-    lists.grids.push_back(gpuGrid(cameraGrid, cameraGrid.firstCell, std::numeric_limits<float>::infinity()));
-    const TangentView& view = sightings.views[0];
-    lists.cameraAxes = {glm::vec4(glm::vec3(view.right), 0), glm::vec4(glm::vec3(view.down), 0),
-                        glm::vec4(glm::vec3(view.forward), 0)};
-    std::vector<std::uint32_t> everySphere;
-    if (textbook) {
-        everySphere.resize(placed.spheres.size());
-        for (std::uint32_t record = 0; record < everySphere.size(); ++record) {
-            everySphere[record] = record;
-        }
-    }
-    for (std::size_t light = 0; light < lightCount; ++light) {
-        for (std::size_t face = 0; face < gpu::CUBE_FACES; ++face) {
-            writer.grid(lightGrids[light].grids[face], sightings, 1 + light * gpu::CUBE_FACES + face);
-        }
-        // f32-naive: a ray longer than the lists hold tests every sphere, listed in one more cell.
-        const std::uint32_t pastReach = textbook ? writer.cell(everySphere) : lightGrids[light].grids[0].firstCell;
-        for (const CandidateGrid& face : lightGrids[light].grids) {
-            lists.grids.push_back(gpuGrid(face, pastReach, floatNotAbove(placed.shadowReach[light])));
-        }
-    }
-    writer.finish();
+    writeCameraGrid(writer, cameraGrid->grids[0], camera, lists);
+    const std::uint32_t everySphereCell = listsEverySphere ? writer.everyRecord(everySphere) : 0;
+    writeLightGrids(placed, reach, plans, offsets, everySphereCell, lists, threads);
     lists.sphereNodes.reserve(placed.spheres.size());
     for (const PlacedSphere& s : placed.spheres) {
         lists.sphereNodes.push_back(s.node);

@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "gpu/candidate_tunables.h"
 #include "gpu/gpu_layout.h"
 #include "gpu/render_plan.h"
 #include "scene/scene.h"
@@ -39,16 +40,25 @@ struct CandidateLists {
     std::vector<std::uint32_t> sphereNodes;
     double buildMilliseconds = 0;
 
-    // The grid buffer's contents: the camera's axes, then the grids.
+    // The grid buffer's contents: the camera's axes, then the grids; and their size.
     std::vector<std::byte> gridBytes() const;
+    std::size_t gridByteCount() const { return sizeof cameraAxes + grids.size() * sizeof(gpu::GpuCandidateGrid); }
     std::size_t cameraEntries() const;  // entries of the camera's lists (the rest are the lights')
 };
 
+// How large the lists may grow: candidate_tunables.h's budgets (a test may give smaller ones).
+struct CandidateBudget {
+    std::size_t entries = candidates::kMaxEntries;
+    std::size_t cells = candidates::kMaxCells;
+};
+
 // The lists for `scene` in the shader's placement, float width and formulation, built by
-// `threadCount` threads (0: one per core); nothing when they would not fit candidates::kMaxEntries or
-// candidates::kMaxCells (candidate_tunables.h) (the scene is then traced testing every node). Deterministic: the same
-// scene gives the same lists on any number of threads.
+// `threadCount` threads (0: one per core; never more, whatever the number of lights); nothing when
+// the camera's would not fit half the budget (the scene is then traced testing every node). The
+// lights share the rest equally; a light whose lists would not fit its share takes one list of
+// every sphere instead. Deterministic: the same scene gives the same lists on any number of threads.
 std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Placement& placement, FloatWidth width,
-                                                  Formulation formulation, unsigned threadCount = 0);
+                                                  Formulation formulation, unsigned threadCount = 0,
+                                                  const CandidateBudget& budget = {});
 
 }  // namespace hexray

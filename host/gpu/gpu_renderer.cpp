@@ -17,7 +17,9 @@
 #include "gpu/gpu_scene.h"
 #include "gpu/scene_constants.h"
 #include "gpu/tile_classes.h"
+#include "scene/scene_contents.h"
 #include "util/milliseconds_since.h"
+#include "util/out_of_memory.h"
 #include "vulkan/fault_injection.h"
 #include "vulkan/host_visible_buffer.h"
 
@@ -154,6 +156,42 @@ std::chrono::nanoseconds dispatchTimeout(const Scene& scene, std::uint64_t sampl
     return std::chrono::nanoseconds(std::int64_t(std::min(seconds, 30.0 * 86400.0) * 1e9));
 }
 
+std::string mebibytes(std::uint64_t bytes) {
+    return std::to_string((bytes + (std::uint64_t{1} << 20) - 1) >> 20) + " MiB";
+}
+
+// What the scene's buffers hold on the host (and again on the device): its nodes and lights in the
+// plan's width, and the candidate lists with their sphere records.
+std::uint64_t gpuSceneBytes(const Scene& scene, const RenderPlan& plan) {
+    const bool f64 = plan.width == FloatWidth::F64;
+    std::uint64_t bytes = scene.nodes.size() * (f64 ? sizeof(gpu::GpuNode<double>) : sizeof(gpu::GpuNode<float>)) +
+                          scene.lights.size() * (f64 ? sizeof(gpu::GpuLight<double>) : sizeof(gpu::GpuLight<float>));
+    if (const CandidateLists* lists = plan.candidates.get()) {
+        bytes += lists->sphereNodes.size() *
+                     (f64 ? sizeof(gpu::GpuCandidateSphere<double>) : sizeof(gpu::GpuCandidateSphere<float>)) +
+                 (lists->cellStarts.size() + lists->entries.size()) * sizeof(std::uint32_t) + lists->gridByteCount();
+    }
+    return bytes;
+}
+
+// work(), which packs or uploads the scene: running out of host or device memory there is the
+// scene's size, not the image's.
+template <typename Work>
+decltype(auto) holdingScene(const Scene& scene, const RenderPlan& plan, Work&& work) {
+    const auto what = [&] {
+        return "the scene's " + sceneContents(scene) + " need about " + mebibytes(gpuSceneBytes(scene, plan)) +
+               " in the GPU's buffers, twice that while they are packed and uploaded (try --backend cpu)";
+    };
+    try {
+        return holding(what, work);
+    } catch (const VulkanError& error) {
+        if (error.failure() != VulkanFailure::OutOfMemory) {
+            throw;
+        }
+        throw VulkanError(VulkanFailure::OutOfMemory, error.reason() + ": " + what());
+    }
+}
+
 // Runs `leak` on destruction when the context's device hung.
 struct LeakIfAbandoned {
     const VulkanContext& context;
@@ -173,6 +211,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
       kernels_(std::move(kernelCache)),
       uniformScene_{createSetLayout(context.device(), true), nullptr},
       storageScene_{createSetLayout(context.device(), false), nullptr},
+      pipelines_(kKeptPipelines),
       commandPool_(context.device(),
                    vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, context.queueFamily())),
       timestamps_(nullptr) {
@@ -189,9 +228,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
 
 GpuRenderer::~GpuRenderer() {
     if (context_.abandoned()) {  // the hung work may still use them: see LeakIfAbandoned
-        for (auto& [key, pipeline] : pipelines_) {
-            pipeline.release();
-        }
+        pipelines_.forEach([](vk::raii::Pipeline& pipeline) { pipeline.release(); });
         for (SceneBindings* bindings : {&uniformScene_, &storageScene_}) {
             bindings->pipelineLayout.release();
             bindings->setLayout.release();
@@ -207,26 +244,32 @@ DeviceAbilities GpuRenderer::abilities() const {
 }
 
 RenderPlan GpuRenderer::plan(const Scene& scene, const PlanRequest& request) const {
-    return planRender(scene, request, abilities());
+    const auto what = [&] {
+        const std::uint64_t lists = (candidates::kMaxEntries + candidates::kMaxCells) * sizeof(std::uint32_t) +
+                                    (1 + gpu::CUBE_FACES * scene.lights.size()) * sizeof(gpu::GpuCandidateGrid);
+        return "the scene's " + sceneContents(scene) + ": planning their candidate lists for the GPU (up to " +
+               mebibytes(lists) + ")";
+    };
+    return holding(what, [&] { return planRender(scene, request, abilities()); });
 }
 
 Precision GpuRenderer::resolve(const Scene& scene, Precision requested) const {
     return resolvePrecision(scene, requested, abilities());
 }
 
-const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> spirv, SceneLayout layout,
-                                                const gpu::Specialization& specialization,
+const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> spirv, std::uint64_t generatedId,
+                                                SceneLayout layout, const gpu::Specialization& specialization,
                                                 std::span<const std::byte> sceneValues,
                                                 std::span<const std::uint32_t> sceneSizes) {
     const bool uniform = layout == SceneLayout::Uniform;
-    const PipelineKey key{spirv.data(), uniform, specialization, {sceneValues.begin(), sceneValues.end()}};
-    auto found = pipelines_.find(key);
-    if (found == pipelines_.end()) {
-        const SpecializationData data = specializationData(specialization, sceneValues, sceneSizes);
-        found =
-            pipelines_.emplace(key, createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data)).first;
+    PipelineKey key{generatedId ? nullptr : spirv.data(), generatedId, uniform, specialization,
+                    {sceneValues.begin(), sceneValues.end()}};
+    if (const vk::raii::Pipeline* found = pipelines_.find(key)) {
+        return *found;
     }
-    return found->second;
+    const SpecializationData data = specializationData(specialization, sceneValues, sceneSizes);
+    return pipelines_.insert(std::move(key),
+                             createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data));
 }
 
 const vk::raii::Pipeline& GpuRenderer::kernelPipeline(const Kernel& kernel, KernelBuild& build, SceneLayout layout,
@@ -235,23 +278,25 @@ const vk::raii::Pipeline& GpuRenderer::kernelPipeline(const Kernel& kernel, Kern
                                                       std::span<const std::uint32_t> sceneSizes) {
     std::span<const std::uint32_t> spirv = kernels_.spirv(kernel, &build);
     try {
-        return pipeline(spirv, layout, specialization, sceneValues, sceneSizes);
+        return pipeline(spirv, build.generatedId, layout, specialization, sceneValues, sceneSizes);
     } catch (const vk::SystemError& error) {
         if (!kernels_.fromDiskCache(spirv.data())) {
             throw;
         }
         // The cached SPIR-V is a miss after all: its pipelines go with it, and glslang compiles it afresh.
-        std::erase_if(pipelines_, [&](const auto& entry) { return std::get<0>(entry.first) == spirv.data(); });
+        const std::uint64_t refused = build.generatedId;
+        pipelines_.eraseIf([&](const PipelineKey& key, const auto&) { return std::get<1>(key) == refused; });
         KernelBuild fresh;
         spirv = kernels_.recompile(kernel, std::string("the driver refused its SPIR-V (") + error.what() + ")", &fresh);
         build.compileMilliseconds += fresh.compileMilliseconds;
         build.fromDiskCache = false;
-        return pipeline(spirv, layout, specialization, sceneValues, sceneSizes);
+        build.generatedId = fresh.generatedId;
+        return pipeline(spirv, build.generatedId, layout, specialization, sceneValues, sceneSizes);
     }
 }
 
 void GpuRenderer::releaseGeneratedKernels() {
-    std::erase_if(pipelines_, [&](const auto& entry) { return kernels_.holds(std::get<0>(entry.first)); });
+    pipelines_.eraseIf([](const PipelineKey& key, const auto&) { return std::get<1>(key) != 0; });
     kernels_.forgetGenerated();
 }
 
@@ -470,7 +515,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const bool linear = output != GpuOutput::Encoded8 && !tracing;
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
     const auto uploadStart = std::chrono::steady_clock::now();
-    const PackedScene packed = packFor(scene, plan);
+    const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     result.precision = plan.precision;
     result.usedCandidateLists = plan.layout == SceneLayout::StorageCandidates;
@@ -507,9 +552,12 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
 
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
     const vk::BufferUsageFlags sceneUsage = uniformScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
+    const auto sceneBuffer = [&](std::size_t size) {
+        return holdingScene(scene, plan, [&] { return HostVisibleBuffer(device, physicalDevice, size, sceneUsage); });
+    };
     HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), sceneUsage);
-    HostVisibleBuffer nodeBuffer(device, physicalDevice, packed.nodes.size(), sceneUsage);
-    HostVisibleBuffer lightBuffer(device, physicalDevice, packed.lights.size(), sceneUsage);
+    HostVisibleBuffer nodeBuffer = sceneBuffer(packed.nodes.size());
+    HostVisibleBuffer lightBuffer = sceneBuffer(packed.lights.size());
     // Only the output mode's buffers get their full size; the others are bound but never written.
     HostVisibleBuffer pixelBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixel) : 0, storage);
     HostVisibleBuffer classBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
@@ -525,7 +573,9 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     frameBuffer.upload(std::span(packed.frame));
     nodeBuffer.upload(std::span(packed.nodes));
     lightBuffer.upload(std::span(packed.lights));
-    CandidateBuffers candidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
+    CandidateBuffers candidateBuffers = holdingScene(scene, plan, [&] {
+        return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
+    });
     result.timing.uploadMilliseconds = millisecondsSince(uploadStart);
 
     const std::array<vk::DescriptorPoolSize, 3> poolSizes = {

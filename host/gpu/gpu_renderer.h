@@ -3,7 +3,6 @@
 // generated for the scene, or the data-driven shaders/render.comp.
 
 #include <functional>
-#include <map>
 #include <span>
 #include <tuple>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "image/pixel_class.h"
 #include "image/row_range.h"
 #include "scene/scene.h"
+#include "util/lru_map.h"
 #include "vulkan/vulkan_context.h"
 
 namespace hexray {
@@ -81,8 +81,9 @@ struct GpuRenderResult {
     bool usedCandidateLists = false;  // the spheres were found through candidate lists
 };
 
-// Owns the pipelines for one device, each built on first use, and the kernel compiler. render()
-// may be called for any number of scenes and plans.
+// Owns the pipelines for one device, each built on first use, and the kernel compiler; keeps the
+// most recently used of both (kept_kernels.h). render() may be called for any number of scenes and
+// plans.
 class GpuRenderer {
 public:
     // Images whose pixels exceed `maxBandBytes` (or the device's storage-buffer limit, if
@@ -136,11 +137,14 @@ public:
     Precision resolve(const Scene& scene, Precision requested) const;
 
     // Drops the generated kernels and their pipelines, each made for one scene's structure and
-    // values; the data-driven kernels' pipelines stay. A process that renders many different small
-    // scenes (the differential fuzzer) calls it between them, so that its memory stays bounded.
+    // values; the data-driven kernels' pipelines stay. (Memory is bounded without it: kept_kernels.h.)
     void releaseGeneratedKernels();
 
     DeviceAbilities abilities() const;
+
+    // How many pipelines, and generated kernels' SPIR-V, are held now.
+    std::size_t keptPipelines() const { return pipelines_.size(); }
+    std::size_t keptGeneratedKernels() const { return kernels_.keptKernels(); }
 
 private:
     // One band of rows as the device left it; only the output's own buffer is meaningful.
@@ -168,10 +172,12 @@ private:
     const SceneBindings& bindings(SceneLayout layout) const {
         return layout == SceneLayout::Uniform ? uniformScene_ : storageScene_;
     }
-    // Pipelines by kernel (its SPIR-V's address), layout and specialization (a generated
-    // kernel's scene values included).
-    using PipelineKey = std::tuple<const std::uint32_t*, bool, gpu::Specialization, std::vector<std::byte>>;
-    const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, SceneLayout layout,
+    // Pipelines by kernel (a prebuilt one's SPIR-V address, or a generated one's
+    // KernelBuild::generatedId), layout and specialization (a generated kernel's scene values
+    // included).
+    using PipelineKey =
+        std::tuple<const std::uint32_t*, std::uint64_t, bool, gpu::Specialization, std::vector<std::byte>>;
+    const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, std::uint64_t generatedId, SceneLayout layout,
                                        const gpu::Specialization& specialization,
                                        std::span<const std::byte> sceneValues, std::span<const std::uint32_t> sceneSizes);
     // `kernel`'s SPIR-V (see KernelCompiler) and its pipeline. SPIR-V from the disk cache that the
@@ -187,7 +193,7 @@ private:
     KernelCompiler kernels_;
     SceneBindings uniformScene_;  // small scenes: scene data in uniform buffers
     SceneBindings storageScene_;  // larger ones: in storage buffers, with or without a BVH
-    std::map<PipelineKey, vk::raii::Pipeline> pipelines_;
+    LruMap<PipelineKey, vk::raii::Pipeline> pipelines_;
     vk::raii::CommandPool commandPool_;
     vk::raii::QueryPool timestamps_;  // null when the queue cannot write timestamps
     double nanosecondsPerTick_ = 1.0;

@@ -1,6 +1,5 @@
 #include "gpu/kernel_compiler.h"
 
-#include <algorithm>
 #include <chrono>
 
 #include "gpu/kernel_generator.h"
@@ -15,7 +14,8 @@ std::string kernelCacheKey(const std::string& source) {
            shaderCompilerFingerprint() + "\n" + source;
 }
 
-KernelCompiler::KernelCompiler(KernelCache cache) : cache_(std::move(cache)) {}
+KernelCompiler::KernelCompiler(KernelCache cache, std::size_t keptKernels)
+    : cache_(std::move(cache)), compiled_(keptKernels) {}
 
 std::vector<std::uint32_t> KernelCompiler::compileAndStore(const std::string& source, KernelBuild& record) {
     const auto start = std::chrono::steady_clock::now();
@@ -34,17 +34,19 @@ std::span<const std::uint32_t> KernelCompiler::spirv(const Kernel& kernel, Kerne
     const auto start = std::chrono::steady_clock::now();
     const std::string source = generateKernel(*kernel.code);
     record.generateMilliseconds = millisecondsSince(start);
-    auto found = compiled_.find(source);
-    if (found == compiled_.end()) {
+    Compiled* found = compiled_.find(source);
+    if (!found) {
         const auto lookup = std::chrono::steady_clock::now();
         std::optional<std::vector<std::uint32_t>> cached = cache_.load(kernelCacheKey(source));
         record.loadMilliseconds = millisecondsSince(lookup);
         record.fromDiskCache = cached.has_value();
-        Compiled compiled{cached ? std::move(*cached) : compileAndStore(source, record), record.fromDiskCache};
-        found = compiled_.emplace(source, std::move(compiled)).first;
+        Compiled compiled{cached ? std::move(*cached) : compileAndStore(source, record), record.fromDiskCache,
+                          ++lastId_};
+        found = &compiled_.insert(source, std::move(compiled));
     }
+    record.generatedId = found->id;
     if (build) *build = record;
-    return found->second.spirv;
+    return found->spirv;
 }
 
 std::span<const std::uint32_t> KernelCompiler::recompile(const Kernel& kernel, const std::string& reason,
@@ -54,20 +56,27 @@ std::span<const std::uint32_t> KernelCompiler::recompile(const Kernel& kernel, c
     const std::string source = generateKernel(*kernel.code);
     record.generateMilliseconds = millisecondsSince(start);
     cache_.discard(kernelCacheKey(source), reason);
-    Compiled& compiled = compiled_[source];
-    compiled = Compiled{compileAndStore(source, record), false};
+    // A new id: what was made from the refused SPIR-V is never taken for this.
+    Compiled compiled{compileAndStore(source, record), false, ++lastId_};
+    Compiled* held = compiled_.find(source);
+    held = held ? &(*held = std::move(compiled)) : &compiled_.insert(source, std::move(compiled));
+    record.generatedId = held->id;
     if (build) *build = record;
-    return compiled.spirv;
+    return held->spirv;
 }
 
 bool KernelCompiler::holds(const std::uint32_t* spirv) const {
-    return std::ranges::any_of(compiled_, [&](const auto& entry) { return entry.second.spirv.data() == spirv; });
+    bool found = false;
+    compiled_.forEach([&](const Compiled& compiled) { found = found || compiled.spirv.data() == spirv; });
+    return found;
 }
 
 bool KernelCompiler::fromDiskCache(const std::uint32_t* spirv) const {
-    return std::ranges::any_of(compiled_, [&](const auto& entry) {
-        return entry.second.spirv.data() == spirv && entry.second.fromDiskCache;
+    bool found = false;
+    compiled_.forEach([&](const Compiled& compiled) {
+        found = found || (compiled.spirv.data() == spirv && compiled.fromDiskCache);
     });
+    return found;
 }
 
 }  // namespace hexray

@@ -1,16 +1,17 @@
 #pragma once
 // Turns a plan's Kernel into SPIR-V: a generated kernel is written (kernel_generator.h), looked
-// up in the disk cache (kernel_cache.h) and compiled only when missing, at most once per
-// process for each source; a prebuilt one is used as it is.
+// up in the disk cache (kernel_cache.h) and compiled only when missing; the most recently used
+// are kept in memory (kept_kernels.h); a prebuilt one is used as it is.
 
 #include <cstdint>
-#include <map>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "gpu/kernel_cache.h"
+#include "gpu/kept_kernels.h"
 #include "gpu/render_plan.h"
+#include "util/lru_map.h"
 
 namespace hexray {
 
@@ -20,6 +21,9 @@ struct KernelBuild {
     double compileMilliseconds = 0;   // glslang (0 when the disk cache or this process had it)
     double loadMilliseconds = 0;      // looking in the disk cache: reading and checking a file
     bool fromDiskCache = false;
+    // Which generated kernel's SPIR-V this is: the same number while this compiler keeps it, never
+    // reused for another (0 for a prebuilt kernel), so that what is made from it can be keyed by it.
+    std::uint64_t generatedId = 0;
 };
 
 // The disk cache's key for a generated kernel's source: the source, and everything else that
@@ -31,10 +35,11 @@ std::string kernelCacheKey(const std::string& source);
 
 class KernelCompiler {
 public:
-    explicit KernelCompiler(KernelCache cache = KernelCache(KernelCache::defaultDirectory()));
+    explicit KernelCompiler(KernelCache cache = KernelCache(KernelCache::defaultDirectory()),
+                            std::size_t keptKernels = kKeptGeneratedKernels);
 
-    // Valid as long as this compiler (or, for a prebuilt kernel, its SPIR-V) lives, until forgetGenerated
-    // or recompile.
+    // A generated kernel's stays valid until the next call (which may drop it), a prebuilt one's as
+    // long as its SPIR-V lives.
     std::span<const std::uint32_t> spirv(const Kernel& kernel, KernelBuild* build = nullptr);
 
     // Whether `spirv` is a generated kernel's, held here.
@@ -47,16 +52,20 @@ public:
                                              KernelBuild* build = nullptr);
     // Drops every generated kernel's SPIR-V (the disk cache keeps them).
     void forgetGenerated() { compiled_.clear(); }
+    // How many generated kernels' SPIR-V are held.
+    std::size_t keptKernels() const { return compiled_.size(); }
 
 private:
     struct Compiled {
         std::vector<std::uint32_t> spirv;
         bool fromDiskCache = false;
+        std::uint64_t id = 0;
     };
     std::vector<std::uint32_t> compileAndStore(const std::string& source, KernelBuild& record);
 
     KernelCache cache_;
-    std::map<std::string, Compiled> compiled_;  // by generated source
+    LruMap<std::string, Compiled> compiled_;  // by generated source
+    std::uint64_t lastId_ = 0;
 };
 
 }  // namespace hexray

@@ -10,6 +10,7 @@
 
 #include "camera/camera.h"
 #include "gpu/candidate_lists.h"
+#include "gpu/kept_kernels.h"
 #include "gpu/prebuilt_kernels.h"
 #include "gpu/tile_classes.h"
 #include "shader_interface.h"
@@ -36,7 +37,14 @@ constexpr double kFastMaxShadowOutside = 32.0;
 // lavapipe a class kernel's compile costs about as much as culling saves on 5 to 50 million samples
 // (warm or cold driver cache), so a single frame of ordinary size renders faster whole.
 constexpr std::size_t kMaxTileClasses = 12;
+static_assert(kMaxTileClasses < kKeptPipelines, "a render holds a pipeline per tile class at once");
 constexpr std::uint64_t kCullingMinSamples = std::uint64_t{32} << 20;
+// lavapipe (Mesa's gallivm, LP_MAX_TGSI_LOOP_ITERATIONS) ends every loop of a shader invocation,
+// silently, once its loops together have run this many iterations.
+constexpr std::uint64_t kLavapipeLoopIterations = 65535;
+// The data-driven kernel's iterations per light at a lit point, besides its shadow tests (measured:
+// a floor alone under 21000 lights renders right, under 22500 not).
+constexpr std::uint64_t kLoopIterationsPerLight = 2;
 
 // The first sphere that hides `light` from every visible point (sphereHidesLight), if any.
 std::optional<std::uint32_t> sphereHidingLight(const Scene& scene, const PointLight& light) {
@@ -137,7 +145,7 @@ bool fitsDevice(const CandidateLists& lists, FloatWidth width, const DeviceAbili
     constexpr std::size_t kTexelBytes = 16;  // RGBA32UI
     const std::size_t largest = std::max({lists.entries.size(), lists.cellStarts.size(),
                                           lists.sphereNodes.size() * record / kTexelBytes,
-                                          lists.gridBytes().size() / kTexelBytes});
+                                          lists.gridByteCount() / kTexelBytes});
     return largest <= device.maxTexelBufferElements;
 }
 
@@ -170,6 +178,26 @@ TileClasses tileClassesFor(const Scene& scene, const SceneCode& code) {
     }
     classes.classification = std::move(classification);
     return classes;
+}
+
+// On lavapipe, the data-driven kernel's loop iterations for a pixel that shows a lit surface: per
+// sample, each light's and its shadow tests (its planes and at least one listed sphere, or every
+// node). A warning when they pass what lavapipe runs.
+std::optional<std::string> loopLimitProblem(const Scene& scene, const RenderPlan& plan, const DeviceAbilities& device) {
+    if (plan.layout == SceneLayout::Uniform || device.name.find("llvmpipe") == std::string::npos) {
+        return std::nullopt;  // a generated kernel's loops are unrolled
+    }
+    const std::uint64_t planes = scene.nodes.size() - countSpheres(scene);
+    const std::uint64_t shadowTests = plan.candidates ? planes + 1 : scene.nodes.size();
+    const std::uint64_t iterations =
+        std::uint64_t(scene.image.samplesPerPixel) * scene.lights.size() * (kLoopIterationsPerLight + shadowTests);
+    if (iterations <= kLavapipeLoopIterations) {
+        return std::nullopt;
+    }
+    return "lavapipe stops a shader's loops after 65535 loop iterations in all, and a pixel of this scene may need " +
+           std::to_string(iterations) + " (" + std::to_string(scene.lights.size()) +
+           " lights, each with its shadow tests, per sample): such pixels come out wrong; --backend cpu renders "
+           "them right";
 }
 
 }  // namespace
@@ -246,6 +274,9 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         const bool candidates = plan.layout == SceneLayout::StorageCandidates;
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
+    }
+    if (const auto problem = loopLimitProblem(scene, plan, device)) {
+        plan.warnings.push_back(*problem);
     }
     return plan;
 }

@@ -46,10 +46,11 @@ std::vector<Node> NodeReader::resolve(const std::vector<std::string>& shaderName
         const auto found = shaderIndexOf.find(name);
         shaderIndices.push_back(found == shaderIndexOf.end() ? std::uint32_t(shaderNames.size()) : found->second);
     }
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        const std::uint32_t nameIndex = nodes_[i].shaderIndex;
-        nodes_[i].shaderIndex = shaderIndices[nameIndex];
-        if (nodes_[i].shaderIndex == shaderNames.size()) {
+    std::vector<Node> nodes = std::move(nodes_).take();
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const std::uint32_t nameIndex = nodes[i].shaderIndex;
+        nodes[i].shaderIndex = shaderIndices[nameIndex];
+        if (nodes[i].shaderIndex == shaderNames.size()) {
             const JsonReader reference(Json(), source_, childPath(elementPath("nodes", i), "shader"));
             reference.fail("unknown shader " + quotedForMessage(names_[nameIndex]) +
                            (shaderNames.empty() ? " (no shaders are defined)"
@@ -57,7 +58,7 @@ std::vector<Node> NodeReader::resolve(const std::vector<std::string>& shaderName
         }
     }
     if (firstProblem_) throw *firstProblem_;
-    return std::move(nodes_);
+    return nodes;
 }
 
 std::uint32_t NodeReader::nameIndex(const std::string& name) {

@@ -12,6 +12,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene.h"
 #include "scene/scene_json_parser.h"
+#include "util/chunked_list.h"
 
 namespace hexray {
 
@@ -43,7 +44,7 @@ private:
     const std::string& source_;
     const Json noElements_ = Json::array();  // the parser keeps no elements of "nodes":
     const JsonReader list_;                  // this reader is only their parent, for their paths
-    std::vector<Node> nodes_;                // shaderIndex: into names_ until resolved
+    ChunkedList<Node> nodes_;                // shaderIndex: into names_ until resolved
     std::vector<std::string> names_;
     std::unordered_map<std::string, std::uint32_t> nameIndices_;
     std::optional<SceneError> firstProblem_;

@@ -71,10 +71,10 @@ std::string overflowingLiteral(const std::string& what) {
 class DocumentBuilder {
 public:
     // Elements of the root's "nodes" go to `takeNode` as documents, or, with a `shortcut`, to it
-    // as events.
-    DocumentBuilder(const std::string& text, const std::string& source, const NodeSink* takeNode,
-                    NodeShortcut* shortcut)
-        : text_(text), source_(source), takeNode_(takeNode), shortcut_(shortcut) {}
+    // as events; those of its "lights" to `takeLight` as documents.
+    DocumentBuilder(const std::string& text, const std::string& source, const ElementSink* takeNode,
+                    NodeShortcut* shortcut, const ElementSink& takeLight)
+        : text_(text), source_(source), takeNode_(takeNode), shortcut_(shortcut), takeLight_(takeLight) {}
 
     Json takeDocument() { return std::move(root_); }
 
@@ -145,10 +145,13 @@ public:
     }
 
 private:
+    // The root object's arrays whose elements are handed over one by one.
+    enum class Streamed { No, Nodes, Lights };
+
     struct Frame {
         Json* container = nullptr;  // null inside an element the shortcut reads
         bool isArray = false;
-        bool isRootNodes = false;   // the root object's "nodes"
+        Streamed streamed = Streamed::No;
         std::size_t nextIndex = 0;  // arrays: index of the next element
         std::string currentKey;     // objects: key of the value being read
         Json* slot = nullptr;       // objects: where that value goes
@@ -171,7 +174,7 @@ private:
     // root's "nodes", which begins at depth 2 (an element's value or its start) and has keys,
     // ends and values at depth 3 and beyond.
     bool shortcutTakes(std::size_t depth) const {
-        return shortcut_ && frames_.size() >= depth && frames_[1].isRootNodes;
+        return shortcut_ && frames_.size() >= depth && frames_[1].streamed == Streamed::Nodes;
     }
 
     // The pending value has begun: an array's next one gets the next index.
@@ -202,7 +205,7 @@ private:
             return forward(*shortcut_);
         }
         place(makeValue());
-        handOverCompleteNode();
+        handOverCompleteElement();
         return true;
     }
 
@@ -214,13 +217,16 @@ private:
         }
         if (shortcutTakes(2)) {
             startValue();
-            frames_.push_back(Frame{nullptr, isArray, false, 0, {}, nullptr});
+            frames_.push_back(Frame{nullptr, isArray, Streamed::No, 0, {}, nullptr});
             return forward(*shortcut_);
         }
-        const bool isRootNodes =
-            isArray && frames_.size() == 1 && !frames_[0].isArray && frames_[0].currentKey == "nodes";
+        const bool rootArray = isArray && frames_.size() == 1 && !frames_[0].isArray;
+        const Streamed streamed = !rootArray                               ? Streamed::No
+                                  : frames_[0].currentKey == "nodes"  ? Streamed::Nodes
+                                  : frames_[0].currentKey == "lights" ? Streamed::Lights
+                                                                      : Streamed::No;
         Json* placed = place(makeContainer());
-        frames_.push_back(Frame{placed, isArray, isRootNodes, 0, {}, nullptr});
+        frames_.push_back(Frame{placed, isArray, streamed, 0, {}, nullptr});
         return true;
     }
 
@@ -231,23 +237,25 @@ private:
         if (forwarding) {
             return forward(*shortcut_);
         }
-        handOverCompleteNode();
+        handOverCompleteElement();
         return true;
     }
 
-    // Called when a value is complete: if it is an element of the root's "nodes", the sink
-    // takes it and the document drops it.
-    void handOverCompleteNode() {
-        if (frames_.size() != 2 || !frames_[1].isRootNodes) return;
-        Json& nodes = *frames_[1].container;
-        (*takeNode_)(nodes.back(), frames_[1].nextIndex - 1);
-        nodes.get_ref<Json::array_t&>().pop_back();
+    // Called when a value is complete: if it is an element of the root's "nodes" or "lights", its
+    // sink takes it and the document drops it.
+    void handOverCompleteElement() {
+        if (frames_.size() != 2 || frames_[1].streamed == Streamed::No) return;
+        Json& elements = *frames_[1].container;
+        const ElementSink& take = frames_[1].streamed == Streamed::Nodes ? *takeNode_ : takeLight_;
+        take(elements.back(), frames_[1].nextIndex - 1);
+        elements.get_ref<Json::array_t&>().pop_back();
     }
 
     const std::string& text_;
     const std::string& source_;
-    const NodeSink* takeNode_;
+    const ElementSink* takeNode_;
     NodeShortcut* shortcut_;
+    const ElementSink& takeLight_;
     Json root_;
     std::vector<Frame> frames_;
 };
@@ -309,16 +317,16 @@ bool saxParse(const std::string& text, DocumentBuilder& builder, const ParseProg
 
 }  // namespace
 
-Json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode,
-                    const ParseProgress& progress) {
-    DocumentBuilder builder(text, sourceName, &takeNode, nullptr);
+Json parseSceneJson(const std::string& text, const std::string& sourceName, const ElementSink& takeNode,
+                    const ElementSink& takeLight, const ParseProgress& progress) {
+    DocumentBuilder builder(text, sourceName, &takeNode, nullptr, takeLight);
     saxParse(text, builder, progress);
     return builder.takeDocument();
 }
 
 std::optional<Json> parseSceneJson(const std::string& text, const std::string& sourceName, NodeShortcut& shortcut,
-                                   const ParseProgress& progress) {
-    DocumentBuilder builder(text, sourceName, nullptr, &shortcut);
+                                   const ElementSink& takeLight, const ParseProgress& progress) {
+    DocumentBuilder builder(text, sourceName, nullptr, &shortcut, takeLight);
     if (!saxParse(text, builder, progress)) return std::nullopt;
     return builder.takeDocument();
 }

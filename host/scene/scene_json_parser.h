@@ -16,13 +16,14 @@
 
 namespace hexray {
 
-// Receives each element of the root object's "nodes" array, with its index, as soon as the
-// parser has read it whole. The element is not kept: in the document, "nodes" is an empty
-// array, so a scene of a million nodes never exists as one document (some 700 bytes a node).
-using NodeSink = std::function<void(const nlohmann::json& element, std::size_t index)>;
+// Receives each element of one of the root object's arrays read an element at a time ("nodes"
+// and "lights"), with its index, as soon as the parser has read it whole. The element is not kept:
+// in the document, that array is empty, so a scene of a million nodes or lights never exists as
+// one document (some 700 bytes an element).
+using ElementSink = std::function<void(const nlohmann::json& element, std::size_t index)>;
 
-nlohmann::json parseSceneJson(const std::string& text, const std::string& sourceName, const NodeSink& takeNode,
-                              const ParseProgress& progress = {});
+nlohmann::json parseSceneJson(const std::string& text, const std::string& sourceName, const ElementSink& takeNode,
+                              const ElementSink& takeLight, const ParseProgress& progress = {});
 
 // Reads the events of each element of the root's "nodes" in place of a document: it takes an
 // element by returning true to each of its events, or declines it by returning false. (No
@@ -32,6 +33,7 @@ using NodeShortcut = nlohmann::json_sax<nlohmann::json>;
 // As above, with every element of the root's "nodes" read by `shortcut`; nullopt once it
 // declines one, and the text must then be parsed the general way.
 std::optional<nlohmann::json> parseSceneJson(const std::string& text, const std::string& sourceName,
-                                             NodeShortcut& shortcut, const ParseProgress& progress = {});
+                                             NodeShortcut& shortcut, const ElementSink& takeLight,
+                                             const ParseProgress& progress = {});
 
 }  // namespace hexray

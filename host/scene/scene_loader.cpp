@@ -19,6 +19,7 @@
 
 #include "camera/camera.h"
 #include "scene/json_reader.h"
+#include "scene/light_reader.h"
 #include "scene/node_reader.h"
 #include "scene/scene_json_parser.h"
 #include "scene/text_encoding.h"
@@ -129,15 +130,6 @@ CameraSettings readCamera(const JsonReader& camera) {
     return settings;
 }
 
-PointLight readLight(const JsonReader& light) {
-    light.rejectUnknownKeys({"position", "color", "intensity"});
-    PointLight result;
-    result.position = light.at("position").position();
-    result.color = light.colourOr("color", result.color);
-    result.intensity = light.at("intensity").intensity();
-    return result;
-}
-
 Shader readShader(const JsonReader& shader) {
     const ShaderType type = shader.at("type").choice(kShaderTypes);
     if (type == ShaderType::Checker) {
@@ -151,16 +143,17 @@ Shader readShader(const JsonReader& shader) {
     return LambertShader{color};
 }
 
-Scene readScene(const JsonReader& root, NodeReader&& nodes) {
+Scene readScene(const JsonReader& root, NodeReader&& nodes, LightReader&& lights) {
     root.rejectUnknownKeys({"image", "camera", "background", "ambient", "lights", "shaders", "nodes"});
     Scene scene;
     scene.image = readImage(root.at("image"));
     scene.camera = readCamera(root.at("camera"));
     scene.background = root.colourOr("background", scene.background);
     scene.ambient = root.colourOr("ambient", scene.ambient);
-    if (auto lights = root.find("lights")) {
-        for (const JsonReader& light : lights->elements()) scene.lights.push_back(readLight(light));
+    if (auto found = root.find("lights")) {
+        found->expectArray();  // its elements went to `lights` while the parser read them
     }
+    scene.lights = std::move(lights).take();
     if (auto shaders = root.find("shaders")) {
         for (const auto& [name, shader] : shaders->members()) {
             scene.shaderNames.push_back(name);
@@ -191,15 +184,19 @@ Scene parseScene(const std::string& text, const std::string& sourceName, const P
     // Valid files take the shortcut; a file with a node it declines is parsed again the general way.
     {
         NodeReader nodes(source);
+        LightReader lights(source);
         UsualNodeShortcut shortcut(nodes);
-        if (const std::optional<Json> document = parseSceneJson(text, source, shortcut, progress)) {
-            return readScene(JsonReader(*document, source, ""), std::move(nodes));
+        const auto takeLight = [&lights](const Json& element, std::size_t index) { lights.read(element, index); };
+        if (const std::optional<Json> document = parseSceneJson(text, source, shortcut, takeLight, progress)) {
+            return readScene(JsonReader(*document, source, ""), std::move(nodes), std::move(lights));
         }
     }
     NodeReader nodes(source);
+    LightReader lights(source);
     const auto takeNode = [&nodes](const Json& element, std::size_t index) { nodes.read(element, index); };
-    const Json document = parseSceneJson(text, source, takeNode, progress);
-    return readScene(JsonReader(document, source, ""), std::move(nodes));
+    const auto takeLight = [&lights](const Json& element, std::size_t index) { lights.read(element, index); };
+    const Json document = parseSceneJson(text, source, takeNode, takeLight, progress);
+    return readScene(JsonReader(document, source, ""), std::move(nodes), std::move(lights));
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {

@@ -2,6 +2,8 @@
 // Work split into parts, one thread per part (the caller's among them).
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cstddef>
 #include <exception>
 #include <functional>
@@ -11,6 +13,13 @@
 #include <vector>
 
 namespace hexray {
+
+// How many threads runParts has started in this process: what the tests count, since work split
+// by something that grows with the input (a thread per light) would show there.
+inline std::atomic<std::uint64_t>& partThreadsStarted() {
+    static std::atomic<std::uint64_t> started{0};
+    return started;
+}
 
 // Runs part(i) for every i in [0, parts), each on a thread of its own; parts whose thread cannot
 // start run on the caller's. Rethrows the first exception a part threw, once all have finished.
@@ -33,6 +42,7 @@ inline void runParts(unsigned parts, const std::function<void(unsigned)>& part) 
         for (unsigned index = 1; index < parts; ++index) {
             try {
                 helpers.emplace_back(guarded, index);
+                ++partThreadsStarted();
             } catch (const std::system_error&) {
                 leftOver.push_back(index);
             }

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_fixture.h"
+#include "gpu/kept_kernels.h"
 #include "image/image_io.h"
 
 namespace hexray {
@@ -41,6 +42,46 @@ TEST_F(CliTest, RenderOfSeveralScenesWritesEachToItsOwnImageInOneProcess) {
         ASSERT_EQ(alone.exitCode, 0) << alone.err;
         EXPECT_EQ(pixelsOf(dir_ / "out" / (std::string(name) + ".png")), pixelsOf(dir_ / "alone.png")) << name;
     }
+}
+
+// A small scene whose structure is `structure`'s binary digits (1: a sphere, 0: a plane), so that
+// each number gets its own generated kernel.
+std::string sceneOfStructure(unsigned structure) {
+    std::string nodes;
+    for (unsigned digit = 0, rest = structure; rest > 0; ++digit, rest >>= 1) {
+        nodes += nodes.empty() ? "" : ",";
+        nodes += rest & 1 ? "{\"geometry\": {\"type\": \"sphere\", \"center\": [" + std::to_string(-3.0 + 1.5 * digit) +
+                                ", 0.5, " + std::to_string(4 + digit) + "], \"radius\": 0.7}, \"shader\": \"matte\"}"
+                          : "{\"geometry\": {\"type\": \"plane\", \"y\": " + std::to_string(-1.0 - digit) +
+                                "}, \"shader\": \"squares\"}";
+    }
+    return R"({"image": {"width": 24, "height": 16}, "camera": {"position": [0, 2, -6]}, "ambient": [0.1, 0.1, 0.1],
+               "lights": [{"position": [3, 8, -2], "intensity": 60}],
+               "shaders": {"matte": {"type": "lambert", "color": [0.7, 0.4, 0.2]},
+                           "squares": {"type": "checker", "color1": [0.9, 0.9, 0.9], "color2": [0.1, 0.1, 0.1],
+                                       "size": 1}},
+               "nodes": [)" + nodes + "]}";
+}
+
+TEST_F(CliTest, ABatchOfMoreScenesThanTheRendererKeepsKernelsForGivesEachTheImageItGetsAlone) {
+    // More distinct kernels than are kept, and the first scene again at the end, after its kernel
+    // and pipeline were dropped.
+    const unsigned scenes = unsigned(std::max(kKeptPipelines, kKeptGeneratedKernels)) + 4;
+    fs::create_directories(dir_ / "scenes");
+    fs::create_directories(dir_ / "out");
+    for (unsigned i = 0; i <= scenes; ++i) {
+        writeScene("scenes/s" + std::to_string(100 + i) + ".json", sceneOfStructure(i < scenes ? i + 1 : 1));
+    }
+    const RunResult run = hexray("render scenes --backend gpu -o out/");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    for (unsigned i = 0; i <= scenes; ++i) {
+        const std::string name = "s" + std::to_string(100 + i);
+        const RunResult alone = hexray("render scenes/" + name + ".json --backend gpu -o alone.png");
+        ASSERT_EQ(alone.exitCode, 0) << alone.err;
+        EXPECT_EQ(pixelsOf(dir_ / "out" / (name + ".png")), pixelsOf(dir_ / "alone.png")) << name;
+    }
+    const std::string last = "s" + std::to_string(100 + scenes) + ".png";
+    EXPECT_EQ(pixelsOf(dir_ / "out" / "s100.png"), pixelsOf(dir_ / "out" / last));
 }
 
 TEST_F(CliTest, RenderOfADirectoryRendersEverySceneInItIntoTheCurrentDirectory) {

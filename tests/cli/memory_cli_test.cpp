@@ -92,6 +92,46 @@ TEST_F(MemoryCliTest, AovsOf4096SquaredFitInAGigabyteOfAddressSpace) {
     }
 }
 
+// A scene file of `lights` lights and nothing to light, written compactly.
+std::uint64_t writeManyLights(const fs::path& path, std::size_t lights) {
+    std::ofstream out(path);
+    out << R"({"image": {"width": 16, "height": 16}, "camera": {"position": [0, 1, 0]}, "nodes": [], "lights": [)";
+    for (std::size_t i = 0; i < lights; ++i) {
+        out << (i ? "," : "") << R"({"position":[)" << i % 1000 << ".5," << 10 + i % 7 << "," << i / 1000
+            << R"(.25],"intensity":1.5})";
+    }
+    out << "]}";
+    out.close();
+    return fs::file_size(path);
+}
+
+TEST_F(MemoryCliTest, AFileOfManyLightsLoadsInAFewTimesItsSizeOfAddressSpace) {
+    // The lights are read one at a time, not held as a document (some 700 bytes a light, over ten
+    // times the file), and kept in chunks that never move while the file is read.
+    const std::uint64_t baseline =
+        smallestWorkingLimit("render empty.json --backend cpu --threads 1 --width 1 --height 1 -o tiny.png");
+    const std::uint64_t fileKiB = writeManyLights(dir_ / "lights.json", 350000) / 1024;
+    const RunResult run =
+        underLimit(baseline + 5 * fileKiB, "render lights.json --backend cpu --threads 1 -o lights.png");
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(pngSize(dir_ / "lights.png"), std::make_pair(16u, 16u));
+}
+
+TEST_F(MemoryCliTest, RunningOutOfMemoryWhileLoadingNamesTheSceneFileNotTheImage) {
+    const std::uint64_t baseline =
+        smallestWorkingLimit("render empty.json --backend cpu --threads 1 --width 1 --height 1 -o tiny.png");
+    const std::uint64_t fileKiB = writeManyLights(dir_ / "lights.json", 350000) / 1024;
+    const RunResult run =
+        underLimit(baseline + fileKiB / 2, "render lights.json --backend cpu --threads 1 -o lights.png");
+    EXPECT_EQ(run.exitCode, 6) << run.err;
+    EXPECT_NE(run.err.find("hexray: error: out of memory: the scene file lights.json (" +
+                           std::to_string((fileKiB + 1023) / 1024) + " MiB): loading a scene takes about twice"),
+              std::string::npos)
+        << run.err;
+    EXPECT_EQ(run.err.find("--width"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "lights.png"));
+}
+
 TEST_F(MemoryCliTest, RunningOutOfMemoryIsExitCode6AndNamesTheSizeToReduce) {
     // What the process needs before any image memory; a few MiB more cannot hold even one band
     // of a 16384-pixel-wide image.

@@ -17,6 +17,7 @@
 #include "gpu/candidate_lists.h"
 #include "scene/random_spheres.h"
 #include "support/floor_scene.h"
+#include "util/parallel_parts.h"
 
 namespace hexray {
 namespace {
@@ -141,18 +142,67 @@ TEST(CandidateLists, ListThePlanesFirstThenRecordsInAscendingOrder) {
     EXPECT_EQ(lists->grids.size(), 1 + gpu::CUBE_FACES * scene.lights.size());
 }
 
+// `scene` with `count` lights spread over a square above its spheres.
+Scene withLights(Scene scene, std::size_t count) {
+    scene.lights.clear();
+    for (std::size_t i = 0; i < count; ++i) {
+        scene.lights.push_back(PointLight{{double(i % 37) - 18.0, 40.0 + double(i % 7), double(i / 37)}, Color(1.0), 10.0});
+    }
+    return scene;
+}
+
 TEST(CandidateLists, AreTheSameOnAnyNumberOfThreads) {
-    const Scene scene = testScene(4000);
+    // Few lights (each light's spheres on one thread) and more lights than threads.
+    for (const Scene& scene : {testScene(4000), withLights(testScene(400), 40)}) {
+        const Placement placement = placementFor(scene, Formulation::Robust);
+        const auto one = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, 1);
+        ASSERT_TRUE(one);
+        for (const unsigned threads : {2u, 3u, 8u}) {
+            const auto many = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, threads);
+            ASSERT_TRUE(many);
+            EXPECT_EQ(many->entries, one->entries) << threads << " threads";
+            EXPECT_EQ(many->cellStarts, one->cellStarts) << threads << " threads";
+            EXPECT_EQ(many->sphereNodes, one->sphereNodes) << threads << " threads";
+            EXPECT_EQ(many->gridBytes(), one->gridBytes()) << threads << " threads";
+        }
+    }
+}
+
+TEST(CandidateLists, ManyLightsStartNoMoreThreadsThanFew) {
+    const Scene scene = testScene(300);
     const Placement placement = placementFor(scene, Formulation::Robust);
-    const auto one = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, 1);
-    ASSERT_TRUE(one);
-    for (const unsigned threads : {2u, 3u, 8u}) {
-        const auto many = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, threads);
-        ASSERT_TRUE(many);
-        EXPECT_EQ(many->entries, one->entries) << threads << " threads";
-        EXPECT_EQ(many->cellStarts, one->cellStarts) << threads << " threads";
-        EXPECT_EQ(many->sphereNodes, one->sphereNodes) << threads << " threads";
-        EXPECT_EQ(many->gridBytes(), one->gridBytes()) << threads << " threads";
+    const auto threadsFor = [&](std::size_t lights) {
+        const std::uint64_t before = partThreadsStarted().load();
+        EXPECT_TRUE(buildCandidateLists(withLights(scene, lights), placement, FloatWidth::F32, Formulation::Robust, 2));
+        return partThreadsStarted().load() - before;
+    };
+    const std::uint64_t few = threadsFor(4);
+    EXPECT_EQ(threadsFor(400), few);
+    EXPECT_LE(few, 80u);  // a helper thread per step of the build, whatever the scene
+}
+
+TEST(CandidateLists, ALightWhoseListsDoNotFitItsShareTakesTheListOfEverySphere) {
+    // The camera looks away from the spheres (its lists take a cell), and the lights' share of
+    // the cells is less than a cell per cube face.
+    Scene scene = withLights(testScene(200), 3);
+    scene.camera.yawDegrees += 180.0;
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, 2,
+                                           CandidateBudget{candidates::kMaxEntries, 18});
+    ASSERT_TRUE(lists);
+    std::set<std::uint32_t> every;
+    for (std::uint32_t node = 0; node < scene.nodes.size(); ++node) {
+        if (std::holds_alternative<Sphere>(scene.nodes[node].geometry)) {
+            every.insert(node);
+        }
+    }
+    for (std::uint32_t light = 0; light < 3; ++light) {
+        for (const glm::vec3 fromLight : {glm::vec3(1, 0.2f, -0.3f), glm::vec3(-0.1f, -1, 0.5f), glm::vec3(0, 0, -1)}) {
+            EXPECT_EQ(lightList(*lists, light, fromLight), every) << "light " << light;
+        }
+        const gpu::GpuCandidateGrid& face = lists->grids.at(1 + gpu::CUBE_FACES * light);
+        EXPECT_EQ(face.reach.x, 0.0f);  // every ray is past its reach, and takes the same list
+        EXPECT_EQ(face.cells.w, face.cells.z);
     }
 }
 

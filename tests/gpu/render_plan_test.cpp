@@ -164,5 +164,33 @@ TEST(RenderPlan, EveryPrecisionGetsCandidateLists) {
     EXPECT_EQ(planRender(scene, {Precision::F32Naive}, kLavapipe).kernel.name, "render.comp f32 textbook candidates");
 }
 
+// A floor under `lights` lights: every pixel below the horizon runs the light loop for each.
+Scene floorUnderLights(std::size_t lights) {
+    Scene scene;
+    scene.camera.position = {0, 2, 0};
+    scene.camera.pitchDegrees = -30;
+    scene.shaderNames = {"matte"};
+    scene.shaders = {LambertShader{Color(0.5)}};
+    scene.nodes = {Node{Plane{0.0}, 0}};
+    for (std::size_t i = 0; i < lights; ++i) {
+        scene.lights.push_back(PointLight{{double(i % 100), 10.0, double(i / 100)}, Color(1), 1.0});
+    }
+    return scene;
+}
+
+bool warnsOfTheLoopLimit(const RenderPlan& plan) {
+    return std::ranges::any_of(plan.warnings, [](const std::string& warning) {
+        return warning.find("65535 loop iterations") != std::string::npos;
+    });
+}
+
+TEST(RenderPlan, OnLavapipeAPixelPastItsLoopLimitIsWarnedOf) {
+    const DeviceAbilities lavapipe{"llvmpipe (LLVM 15.0.6, 256 bits)", true};
+    const RenderPlan many = planRender(floorUnderLights(30000), {}, lavapipe);
+    EXPECT_TRUE(warnsOfTheLoopLimit(many));
+    EXPECT_FALSE(warnsOfTheLoopLimit(planRender(floorUnderLights(1000), {}, lavapipe)));
+    EXPECT_FALSE(warnsOfTheLoopLimit(planRender(floorUnderLights(30000), {}, DeviceAbilities{"a GPU", true})));
+}
+
 }  // namespace
 }  // namespace hexray
