@@ -297,12 +297,6 @@ std::vector<BvhNode> buildNodes(std::vector<Item>& items, unsigned threadCount) 
 
 }  // namespace
 
-std::size_t countSpheres(const Scene& scene) {
-    return static_cast<std::size_t>(std::count_if(scene.nodes.begin(), scene.nodes.end(), [](const Node& node) {
-        return std::holds_alternative<Sphere>(node.geometry);
-    }));
-}
-
 bool bvhPays(const Scene& scene) {
     return countSpheres(scene) > kBvhMinSpheres;
 }

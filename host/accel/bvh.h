@@ -12,7 +12,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "accel/acceleration.h"
 #include "scene/scene.h"
+#include "scene/scene_contents.h"  // countSpheres
 
 namespace hexray {
 
@@ -44,18 +46,6 @@ Bvh buildBvh(const Scene& scene, unsigned threadCount = 0);
 
 // Above this many spheres the CPU reference traverses a BVH instead of testing every sphere.
 inline constexpr std::size_t kBvhMinSpheres = 16;
-
-std::size_t countSpheres(const Scene& scene);
-
-// How a renderer finds what a ray meets. Each renderer's Auto decides when its acceleration
-// structure pays; the others exist for tests and benchmarks, not for users.
-enum class Acceleration {
-    Auto,
-    None,    // every node for every ray
-    Always,  // the renderer's structure whenever it can use one: the CPU reference's BVH over the
-             // spheres, the GPU's candidate lists (gpu/candidate_lists.h)
-};
-
 // Whether a BVH makes the CPU reference faster for this scene (more than kBvhMinSpheres spheres).
 bool bvhPays(const Scene& scene);
 

@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "scene/camera_angles.h"  // the angles' meaning: the camera's rotation
 #include "scene/scene.h"
 
 namespace hexray {
@@ -22,23 +23,6 @@ struct PixelSheet {
     glm::dvec3 right{0.0};
     glm::dvec3 down{0.0};
 };
-
-// Roll first, then pitch, then yaw: rotate(-yaw, Y) * rotate(-pitch, X) * rotate(-roll, Z).
-glm::dmat3 cameraRotation(const CameraSettings& camera);
-
-// The direction the camera looks along (the rotated +Z axis).
-glm::dvec3 cameraForward(const CameraSettings& camera);
-
-struct CameraAngles {
-    double yawDegrees = 0.0;
-    double pitchDegrees = 0.0;
-    double rollDegrees = 0.0;
-};
-
-// The angles of a camera at `position` looking at `target`, with the unit vector `up` pointing up in
-// the image as nearly as it can (its part across the view): the scene file's look-at camera, as
-// the course's angles. The caller rejects a target at the position and an `up` along the view.
-CameraAngles lookAtAngles(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up);
 
 // The sheet for a FOV measured across the diagonal of a sheet of the given aspect.
 PixelSheet makePixelSheet(const CameraSettings& camera, double aspect);

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli/command_support.h"
-#include "gpu/kernel_cache.h"
+#include "kernels/kernel_cache.h"
 
 namespace hexray::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "compare/compare.h"
-#include "gpu/precision.h"
+#include "precision/precision.h"
 #include "gpu/render_plan.h"
 #include "tile/tile.h"
 

@@ -8,7 +8,7 @@
 #include "cli/command_support.h"
 #include "cli/progress.h"
 #include "cli/scene_files.h"
-#include "compare/decision_roundoff.h"
+#include "precision/decision_roundoff.h"
 #include "compare/render_comparator.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"

@@ -16,7 +16,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cpu/cpu_renderer.h"
-#include "gpu/kernel_cache.h"
+#include "kernels/kernel_cache.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene.h"

@@ -15,7 +15,7 @@
 #include "cli/render_targets.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
-#include "gpu/shader_compiler.h"
+#include "kernels/shader_compiler.h"
 #include "image/aov.h"
 #include "image/image_row_writer.h"
 #include "io/output_plan.h"

@@ -19,16 +19,10 @@
 #include "camera/camera.h"
 #include "cpu/cpu_intersect.h"
 #include "image/pixel_class.h"
+#include "precision/decision_roundoff.h"
 #include "scene/scene.h"
 
 namespace hexray {
-
-// The unit roundoff of the arithmetic a comparison tests, per kind of decision: float32's 2^-24
-// by default; double's 2^-53 for what a float64 shader computes in double.
-struct DecisionRoundoff {
-    double general = 0x1p-24;
-    double sphereChecker = 0x1p-24;  // a sphere's checker cell, from its angular texture coordinates
-};
 
 // How far roundoff can move the unit direction of a camera ray as the shader forms it, in units
 // of roundoff: topLeft + right * s.x + down * s.y (`sheetPosition` = s) from float copies of the

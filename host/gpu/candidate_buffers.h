@@ -9,7 +9,7 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
-#include "gpu/candidate_lists.h"
+#include "accel/candidate_lists.h"
 #include "vulkan/host_visible_buffer.h"
 
 namespace hexray {

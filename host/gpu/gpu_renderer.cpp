@@ -13,9 +13,9 @@
 #include "camera/camera.h"
 
 #include "gpu/candidate_buffers.h"
-#include "gpu/gpu_layout.h"
+#include "layout/gpu_layout.h"
 #include "gpu/gpu_scene.h"
-#include "gpu/scene_constants.h"
+#include "gpu/scene_constant_values.h"
 #include "gpu/tile_classes.h"
 #include "scene/scene_contents.h"
 #include "util/milliseconds_since.h"

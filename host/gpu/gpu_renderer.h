@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "accel/bvh.h"
-#include "gpu/gpu_layout.h"
-#include "gpu/kernel_compiler.h"
-#include "gpu/precision.h"
+#include "layout/gpu_layout.h"
+#include "kernels/kernel_compiler.h"
+#include "precision/precision.h"
 #include "gpu/render_plan.h"
 #include "image/image.h"
 #include "image/image_io.h"

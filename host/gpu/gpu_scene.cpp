@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "camera/camera.h"
-#include "gpu/precision.h"
+#include "precision/precision.h"
 
 namespace hexray::gpu {
 namespace {

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "gpu/gpu_layout.h"
+#include "layout/gpu_layout.h"
 #include "gpu/render_plan.h"
 #include "scene/scene.h"
 

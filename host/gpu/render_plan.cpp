@@ -9,10 +9,11 @@
 #include <glm/geometric.hpp>
 
 #include "camera/camera.h"
-#include "gpu/candidate_lists.h"
-#include "gpu/kept_kernels.h"
-#include "gpu/prebuilt_kernels.h"
+#include "accel/candidate_lists.h"
+#include "kernels/kept_kernels.h"
+#include "kernels/prebuilt_kernels.h"
 #include "gpu/tile_classes.h"
+#include "scene/scene_contents.h"
 #include "shader_interface.h"
 #include "vulkan/vulkan_context.h"
 

@@ -1,6 +1,8 @@
 #pragma once
-// What a scene holds, in words, for messages: "1000000 spheres, 1 plane and 2 lights".
+// What a scene holds: its spheres counted, and in words, for messages: "1000000 spheres, 1 plane
+// and 2 lights".
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <variant>
@@ -9,11 +11,14 @@
 
 namespace hexray {
 
+inline std::size_t countSpheres(const Scene& scene) {
+    return static_cast<std::size_t>(std::count_if(scene.nodes.begin(), scene.nodes.end(), [](const Node& node) {
+        return std::holds_alternative<Sphere>(node.geometry);
+    }));
+}
+
 inline std::string sceneContents(const Scene& scene) {
-    std::size_t spheres = 0;
-    for (const Node& node : scene.nodes) {
-        spheres += std::holds_alternative<Sphere>(node.geometry);
-    }
+    const std::size_t spheres = countSpheres(scene);
     const auto counted = [](std::size_t count, const char* one, const char* many) {
         return std::to_string(count) + " " + (count == 1 ? one : many);
     };

@@ -17,7 +17,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "camera/camera.h"
+#include "scene/camera_angles.h"
 #include "scene/json_reader.h"
 #include "scene/light_reader.h"
 #include "scene/node_reader.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "gpu/stable_hash.h"
+#include "util/stable_hash.h"
 #include "scene/scene.h"
 
 namespace hexray {

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_fixture.h"
-#include "gpu/kept_kernels.h"
+#include "kernels/kept_kernels.h"
 #include "image/image_io.h"
 
 namespace hexray {

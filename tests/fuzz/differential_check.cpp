@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <map>
 
-#include "compare/decision_roundoff.h"
+#include "precision/decision_roundoff.h"
 #include "cpu/cpu_renderer.h"
 #include "fuzz/near_tie_reasons.h"
 #include "scene/scene_loader.h"

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <string>
 
-#include "gpu/kernel_cache_entry.h"
+#include "kernels/kernel_cache_entry.h"
 #include "util/sha256.h"
 
 namespace hexray::test {

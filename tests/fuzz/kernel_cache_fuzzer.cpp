@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "fuzz/kernel_cache_fuzz_input.h"
-#include "gpu/kernel_cache.h"
-#include "gpu/spirv_validation.h"
+#include "kernels/kernel_cache.h"
+#include "kernels/spirv_validation.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_renderer.h"
-#include "gpu/kept_kernels.h"
+#include "kernels/kept_kernels.h"
 #include "scene/scene.h"
 #include "validated_vulkan.h"
 

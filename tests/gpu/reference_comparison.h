@@ -3,7 +3,7 @@
 // what `hexray compare` does, on whole images.
 
 #include "compare/compare.h"
-#include "compare/decision_roundoff.h"
+#include "precision/decision_roundoff.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
 

@@ -9,10 +9,11 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/candidate_lists.h"
-#include "gpu/kernel_generator.h"
+#include "accel/candidate_lists.h"
+#include "kernels/kernel_generator.h"
 #include "gpu/render_plan.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_contents.h"
 #include "shader_interface.h"
 #include "support/test_paths.h"
 #include "vulkan/vulkan_context.h"

@@ -1,0 +1,66 @@
+#pragma once
+// One grid of the candidate lists (candidate_lists.h): cells over a window of tangent
+// coordinates, the boxes of the spheres a view sees (footprints), and the counting sort that
+// turns footprints into one list per cell.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "accel/sphere_footprint.h"
+
+namespace hexray {
+
+// A sphere's box in one view, padded for the shader's look-up and rounded outward to float.
+struct Footprint {
+    std::uint32_t sphere;  // its record
+    float u0, v0, u1, v1;
+};
+
+// `box` padded by the shader's float look-up error (a few units of float roundoff of its
+// coordinates), rounded outward.
+Footprint footprintOf(std::uint32_t sphere, const TangentBox& box);
+
+// Cells over a window, as the shader looks them up: its floats, and the cells in rows.
+struct CandidateGrid {
+    float u0 = 0;  // the window's first corner
+    float v0 = 0;
+    float uScale = 1;  // cells per unit
+    float vScale = 1;
+    std::uint32_t columns = 1;
+    std::uint32_t rows = 1;
+    std::uint32_t firstCell = 0;  // of all the lists' cells
+
+    std::size_t cellCount() const { return std::size_t(columns) * rows; }
+
+    // The cells a footprint covers, wherever the shader's rounding may put a ray inside it.
+    void cellRange(const Footprint& f, std::uint32_t& column0, std::uint32_t& row0, std::uint32_t& column1,
+                   std::uint32_t& row1) const;
+    std::size_t entries(const Footprint& f) const;
+};
+
+// A grid over `window` of cells of about `cell` on a side (at most 65536 across).
+CandidateGrid gridOver(const TangentBox& window, double cell);
+
+// Lists for the cells of grids, filled from footprints by a counting sort on several threads.
+// Each thread's footprints follow the previous thread's in every list, so lists keep the
+// footprints' order.
+class CellBinner {
+public:
+    // Writes into `cellStarts` and `entries`, sized for every grid to come.
+    CellBinner(std::vector<std::uint32_t>& cellStarts, std::vector<std::uint32_t>& entries)
+        : cellStarts_(cellStarts), entries_(entries) {}
+
+    // Bins `parts` (one span of footprints per thread) into `grid`'s cells, from entry
+    // `firstEntry` on; returns the entry after the last.
+    std::size_t bin(const CandidateGrid& grid, std::span<const std::span<const Footprint>> parts,
+                    std::size_t firstEntry);
+
+private:
+    std::vector<std::uint32_t>& cellStarts_;
+    std::vector<std::uint32_t>& entries_;
+    std::vector<std::vector<std::uint32_t>> counts_;  // per part: counts, then write cursors
+};
+
+}  // namespace hexray

@@ -1,0 +1,610 @@
+#include "accel/candidate_lists.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "camera/camera.h"
+#include "accel/candidate_grid.h"
+#include "accel/candidate_tunables.h"
+#include "accel/morton_order.h"
+#include "accel/sphere_footprint.h"
+#include "shader_interface.h"
+#include "util/milliseconds_since.h"
+#include "util/parallel_parts.h"
+
+namespace hexray {
+namespace {
+
+using namespace candidates;  // the tunables
+
+double roundoff(FloatWidth width) {
+    return width == FloatWidth::F64 ? 0x1p-53 : 0x1p-24;
+}
+
+// ---------------------------------------------------------------- the scene, placed
+
+struct PlacedSphere {
+    glm::dvec3 center;
+    double radius;
+    std::uint32_t node;
+    double centerSize;  // |center|
+};
+
+struct PlacedScene {
+    glm::dvec3 eye{0.0};
+    double eyeSize = 0;  // |eye|
+    std::vector<PlacedSphere> spheres;  // in record order (morton_order.h)
+    std::vector<std::uint32_t> planes;
+    std::vector<glm::dvec3> lights;
+    std::vector<double> lightSizes;   // |light|
+    std::vector<double> shadowReach;  // per light: the longest ray its lists hold (+inf: any)
+};
+
+std::vector<PlacedSphere> inMortonOrder(std::vector<PlacedSphere> spheres) {
+    std::vector<glm::dvec3> centers(spheres.size());
+    std::transform(spheres.begin(), spheres.end(), centers.begin(), [](const PlacedSphere& s) { return s.center; });
+    std::vector<PlacedSphere> ordered;
+    ordered.reserve(spheres.size());
+    for (const std::uint32_t index : mortonOrder(centers)) {
+        ordered.push_back(spheres[index]);
+    }
+    return ordered;
+}
+
+PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulation formulation) {
+    PlacedScene placed;
+    placed.eye = placement.position(scene.camera.position);
+    placed.eyeSize = glm::length(placed.eye);
+    std::vector<PlacedSphere> spheres;
+    spheres.reserve(scene.nodes.size());
+    glm::dvec3 low = placed.eye;
+    glm::dvec3 high = placed.eye;
+    for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
+        if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry)) {
+            const glm::dvec3 center = placement.position(sphere->center);
+            const PlacedSphere s{center, placement.length(sphere->radius), i, glm::length(center)};
+            low = glm::min(low, s.center - s.radius);
+            high = glm::max(high, s.center + s.radius);
+            spheres.push_back(s);
+        } else {
+            placed.planes.push_back(i);
+        }
+    }
+    placed.spheres = inMortonOrder(std::move(spheres));
+    for (const PointLight& light : scene.lights) {
+        const glm::dvec3 position = placement.position(light.position);
+        placed.lights.push_back(position);
+        placed.lightSizes.push_back(glm::length(position));
+        double farthest = 0;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 point(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z);
+            farthest = std::max(farthest, glm::length(point - position));
+        }
+        placed.shadowReach.push_back(formulation == Formulation::Textbook ? kTextbookReachFactor * farthest
+                                                                           : std::numeric_limits<double>::infinity());
+    }
+    return placed;
+}
+
+// ---------------------------------------------------------------- rounding
+
+// The radius a sphere seems to have to the shader's tests: a ray that misses it by less may still
+// be reported as a hit. `scale` is the magnitude of the coordinates and distances involved.
+class Reach {
+public:
+    Reach(FloatWidth width, Formulation formulation)
+        : unit_(kRoundingUnits * roundoff(width)), textbook_(formulation == Formulation::Textbook) {}
+
+    // To a camera ray: `distance` from the eye; the sphere's centre and the eye are `center`
+    // and `eye` large.
+    double camera(double radius, double distance, double center, double eye) const {
+        return stretched(radius, distance + radius + center + eye);
+    }
+
+    // To a shadow ray between a light `light` large and a point at most `rayLength` from it,
+    // `distance` from the sphere. Robust: from the light, whose roots err about as much again as
+    // the discriminant. Textbook: from the point, as large as the light and the ray together; its
+    // root errs by up to the square root of the discriminant's error, so a sphere that far beyond
+    // the light counts too.
+    double shadow(double radius, double distance, double center, double light, double rayLength) const {
+        const double scale = distance + radius + center + light;
+        if (!textbook_) {
+            return stretched(radius, 2.0 * scale);
+        }
+        const double fromPoint = scale + 2.0 * rayLength + light;
+        return 2.0 * stretched(radius, fromPoint) + std::sqrt(unit_) * fromPoint;
+    }
+
+private:
+    // The robust tests err by a few units of the magnitudes; b^2 - 4ac by a few units of their
+    // squares, which lets a ray up to sqrt(units) * |f| from the surface through.
+    double stretched(double radius, double scale) const {
+        const double rounding = unit_ * scale;
+        return textbook_ ? std::sqrt(radius * radius + rounding * scale) + rounding : radius + rounding;
+    }
+
+    double unit_;
+    bool textbook_;
+};
+
+// ---------------------------------------------------------------- views
+
+TangentView cameraView(const Scene& scene) {
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    TangentView view;
+    view.right = glm::normalize(sheet.right);
+    view.down = glm::normalize(sheet.down);
+    view.forward = glm::cross(view.down, view.right);
+    // The sheet lies at distance 1: its point (x, y) of the image has tangent coordinates
+    // left + |right| x / W, top + |down| y / H.
+    const double left = glm::dot(sheet.topLeft, view.right);
+    const double top = glm::dot(sheet.topLeft, view.down);
+    const double marginX = kImageMarginPixels / scene.image.width;
+    const double marginY = kImageMarginPixels / scene.image.height;
+    const double width = glm::length(sheet.right);
+    const double height = glm::length(sheet.down);
+    view.window = {left - marginX * width, top - marginY * height, left + (1 + marginX) * width,
+                   top + (1 + marginY) * height};
+    return view;
+}
+
+// Face 2 * axis + (1 for the negative direction); its tangent axes are the next two, cyclically
+// (as shaders/candidates.glsl's lightCandidates computes them).
+TangentView cubeFace(std::uint32_t face) {
+    const int axis = int(face / 2);
+    TangentView view;
+    view.forward = glm::dvec3(0.0);
+    view.forward[axis] = face % 2 ? -1.0 : 1.0;
+    view.right = glm::dvec3(0.0);
+    view.right[(axis + 1) % 3] = 1.0;
+    view.down = glm::dvec3(0.0);
+    view.down[(axis + 2) % 3] = 1.0;
+    const double edge = 1.0 + kFaceMargin;
+    view.window = {-edge, -edge, edge, edge};
+    return view;
+}
+
+// Whether a ball at `center` (from the cube's centre) of radius `radius` can show on `face`: a
+// point of it must have its face component at least as large as the other two.
+bool mayShowOnFace(const glm::dvec3& center, double radius, std::uint32_t face) {
+    const int axis = int(face / 2);
+    const double along = (face % 2 ? -1.0 : 1.0) * center[axis] + 2.0 * radius;
+    const double across = std::max(std::abs(center[(axis + 1) % 3]), std::abs(center[(axis + 2) % 3]));
+    return along * (1.0 + kFaceMargin) >= across;
+}
+
+// ---------------------------------------------------------------- what the views see
+
+// One thread's share of what one view sees.
+struct ViewPart {
+    std::vector<Footprint> footprints;  // in record order
+    std::optional<TangentBox> window;   // around them all
+    std::vector<float> sampledSides;    // larger sides of the footprints of every kSideSampleStride-th record
+
+    void add(std::uint32_t sphere, const TangentBox& box) {
+        const Footprint f = footprintOf(sphere, box);
+        if (sphere % kSideSampleStride == 0) {
+            sampledSides.push_back(std::max(f.u1 - f.u0, f.v1 - f.v0));
+        }
+        footprints.push_back(f);
+        const TangentBox padded{f.u0, f.v0, f.u1, f.v1};
+        window = window ? TangentBox{std::min(window->u0, padded.u0), std::min(window->v0, padded.v0),
+                                     std::max(window->u1, padded.u1), std::max(window->v1, padded.v1)}
+                        : padded;
+    }
+
+    void clear() {
+        footprints.clear();
+        window.reset();
+        sampledSides.clear();
+    }
+};
+
+// Some views (the camera's, or one light's cube faces) as seen by each thread that sighted them:
+// parts[thread][view].
+struct Sightings {
+    std::vector<TangentView> views;
+    std::vector<std::vector<ViewPart>> parts;
+
+    std::vector<std::span<const Footprint>> footprints(std::size_t view) const {
+        std::vector<std::span<const Footprint>> spans;
+        for (const auto& part : parts) {
+            spans.emplace_back(part[view].footprints);
+        }
+        return spans;
+    }
+};
+
+// The camera's view, sighted by `threads` threads, each over its share of the spheres.
+Sightings sightCamera(const PlacedScene& placed, const Scene& scene, const Reach& reach, unsigned threads) {
+    Sightings sightings;
+    sightings.views.push_back(cameraView(scene));
+    sightings.parts.assign(threads, std::vector<ViewPart>(1));
+    const std::size_t spheres = placed.spheres.size();
+    runParts(threads, [&](unsigned thread) {
+        ViewPart& part = sightings.parts[thread][0];
+        for (std::size_t record = partBegin(spheres, threads, thread); record < partBegin(spheres, threads, thread + 1);
+             ++record) {
+            const PlacedSphere& s = placed.spheres[record];
+            const glm::dvec3 fromEye = s.center - placed.eye;
+            const double eyeReach = reach.camera(s.radius, glm::length(fromEye), s.centerSize, placed.eyeSize);
+            if (const auto box = ballFootprint(sightings.views[0], fromEye, eyeReach)) {
+                part.add(std::uint32_t(record), *box);
+            }
+        }
+    });
+    return sightings;
+}
+
+// A light's cube faces, for one thread to sight light after light (sightFromLight).
+Sightings lightFaces() {
+    Sightings faces;
+    for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+        faces.views.push_back(cubeFace(face));
+    }
+    faces.parts.assign(1, std::vector<ViewPart>(gpu::CUBE_FACES));
+    return faces;
+}
+
+// What light `light`'s cube faces see, into `faces` (lightFaces), replacing the previous light's.
+void sightFromLight(const PlacedScene& placed, const Reach& reach, std::size_t light, Sightings& faces) {
+    std::vector<ViewPart>& parts = faces.parts[0];
+    for (ViewPart& part : parts) {
+        part.clear();
+    }
+    for (std::uint32_t record = 0; record < placed.spheres.size(); ++record) {
+        const PlacedSphere& s = placed.spheres[record];
+        const glm::dvec3 fromLight = s.center - placed.lights[light];
+        const double radius = reach.shadow(s.radius, glm::length(fromLight), s.centerSize, placed.lightSizes[light],
+                                           placed.shadowReach[light]);
+        for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+            if (!mayShowOnFace(fromLight, radius, face)) {
+                continue;
+            }
+            if (const auto box = ballFootprint(faces.views[face], fromLight, radius)) {
+                parts[face].add(record, *box);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------- grids
+
+// Grids for some of the views (the camera's, or one light's faces).
+struct ViewSet {
+    std::size_t firstView = 0;
+    std::size_t viewCount = 0;
+};
+
+struct GridChoice {
+    double side = 0;                   // of a cell
+    std::vector<CandidateGrid> grids;  // one per view of the set
+    std::size_t cells = 0;
+    std::size_t entries = 0;
+};
+
+std::optional<TangentBox> viewWindow(const Sightings& sightings, std::size_t view) {
+    std::optional<TangentBox> window;
+    for (const auto& part : sightings.parts) {
+        if (const auto& w = part[view].window) {
+            window = window ? TangentBox{std::min(window->u0, w->u0), std::min(window->v0, w->v0),
+                                         std::max(window->u1, w->u1), std::max(window->v1, w->v1)}
+                            : *w;
+        }
+    }
+    return window;
+}
+
+GridChoice gridsOfSide(const Sightings& sightings, const ViewSet& set, double cell) {
+    GridChoice choice;
+    choice.side = cell;
+    for (std::size_t v = set.firstView; v < set.firstView + set.viewCount; ++v) {
+        const auto window = viewWindow(sightings, v);
+        choice.grids.push_back(window ? gridOver(*window, cell) : CandidateGrid{});
+        choice.cells += choice.grids.back().cellCount();
+    }
+    std::vector<std::size_t> entries(sightings.parts.size(), 0);
+    runParts(unsigned(sightings.parts.size()), [&](unsigned thread) {
+        for (std::size_t v = 0; v < set.viewCount; ++v) {
+            for (const Footprint& f : sightings.parts[thread][set.firstView + v].footprints) {
+                entries[thread] += choice.grids[v].entries(f);
+            }
+        }
+    });
+    for (const std::size_t count : entries) {
+        choice.entries += count;
+    }
+    return choice;
+}
+
+// The finest grids from cells of side `cell` on, doubling, within the budgets.
+std::optional<GridChoice> chooseGrids(const Sightings& sightings, const ViewSet& set, double cell,
+                                      std::size_t entryBudget, std::size_t cellBudget) {
+    for (int doubling = 0; doubling < 64; ++doubling, cell *= 2.0) {
+        GridChoice choice = gridsOfSide(sightings, set, cell);
+        if (choice.entries <= entryBudget && choice.cells <= cellBudget) {
+            return choice;
+        }
+        if (choice.cells == set.viewCount) {
+            return std::nullopt;  // one cell a view and still too many entries
+        }
+    }
+    return std::nullopt;
+}
+
+// A light's first cell side: the median sampled footprint side, or larger where that would make
+// more than `cellBudget` cells over the light's windows.
+double lightCellSide(const Sightings& sightings, const ViewSet& set, std::size_t cellBudget) {
+    std::vector<float> sides;
+    double area = 0;
+    for (std::size_t v = set.firstView; v < set.firstView + set.viewCount; ++v) {
+        if (const auto window = viewWindow(sightings, v)) {
+            area += window->width() * window->height();
+        }
+        for (const auto& part : sightings.parts) {
+            sides.insert(sides.end(), part[v].sampledSides.begin(), part[v].sampledSides.end());
+        }
+    }
+    if (sides.empty()) {
+        return 1.0;
+    }
+    const auto middle = sides.begin() + std::ptrdiff_t(sides.size() / 2);
+    std::nth_element(sides.begin(), middle, sides.end());
+    return std::max(double(*middle), std::sqrt(area / double(cellBudget)));
+}
+
+gpu::GpuCandidateGrid gpuGrid(const CandidateGrid& grid, std::uint32_t pastReachCell, float reach) {
+    gpu::GpuCandidateGrid g{};
+    g.window = glm::vec4(grid.u0, grid.v0, grid.uScale, grid.vScale);
+    g.cells = glm::uvec4(grid.columns, grid.rows, grid.firstCell, pastReachCell);
+    g.reach = glm::vec4(reach, 0, 0, 0);
+    return g;
+}
+
+// A float no longer than `x`: a ray longer than it may be longer than x.
+float floatNotAbove(double x) {
+    const float f = float(x);
+    return double(f) <= x ? f : std::nextafter(f, 0.0f);
+}
+
+// ---------------------------------------------------------------- lights
+
+// What each light may take: the lights share equally what the camera leaves, so that each light's
+// lists depend on it alone and the lights can be built in any order, on any thread.
+struct LightBudget {
+    std::size_t entries = 0;
+    std::size_t cells = 0;
+};
+
+// One light's grids: the side of their cells, or 0 when its lists do not fit its budget (its
+// shadow rays then take the list of every sphere, as if they had no lists).
+struct LightGridPlan {
+    double cellSide = 0;
+    std::size_t cells = 0;
+    std::size_t entries = 0;
+};
+
+constexpr ViewSet kLightFaces{0, gpu::CUBE_FACES};
+
+// Each light's grids, decided light by light on up to `threads` threads (each its own lights; the
+// threads never depend on the number of lights), seeing the spheres anew for each light: only one
+// light's footprints per thread exist at a time.
+std::vector<LightGridPlan> planLightGrids(const PlacedScene& placed, const Reach& reach, const LightBudget& budget,
+                                          unsigned threads) {
+    const std::size_t lights = placed.lights.size();
+    std::vector<LightGridPlan> plans(lights);
+    const unsigned parts = unsigned(std::min<std::size_t>(threads, lights));
+    if (parts == 0) {
+        return plans;
+    }
+    runParts(parts, [&](unsigned part) {
+        Sightings faces = lightFaces();
+        for (std::size_t light = partBegin(lights, parts, part); light < partBegin(lights, parts, part + 1); ++light) {
+            sightFromLight(placed, reach, light, faces);
+            const double side = lightCellSide(faces, kLightFaces, budget.cells);
+            if (const auto choice = chooseGrids(faces, kLightFaces, side, budget.entries, budget.cells)) {
+                plans[light] = {choice->side, choice->cells, choice->entries};
+            }
+        }
+    });
+    return plans;
+}
+
+// A grid whose every ray takes the list in `cell`: a ray longer than 0 is past its reach.
+gpu::GpuCandidateGrid everySphereGrid(std::uint32_t cell) {
+    gpu::GpuCandidateGrid g{};
+    g.window = glm::vec4(-4.0f, -4.0f, 0.125f, 0.125f);  // any face's tangents land in its one cell
+    g.cells = glm::uvec4(1, 1, cell, cell);
+    g.reach = glm::vec4(0.0f, 0, 0, 0);
+    return g;
+}
+
+// Where each light's cells and entries begin, from `firstCell` and `firstEntry` on, light after
+// light; the last element is where the lights' end.
+struct LightOffsets {
+    std::vector<std::size_t> cells;
+    std::vector<std::size_t> entries;
+};
+
+LightOffsets lightOffsets(std::span<const LightGridPlan> plans, std::size_t firstCell, std::size_t firstEntry) {
+    LightOffsets offsets;
+    offsets.cells.reserve(plans.size() + 1);
+    offsets.entries.reserve(plans.size() + 1);
+    for (const LightGridPlan& plan : plans) {
+        offsets.cells.push_back(firstCell);
+        offsets.entries.push_back(firstEntry);
+        firstCell += plan.cells;
+        firstEntry += plan.entries;
+    }
+    offsets.cells.push_back(firstCell);
+    offsets.entries.push_back(firstEntry);
+    return offsets;
+}
+
+// Fills each light's cells, entries and grids as planned, on up to `threads` threads; a light's
+// shadow rays past its reach take `everySphereCell`.
+void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<const LightGridPlan> plans,
+                     const LightOffsets& offsets, std::uint32_t everySphereCell, CandidateLists& lists,
+                     unsigned threads) {
+    const std::size_t lights = plans.size();
+    const unsigned parts = unsigned(std::min<std::size_t>(threads, lights));
+    if (parts == 0) {
+        return;
+    }
+    runParts(parts, [&](unsigned part) {
+        Sightings faces = lightFaces();
+        CellBinner binner(lists.cellStarts, lists.entries);
+        for (std::size_t light = partBegin(lights, parts, part); light < partBegin(lights, parts, part + 1); ++light) {
+            gpu::GpuCandidateGrid* grids = &lists.grids[1 + light * gpu::CUBE_FACES];
+            if (plans[light].cellSide == 0) {
+                std::fill(grids, grids + gpu::CUBE_FACES, everySphereGrid(everySphereCell));
+                continue;
+            }
+            sightFromLight(placed, reach, light, faces);
+            GridChoice choice = gridsOfSide(faces, kLightFaces, plans[light].cellSide);
+            std::size_t cell = offsets.cells[light];
+            std::size_t entry = offsets.entries[light];
+            for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+                CandidateGrid& grid = choice.grids[face];
+                grid.firstCell = std::uint32_t(cell);
+                cell += grid.cellCount();
+                entry = binner.bin(grid, faces.footprints(face), entry);
+            }
+            const bool robust = std::isinf(placed.shadowReach[light]);
+            const std::uint32_t pastReach = robust ? choice.grids[0].firstCell : everySphereCell;
+            for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(placed.shadowReach[light]));
+            }
+        }
+    });
+}
+
+// ---------------------------------------------------------------- assembly
+
+// The cells before the lights': the planes', the camera's, and the list of every sphere.
+class ListWriter {
+public:
+    ListWriter(CandidateLists& lists, std::size_t cells, std::size_t entries) : lists_(lists), binner_(lists.cellStarts, lists.entries) {
+        lists_.cellStarts.resize(cells + 1);
+        lists_.entries.resize(entries);
+        lists_.cellStarts[cells] = std::uint32_t(entries);
+    }
+
+    // A cell holding `entries`.
+    std::uint32_t cell(std::span<const std::uint32_t> entries) {
+        lists_.cellStarts[nextCell_] = std::uint32_t(nextEntry_);
+        std::copy(entries.begin(), entries.end(), lists_.entries.begin() + std::ptrdiff_t(nextEntry_));
+        nextEntry_ += entries.size();
+        return nextCell_++;
+    }
+
+    // A cell listing every record, 0 to `count` - 1.
+    std::uint32_t everyRecord(std::size_t count) {
+        lists_.cellStarts[nextCell_] = std::uint32_t(nextEntry_);
+        for (std::size_t record = 0; record < count; ++record) {
+            lists_.entries[nextEntry_++] = std::uint32_t(record);
+        }
+        return nextCell_++;
+    }
+
+    // `grid`'s cells, from what `view` sees; sets their first cell.
+    void grid(CandidateGrid& grid, const Sightings& sightings, std::size_t view) {
+        grid.firstCell = nextCell_;
+        nextCell_ += std::uint32_t(grid.cellCount());
+        const auto parts = sightings.footprints(view);
+        nextEntry_ = binner_.bin(grid, parts, nextEntry_);
+    }
+
+private:
+    CandidateLists& lists_;
+    CellBinner binner_;
+    std::uint32_t nextCell_ = 0;
+    std::size_t nextEntry_ = 0;
+};
+
+// The camera's grid, in the lists' first grid and the cells after the planes'.
+void writeCameraGrid(ListWriter& writer, CandidateGrid grid, const Sightings& camera, CandidateLists& lists) {
+    writer.grid(grid, camera, 0);
+    lists.grids[gpu::CAMERA_GRID] = gpuGrid(grid, grid.firstCell, std::numeric_limits<float>::infinity());
+    const TangentView& view = camera.views[0];
+    lists.cameraAxes = {glm::vec4(glm::vec3(view.right), 0), glm::vec4(glm::vec3(view.down), 0),
+                        glm::vec4(glm::vec3(view.forward), 0)};
+}
+
+}  // namespace
+
+std::vector<std::byte> CandidateLists::gridBytes() const {
+    std::vector<std::byte> bytes(sizeof cameraAxes + grids.size() * sizeof(gpu::GpuCandidateGrid));
+    std::memcpy(bytes.data(), &cameraAxes, sizeof cameraAxes);
+    std::memcpy(bytes.data() + sizeof cameraAxes, grids.data(), grids.size() * sizeof(gpu::GpuCandidateGrid));
+    return bytes;
+}
+
+std::size_t CandidateLists::cameraEntries() const {
+    const gpu::GpuCandidateGrid& camera = grids[gpu::CAMERA_GRID];
+    const std::size_t end = camera.cells.z + std::size_t(camera.cells.x) * camera.cells.y;
+    return cellStarts[end] - cellStarts[camera.cells.z];
+}
+
+std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Placement& placement, FloatWidth width,
+                                                  Formulation formulation, unsigned threadCount,
+                                                  const CandidateBudget& total) {
+    const auto start = std::chrono::steady_clock::now();
+    const unsigned threads = threadsFor(threadCount);
+    const PlacedScene placed = placeScene(scene, placement, formulation);
+    const Reach reach(width, formulation);
+    const Sightings camera = sightCamera(placed, scene, reach, threads);
+
+    // The camera's cells start at a pixel's size and may take up to half the budgets; the lights
+    // share what it leaves. One list of every sphere serves every light's rays past its reach
+    // (f32-naive) and the lights whose lists do not fit.
+    const std::size_t lightCount = placed.lights.size();
+    const std::size_t everySphere = lightCount > 0 ? placed.spheres.size() : 0;
+    const std::size_t fixedEntries = placed.planes.size() + everySphere;
+    const std::size_t fixedCells = 1 + (lightCount > 0 ? 1 : 0);
+    if (fixedEntries > total.entries || fixedCells > total.cells) {
+        return std::nullopt;
+    }
+    const double pixel = glm::length(makePixelSheet(scene.camera, sheetAspect(scene)).right) / scene.image.width;
+    const auto cameraGrid =
+        chooseGrids(camera, {0, 1}, pixel, (total.entries - fixedEntries) / kCameraBudgetShareDivisor,
+                    (total.cells - fixedCells) / kCameraBudgetShareDivisor);
+    if (!cameraGrid) {
+        return std::nullopt;
+    }
+    const std::size_t cells = fixedCells + cameraGrid->cells;
+    const std::size_t entries = fixedEntries + cameraGrid->entries;
+    const std::size_t samples = std::size_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
+    const std::size_t lightShare = std::max<std::size_t>(lightCount, 1);
+    const LightBudget budget{(total.entries - entries) / lightShare,
+                             std::min((total.cells - cells) / lightShare, kLightCellsPerSample * samples)};
+    const std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
+    const bool listsEverySphere = lightCount > 0 && (formulation == Formulation::Textbook ||
+                                                     std::ranges::any_of(plans, [](const LightGridPlan& plan) {
+                                                         return plan.cellSide == 0;
+                                                     }));
+    const bool unusedEverySphere = lightCount > 0 && !listsEverySphere;  // its cell and entries go unused
+    const LightOffsets offsets = lightOffsets(plans, cells - (unusedEverySphere ? 1 : 0),
+                                              entries - (unusedEverySphere ? everySphere : 0));
+
+    CandidateLists lists;
+    lists.grids.resize(1 + lightCount * gpu::CUBE_FACES);
+    ListWriter writer(lists, offsets.cells.back(), offsets.entries.back());
+    writer.cell(placed.planes);  // gpu::PLANE_CELL
+    writeCameraGrid(writer, cameraGrid->grids[0], camera, lists);
+    const std::uint32_t everySphereCell = listsEverySphere ? writer.everyRecord(everySphere) : 0;
+    writeLightGrids(placed, reach, plans, offsets, everySphereCell, lists, threads);
+    lists.sphereNodes.reserve(placed.spheres.size());
+    for (const PlacedSphere& s : placed.spheres) {
+        lists.sphereNodes.push_back(s.node);
+    }
+    lists.buildMilliseconds = millisecondsSince(start);
+    return lists;
+}
+
+}  // namespace hexray

@@ -1,0 +1,293 @@
+// The candidate lists on the host: every sphere a camera ray or a shadow ray meets (in exact
+// arithmetic) is in the list of the cell the shader looks the ray up in (a model of
+// shaders/candidates.glsl's float look-up), the lists are sorted, and any number of threads builds
+// the same lists. tests/gpu/gpu_candidates_test.cpp checks the shader's own rounding.
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "camera/camera.h"
+#include "accel/candidate_lists.h"
+#include "gpu/render_plan.h"
+#include "scene/random_spheres.h"
+#include "support/floor_scene.h"
+#include "util/parallel_parts.h"
+
+namespace hexray {
+namespace {
+
+// The list the shader reads for tangent coordinates `tangent` in grid `grid` (gridCandidates).
+std::set<std::uint32_t> listAt(const CandidateLists& lists, std::uint32_t grid, glm::vec2 tangent) {
+    const gpu::GpuCandidateGrid& g = lists.grids.at(grid);
+    const glm::vec2 position = (tangent - glm::vec2(g.window)) * glm::vec2(g.window.z, g.window.w);
+    std::set<std::uint32_t> nodes;
+    if (!(position.x >= 0 && position.y >= 0 && position.x < float(g.cells.x) && position.y < float(g.cells.y))) {
+        return nodes;
+    }
+    const std::uint32_t cell = g.cells.z + std::uint32_t(position.y) * g.cells.x + std::uint32_t(position.x);
+    for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
+        nodes.insert(lists.sphereNodes.at(lists.entries.at(k)));
+    }
+    return nodes;
+}
+
+std::set<std::uint32_t> cameraList(const CandidateLists& lists, const glm::vec3& direction) {
+    const glm::vec2 across(glm::dot(direction, glm::vec3(lists.cameraAxes.right)),
+                           glm::dot(direction, glm::vec3(lists.cameraAxes.down)));
+    return listAt(lists, gpu::CAMERA_GRID, across / glm::dot(direction, glm::vec3(lists.cameraAxes.forward)));
+}
+
+std::set<std::uint32_t> lightList(const CandidateLists& lists, std::uint32_t light, const glm::vec3& fromLight) {
+    const glm::vec3 size = glm::abs(fromLight);
+    const bool x = size.x >= size.y && size.x >= size.z;
+    const bool y = !x && size.y >= size.z;
+    const float major = x ? fromLight.x : (y ? fromLight.y : fromLight.z);
+    const glm::vec2 across = x ? glm::vec2(fromLight.y, fromLight.z)
+                               : (y ? glm::vec2(fromLight.z, fromLight.x) : glm::vec2(fromLight.x, fromLight.y));
+    const std::uint32_t face = (x ? 0u : (y ? 2u : 4u)) + (major < 0 ? 1u : 0u);
+    return listAt(lists, gpu::CAMERA_GRID + 1 + gpu::CUBE_FACES * light + face, across / std::abs(major));
+}
+
+// Directions from `origin` that graze the sphere: `count` of them around its outline, a
+// millionth of its angular radius inside.
+std::vector<glm::dvec3> grazingDirections(const glm::dvec3& origin, const glm::dvec3& center, double radius, int count) {
+    const glm::dvec3 axis = glm::normalize(center - origin);
+    const double halfAngle = std::asin(radius / glm::distance(center, origin)) * (1.0 - 1e-6);
+    const glm::dvec3 side = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 up = glm::cross(axis, side);
+    std::vector<glm::dvec3> directions;
+    for (int k = 0; k < count; ++k) {
+        const double around = 2.0 * 3.14159265358979 * k / count;
+        directions.push_back(std::cos(halfAngle) * axis +
+                             std::sin(halfAngle) * (std::cos(around) * side + std::sin(around) * up));
+    }
+    return directions;
+}
+
+Scene testScene(std::uint32_t spheres) {
+    Scene scene = makeRandomSpheresScene(spheres, 3);
+    scene.image.width = 320;
+    scene.image.height = 180;
+    return scene;
+}
+
+TEST(CandidateLists, HoldEverySphereACameraRayGrazes) {
+    const Scene scene = testScene(3000);
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust);
+    ASSERT_TRUE(lists);
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    const glm::dvec3 forward = glm::normalize(glm::cross(sheet.down, sheet.right));
+    const double corner = 1.0 / glm::length(sheet.topLeft);  // the image's least d . forward
+    std::size_t checked = 0;
+    for (std::uint32_t node = 1; node < scene.nodes.size(); ++node) {
+        const auto& sphere = std::get<Sphere>(scene.nodes[node].geometry);
+        const glm::dvec3 center = placement.position(sphere.center);
+        for (const glm::dvec3& direction : grazingDirections(glm::dvec3(0.0), center, placement.length(sphere.radius), 16)) {
+            if (glm::dot(direction, forward) < corner) {
+                continue;  // out of the image
+            }
+            ++checked;
+            ASSERT_TRUE(cameraList(*lists, glm::vec3(direction)).count(node)) << "node " << node;
+        }
+    }
+    EXPECT_GT(checked, 20000u);
+}
+
+TEST(CandidateLists, HoldEverySphereAShadowRayGrazes) {
+    const Scene scene = testScene(3000);
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust);
+    ASSERT_TRUE(lists);
+    std::size_t checked = 0;
+    for (std::uint32_t light = 0; light < scene.lights.size(); ++light) {
+        const glm::dvec3 position = placement.position(scene.lights[light].position);
+        for (std::uint32_t node = 1; node < scene.nodes.size(); ++node) {
+            const auto& sphere = std::get<Sphere>(scene.nodes[node].geometry);
+            const glm::dvec3 center = placement.position(sphere.center);
+            for (const glm::dvec3& direction : grazingDirections(position, center, placement.length(sphere.radius), 16)) {
+                ++checked;
+                ASSERT_TRUE(lightList(*lists, light, glm::vec3(direction)).count(node)) << "light " << light << ", node " << node;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 2u * 3000u * 16u);
+}
+
+TEST(CandidateLists, ListThePlanesFirstThenRecordsInAscendingOrder) {
+    const Scene scene = testScene(500);
+    const auto lists = buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F64,
+                                           Formulation::Robust);
+    ASSERT_TRUE(lists);
+    ASSERT_EQ(lists->cellStarts.at(gpu::PLANE_CELL + 1), 1u);
+    EXPECT_EQ(lists->entries.at(0), 0u);  // the floor, node 0
+    for (std::size_t cell = gpu::PLANE_CELL + 1; cell + 1 < lists->cellStarts.size(); ++cell) {
+        const auto first = lists->entries.begin() + lists->cellStarts[cell];
+        const auto end = lists->entries.begin() + lists->cellStarts[cell + 1];
+        ASSERT_TRUE(std::is_sorted(first, end)) << "cell " << cell;
+        ASSERT_TRUE(std::adjacent_find(first, end) == end) << "cell " << cell;
+    }
+    EXPECT_EQ(lists->cellStarts.back(), lists->entries.size());
+    std::vector<std::uint32_t> nodes = lists->sphereNodes;
+    std::sort(nodes.begin(), nodes.end());
+    for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+        ASSERT_EQ(nodes[i], i + 1);  // every sphere has one record
+    }
+    EXPECT_EQ(lists->grids.size(), 1 + gpu::CUBE_FACES * scene.lights.size());
+}
+
+// `scene` with `count` lights spread over a square above its spheres.
+Scene withLights(Scene scene, std::size_t count) {
+    scene.lights.clear();
+    for (std::size_t i = 0; i < count; ++i) {
+        scene.lights.push_back(PointLight{{double(i % 37) - 18.0, 40.0 + double(i % 7), double(i / 37)}, Color(1.0), 10.0});
+    }
+    return scene;
+}
+
+TEST(CandidateLists, AreTheSameOnAnyNumberOfThreads) {
+    // Few lights (each light's spheres on one thread) and more lights than threads.
+    for (const Scene& scene : {testScene(4000), withLights(testScene(400), 40)}) {
+        const Placement placement = placementFor(scene, Formulation::Robust);
+        const auto one = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, 1);
+        ASSERT_TRUE(one);
+        for (const unsigned threads : {2u, 3u, 8u}) {
+            const auto many = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, threads);
+            ASSERT_TRUE(many);
+            EXPECT_EQ(many->entries, one->entries) << threads << " threads";
+            EXPECT_EQ(many->cellStarts, one->cellStarts) << threads << " threads";
+            EXPECT_EQ(many->sphereNodes, one->sphereNodes) << threads << " threads";
+            EXPECT_EQ(many->gridBytes(), one->gridBytes()) << threads << " threads";
+        }
+    }
+}
+
+TEST(CandidateLists, ManyLightsStartNoMoreThreadsThanFew) {
+    const Scene scene = testScene(300);
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto threadsFor = [&](std::size_t lights) {
+        const std::uint64_t before = partThreadsStarted().load();
+        EXPECT_TRUE(buildCandidateLists(withLights(scene, lights), placement, FloatWidth::F32, Formulation::Robust, 2));
+        return partThreadsStarted().load() - before;
+    };
+    const std::uint64_t few = threadsFor(4);
+    EXPECT_EQ(threadsFor(400), few);
+    EXPECT_LE(few, 80u);  // a helper thread per step of the build, whatever the scene
+}
+
+TEST(CandidateLists, ALightWhoseListsDoNotFitItsShareTakesTheListOfEverySphere) {
+    // The camera looks away from the spheres (its lists take a cell), and the lights' share of
+    // the cells is less than a cell per cube face.
+    Scene scene = withLights(testScene(200), 3);
+    scene.camera.yawDegrees += 180.0;
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, 2,
+                                           CandidateBudget{candidates::kMaxEntries, 18});
+    ASSERT_TRUE(lists);
+    std::set<std::uint32_t> every;
+    for (std::uint32_t node = 0; node < scene.nodes.size(); ++node) {
+        if (std::holds_alternative<Sphere>(scene.nodes[node].geometry)) {
+            every.insert(node);
+        }
+    }
+    for (std::uint32_t light = 0; light < 3; ++light) {
+        for (const glm::vec3 fromLight : {glm::vec3(1, 0.2f, -0.3f), glm::vec3(-0.1f, -1, 0.5f), glm::vec3(0, 0, -1)}) {
+            EXPECT_EQ(lightList(*lists, light, fromLight), every) << "light " << light;
+        }
+        const gpu::GpuCandidateGrid& face = lists->grids.at(1 + gpu::CUBE_FACES * light);
+        EXPECT_EQ(face.reach.x, 0.0f);  // every ray is past its reach, and takes the same list
+        EXPECT_EQ(face.cells.w, face.cells.z);
+    }
+}
+
+TEST(CandidateLists, ListEverySphereForTextbookShadowRaysPastTheirReach) {
+    const Scene scene = testScene(200);
+    const auto lists = buildCandidateLists(scene, placementFor(scene, Formulation::Textbook), FloatWidth::F32,
+                                           Formulation::Textbook);
+    ASSERT_TRUE(lists);
+    const gpu::GpuCandidateGrid& face = lists->grids.at(1);
+    ASSERT_TRUE(std::isfinite(face.reach.x));
+    EXPECT_EQ(lists->cellStarts.at(face.cells.w + 1) - lists->cellStarts.at(face.cells.w), 200u);
+    const auto robust = buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F32,
+                                            Formulation::Robust);
+    ASSERT_TRUE(robust);
+    EXPECT_TRUE(std::isinf(robust->grids.at(1).reach.x));  // robust shadow rays start at the light
+}
+
+// Which spheres (node indices) any cell of grid `grid` lists, and how many cells list each.
+std::map<std::uint32_t, std::size_t> cellsListing(const CandidateLists& lists, std::uint32_t grid) {
+    const gpu::GpuCandidateGrid& g = lists.grids.at(grid);
+    std::map<std::uint32_t, std::size_t> cells;
+    for (std::uint32_t cell = g.cells.z; cell < g.cells.z + g.cells.x * g.cells.y; ++cell) {
+        for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
+            ++cells[lists.sphereNodes.at(lists.entries.at(k))];
+        }
+    }
+    return cells;
+}
+
+std::size_t cellCount(const CandidateLists& lists, std::uint32_t grid) {
+    return std::size_t(lists.grids.at(grid).cells.x) * lists.grids.at(grid).cells.y;
+}
+
+// The floor, then the eye looking along +z at a sphere on its left and one on its right, with one
+// behind it.
+Scene handMadeScene() {
+    Scene scene = test::floorSeenFrom({0.0, 2.0, -10.0}, 0.0, 70.0, 320, 180);
+    scene.lights = {PointLight{{0.0, 30.0, 20.0}, Color(1.0), 900.0}};
+    for (const glm::dvec3& center : {glm::dvec3(-8.0, 2.0, 20.0), glm::dvec3(8.0, 2.0, 20.0), glm::dvec3(0.0, 2.0, -30.0)}) {
+        scene.nodes.push_back(Node{Sphere{center, 1.0}, 1});
+    }
+    return scene;
+}
+
+TEST(CandidateLists, ListEachSphereOnlyWhereTheEyeCanSeeIt) {
+    const Scene scene = handMadeScene();
+    const Placement placement = placementFor(scene, Formulation::Robust);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust);
+    ASSERT_TRUE(lists);
+    const auto towards = [&](std::uint32_t node) {
+        return glm::vec3(glm::normalize(std::get<Sphere>(scene.nodes[node].geometry).center - scene.camera.position));
+    };
+    EXPECT_EQ(cameraList(*lists, towards(1)), std::set<std::uint32_t>{1});
+    EXPECT_EQ(cameraList(*lists, towards(2)), std::set<std::uint32_t>{2});
+    EXPECT_TRUE(cameraList(*lists, glm::vec3(0.0f, 0.0f, 1.0f)).empty()) << "between the two spheres";
+    const std::map<std::uint32_t, std::size_t> listed = cellsListing(*lists, gpu::CAMERA_GRID);
+    EXPECT_FALSE(listed.count(3)) << "the sphere behind the eye";
+    ASSERT_TRUE(listed.count(1) && listed.count(2));
+    // Its outline is about 15 pixels across and the camera's cells start at a pixel: its box's
+    // cells, a few hundred, not the window's.
+    EXPECT_LT(listed.at(1), 1000u);
+    EXPECT_GT(cellCount(*lists, gpu::CAMERA_GRID), 2 * listed.at(1));
+}
+
+TEST(CandidateLists, ListASphereAroundTheEyeOrALightOrFillingTheViewInEveryCell) {
+    Scene scene = handMadeScene();
+    const glm::dvec3 light = scene.lights.at(0).position;
+    scene.nodes.push_back(Node{Sphere{scene.camera.position + glm::dvec3(1.0, 0.0, 0.0), 3.0}, 1});  // 4: the eye's
+    scene.nodes.push_back(Node{Sphere{light + glm::dvec3(0.0, 0.5, 0.0), 1.0}, 1});                   // 5: the light's
+    scene.nodes.push_back(Node{Sphere{{0.0, 2.0, 1e6 + 60.0}, 1e6}, 1});                              // 6: a wall ahead
+    for (const Formulation formulation : {Formulation::Robust, Formulation::Textbook}) {
+        for (const FloatWidth width : {FloatWidth::F32, FloatWidth::F64}) {
+            const auto lists = buildCandidateLists(scene, placementFor(scene, formulation), width, formulation);
+            ASSERT_TRUE(lists);
+            const std::map<std::uint32_t, std::size_t> camera = cellsListing(*lists, gpu::CAMERA_GRID);
+            EXPECT_EQ(camera.at(4), cellCount(*lists, gpu::CAMERA_GRID));
+            EXPECT_EQ(camera.at(6), cellCount(*lists, gpu::CAMERA_GRID));
+            for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+                const std::uint32_t grid = gpu::CAMERA_GRID + 1 + face;  // light 0's faces
+                EXPECT_EQ(cellsListing(*lists, grid).at(5), cellCount(*lists, grid)) << "face " << face;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace hexray
