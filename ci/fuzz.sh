@@ -15,8 +15,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = --differential ]; then
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build build --parallel "$(nproc)" --target hexray_differential_fuzzer >/dev/null
+  cmake --preset release >/dev/null
+  cmake --build --preset release --parallel "$(nproc)" --target hexray_differential_fuzzer >/dev/null
   lavapipe_icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -n 1)
   export VK_DRIVER_FILES="$lavapipe_icd" VK_ICD_FILENAMES="$lavapipe_icd"
   # One process a core, each on every jobs-th seed, each with one lavapipe thread: a 32 x 24 image
@@ -53,8 +53,8 @@ piece_seconds=$((seconds / 4))
 cache_seconds=$((seconds / 4))
 scene_seconds=$((seconds - piece_seconds - cache_seconds))
 
-cmake -S . -B build-fuzz -DHEXRAY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build build-fuzz --parallel "$(nproc)"
+cmake --preset fuzz
+cmake --build --preset fuzz --parallel "$(nproc)"
 
 # New inputs go to scratch corpora; the seed folders are only read. Scene inputs are capped at
 # 4 KiB, above every shipped scene, so mutations stay cheap (the 20 KB deep-nesting seed is cut).

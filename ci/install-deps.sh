@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package hexray needs to build, render and test.
-# `--bench` adds what only ci/bench-report.sh and ci/scale-bench.sh use: Embree 3 (the bench's
+# `--bench` adds what only tools/bench-report.sh and tools/scale-bench.sh use: Embree 3 (the bench's
 # optional yardstick) and matplotlib (the plot). Idempotent: safe to run again; apt skips what
 # is already installed.
 set -euo pipefail
@@ -14,6 +14,8 @@ packages=(
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
+  clang-format-14 clang-tidy-14  # ci/lint.sh: the house style (clang-tidy only with --tidy)
+  git  # ci/lint.sh lists the tracked files; the build records the revision
 )
 case "${1:-}" in
   --bench) packages+=(libembree-dev python3-matplotlib) ;;

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Builds hexray and its tests with AddressSanitizer and UndefinedBehaviorSanitizer in
-# build-asan/ and runs every test there (GPU tests on lavapipe; Mesa and the Vulkan loader
-# are not instrumented, hexray's host code is). Any sanitizer report fails. Needs the
-# packages from ci/install-deps.sh; ci/test.sh runs it after the normal build and tests.
+# Builds the hexray executable and its command-line tests with AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-asan/ and runs those tests there: the executable as users
+# run it (every subcommand, bad inputs, faults, signals, outputs), GPU work on lavapipe (Mesa and
+# the Vulkan loader are not instrumented, hexray's host code is). Any sanitizer report fails.
+# The readers of untrusted files are fuzzed under the same sanitizers (ci/fuzz.sh); the unit and
+# GPU tests run in the release build. Needs the packages from ci/install-deps.sh; ci/test.sh runs
+# it after the normal build and tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,13 +16,32 @@ export ASAN_OPTIONS="abort_on_error=1:halt_on_error=1:detect_stack_use_after_ret
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/ci/lsan.supp:print_suppressions=0"
 
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
-  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
-cmake --build build-asan --parallel "$(nproc)"
+# The flags are CMakePresets.json's "asan" (-g1: line tables, all a report's stack needs).
+cmake --preset asan
+cmake --build --preset asan --parallel "$(nproc)" --target hexray hexray_cli_tests
 
 cc -shared -fPIC -O1 -o build-asan/keep-libraries-loaded.so ci/keep-libraries-loaded.c
 export LD_PRELOAD="$PWD/build-asan/keep-libraries-loaded.so"
+export VK_DRIVER_FILES
+VK_DRIVER_FILES=$(sed -n 's/^HEXRAY_TEST_VULKAN_DRIVER:STRING=//p' build-asan/CMakeCache.txt)
 
-lavapipe_icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -n 1)
-export VK_DRIVER_FILES="$lavapipe_icd" VK_ICD_FILENAMES="$lavapipe_icd"
-ctest --test-dir build-asan --output-on-failure --parallel "$(nproc)"
+# Tests that repeat the same code over many scenes or frames; they run in the release build.
+repeated="ProgressCliTest.RenderShowsRowsDoneAndTimeLeftOnATerminalOnBothBackends"
+repeated+=":CliTest.ABatchOfMoreScenesThanTheRendererKeepsKernelsForGivesEachTheImageItGetsAlone"
+repeated+=":CliTest.CompareAllPrintsOneTableOfScenesAndPrecisions"
+repeated+=":TileCliTest.MergedGpuTilesWithCullingAreTheSingleRenderPixelForPixel"
+
+# One process per core, each a shard of the tests (GoogleTest's own sharding).
+shards=$(nproc)
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+pids=()
+for ((shard = 0; shard < shards; shard++)); do
+  GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard \
+    build-asan/tests/hexray_cli_tests --gtest_filter="-$repeated" --gtest_brief=1 >"$logs/$shard" 2>&1 &
+  pids+=($!)
+done
+status=0
+for pid in "${pids[@]}"; do wait "$pid" || status=1; done
+cat "$logs"/*
+exit "$status"

@@ -1,6 +1,6 @@
 // Candidate lists, in render.comp's HEXRAY_CANDIDATES variant: for each cell of a grid over the
 // directions seen from the eye, and from each light, the spheres a ray in that direction can meet
-// (built on the host, conservatively: host/gpu/candidate_lists.h). A ray looks its cell up by its
+// (built on the host, conservatively: host/accel/candidate_lists.h). A ray looks its cell up by its
 // own direction and tests that cell's spheres only; planes, unbounded, are listed in one cell of
 // their own. Every buffer here is a uniform texel buffer (see shader_interface.h).
 #ifndef HEXRAY_CANDIDATES_GLSL
@@ -10,7 +10,7 @@
 #include "shader_interface.h"
 
 // Texels 0 to 2: the camera's right, down and forward axes (floats). Then three texels per grid
-// (host/gpu/gpu_layout.h's GpuCandidateGrid), over tangent coordinates (u, v) =
+// (host/layout/gpu_layout.h's GpuCandidateGrid), over tangent coordinates (u, v) =
 // (d . right, d . down) / (d . forward) of a direction d from the grid's origin.
 layout(set = 0, binding = CANDIDATE_GRID_BINDING) uniform usamplerBuffer candidateGrids;
 // Cell c lists entries cellStarts[c] to cellStarts[c + 1].

@@ -1,4 +1,4 @@
-// Inspection outputs (host/gpu/gpu_layout.h, "Inspection"): per-pixel AOVs for `render --aov`,
+// Inspection outputs (host/layout/gpu_layout.h, "Inspection"): per-pixel AOVs for `render --aov`,
 // and a trace of one pixel for `hexray pixel`. traceSurface and traceLight are called while
 // shading; both compile away unless OUTPUT_MODE asks for a trace.
 #ifndef HEXRAY_INSPECT_HOOKS_GLSL

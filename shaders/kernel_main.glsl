@@ -1,7 +1,7 @@
 // The entry point every kernel shares: one invocation per pixel averages its samples, and
 // writes what OUTPUT_MODE asks for. A kernel defines, before including this file, how a ray
 // finds its nearest hit and how a hit is shaded: the data-driven loops of render.comp, or the
-// code hexray generates for one scene (host/gpu/kernel_generator.h).
+// code hexray generates for one scene (host/kernels/kernel_generator.h).
 #ifndef HEXRAY_KERNEL_MAIN_GLSL
 #define HEXRAY_KERNEL_MAIN_GLSL
 

@@ -37,7 +37,7 @@ real planeNodeDistance(Ray ray, uint i) {
 // Distance along a camera ray to node i. Camera rays all start at the eye, whose power with
 // respect to each sphere the host computed.
 real cameraRayDistance(Ray ray, uint i) {
-    return isPlaneNode(i) ? planeNodeDistance(ray, i) : sphereNodeDistance(ray, i, nodes[i].surface.x);
+    return isPlaneNode(i) ? planeNodeDistance(ray, i) : sphereNodeDistance(ray, i, nodes[i].eyePower);
 }
 
 #endif  // HEXRAY_NODE_TESTS_GLSL

@@ -1,6 +1,6 @@
 #version 450
 // hexray's data-driven kernel, for scenes too large for a generated one (see
-// host/gpu/kernel_generator.h): every ray tests every node in a loop over the storage buffers,
+// host/kernels/kernel_generator.h): every ray tests every node in a loop over the storage buffers,
 // or, with HEXRAY_CANDIDATES, only the nodes listed for its direction (candidates.glsl): the
 // same tests on the same nodes in the same order, less the nodes it cannot meet. Compiled at
 // build time for f32, f64 (HEXRAY_F64) and f32-naive (HEXRAY_TEXTBOOK), with and without
@@ -68,7 +68,7 @@ bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit,
 
 bool isOccluded(uint light, LightPath path, Hit hit) {
     vec3r position = lights[light].position.xyz;
-    bool ownLeftOut = nodes[hit.node].surface.x > 0.0;  // planes: 0
+    bool ownLeftOut = nodes[hit.node].eyePower > 0.0;  // planes: 0
 #ifdef HEXRAY_TEXTBOOK
     bool blocked = false;
 #else
@@ -102,7 +102,7 @@ Surface hitSurface(Ray ray, Hit hit) {
 #ifdef HEXRAY_TEXTBOOK
     return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
-    real eyePower = nodes[hit.node].surface.x;
+    real eyePower = nodes[hit.node].eyePower;
     Surface sphere = sphereSurface(ray, geometry, eyePower);
     // Seen from inside, the sphere is among its own shadow tests: its shadow rays start off it.
     sphere.shadowOrigin = eyePower > 0.0 ? sphere.shadowOrigin : shadowOriginOffSphere(sphere, geometry);

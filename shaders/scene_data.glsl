@@ -1,4 +1,4 @@
-// The scene as uploaded by the host. Mirrors host/gpu/gpu_layout.h (std430, offsets asserted there).
+// The scene as uploaded by the host. Mirrors host/layout/gpu_layout.h (std430, offsets asserted there).
 // With the camera-relative placement the eye is the origin.
 //
 // Small scenes (HEXRAY_UNIFORM_SCENE: up to SMALL_SCENE_CAPACITY nodes and lights) come in
@@ -35,7 +35,10 @@ SCENE_BLOCK(FRAME_BINDING) FrameBlock {
 struct Node {
     uvec4 kinds;      // .x geometry, .y shader
     vec4r geometry;   // plane: .x height; sphere: .xyz centre, .w radius
-    vec4r surface;    // sphere: .x the eye's power |eye - centre|^2 - r^2 (from the host, in double)
+    real eyePower;    // sphere: the eye's power |eye - centre|^2 - r^2 (from the host, in double); planes: 0
+    real unused0;
+    real unused1;
+    real unused2;
     vec4 color1;
     vec4 color2;
     vec4r checker;    // .x size, .yz eye's fractional cell (plane), .w parity of the eye's cells

@@ -1,7 +1,7 @@
 // Every constant the host (C++) and the shaders (GLSL) must agree on, read by both: the C++
-// side includes this file from host/gpu/gpu_layout.h and host/image/pixel_class.h, the GLSL
+// side includes this file from host/layout/gpu_layout.h and host/image/pixel_class.h, the GLSL
 // side from the shader library. The std430 struct mirrors and their offset checks are C++
-// only (host/gpu/gpu_layout.h); their GLSL declarations are in scene_data.glsl.
+// only (host/layout/gpu_layout.h); their GLSL declarations are in scene_data.glsl.
 #ifndef HEXRAY_SHADER_INTERFACE_H
 #define HEXRAY_SHADER_INTERFACE_H
 
@@ -51,7 +51,7 @@ HEXRAY_CONSTANT uint OUTPUT_LINEAR_CLASSES_AND_AOV = 3u;  // pixels, classes and
 HEXRAY_CONSTANT uint OUTPUT_TRACE = 4u;                   // one pixel explained into the trace buffer
 
 // Specialization constant ids: every kernel's, then a generated kernel's scene values
-// (host/gpu/scene_constants.h), one id per component from FIRST_SCENE_CONSTANT_ID on.
+// (host/kernels/scene_constants.h), one id per component from FIRST_SCENE_CONSTANT_ID on.
 HEXRAY_CONSTANT uint OUTPUT_MODE_ID = 0u;
 HEXRAY_CONSTANT uint SAMPLES_PER_PIXEL_ID = 1u;
 HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 2u;
@@ -74,7 +74,7 @@ HEXRAY_CONSTANT uint TRACE_LIGHT_AT_POINT = 4u;       // r^2 = 0
 // come in uniform blocks of this many entries.
 HEXRAY_CONSTANT uint SMALL_SCENE_CAPACITY = 32u;
 
-// Candidate lists (host/gpu/candidate_lists.h): cell 0 lists the planes, by node index, and every
+// Candidate lists (host/accel/candidate_lists.h): cell 0 lists the planes, by node index, and every
 // other cell spheres, by their rank among the scene's spheres (their record in the sphere buffer).
 // Grid 0 is the camera's, then each light has one grid per face of a cube around it, face
 // 2 * axis + (1 if the direction along that axis is negative).

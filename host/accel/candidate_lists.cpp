@@ -16,6 +16,7 @@
 #include "shader_interface.h"
 #include "util/milliseconds_since.h"
 #include "util/parallel_parts.h"
+#include "unit_roundoff.h"
 
 namespace hexray {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 using namespace candidates;  // the tunables
 
 double roundoff(FloatWidth width) {
-    return width == FloatWidth::F64 ? 0x1p-53 : 0x1p-24;
+    return width == FloatWidth::F64 ? FLOAT64_UNIT_ROUNDOFF : FLOAT32_UNIT_ROUNDOFF;
 }
 
 // ---------------------------------------------------------------- the scene, placed
@@ -543,12 +544,6 @@ std::vector<std::byte> CandidateLists::gridBytes() const {
     std::memcpy(bytes.data(), &cameraAxes, sizeof cameraAxes);
     std::memcpy(bytes.data() + sizeof cameraAxes, grids.data(), grids.size() * sizeof(gpu::GpuCandidateGrid));
     return bytes;
-}
-
-std::size_t CandidateLists::cameraEntries() const {
-    const gpu::GpuCandidateGrid& camera = grids[gpu::CAMERA_GRID];
-    const std::size_t end = camera.cells.z + std::size_t(camera.cells.x) * camera.cells.y;
-    return cellStarts[end] - cellStarts[camera.cells.z];
 }
 
 std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Placement& placement, FloatWidth width,

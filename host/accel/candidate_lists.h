@@ -43,7 +43,6 @@ struct CandidateLists {
     // The grid buffer's contents: the camera's axes, then the grids; and their size.
     std::vector<std::byte> gridBytes() const;
     std::size_t gridByteCount() const { return sizeof cameraAxes + grids.size() * sizeof(gpu::GpuCandidateGrid); }
-    std::size_t cameraEntries() const;  // entries of the camera's lists (the rest are the lights')
 };
 
 // How large the lists may grow: candidate_tunables.h's budgets (a test may give smaller ones).

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 
+#include "unit_roundoff.h"
+
 namespace hexray::candidates {
 
 // --- Size: how fine the grids are, within what the device's buffers hold.
@@ -45,7 +47,7 @@ inline constexpr double kFaceMargin = 1e-6;
 // units of float roundoff of their size (a footprint reaches kLookupPad times 1 + its largest
 // coordinate past its computed edges), and its cell index by a few units of roundoff of the
 // grid's size (a footprint's cell range reaches kCellSlack cells further).
-inline constexpr double kLookupPad = 16.0 * 0x1p-24;
+inline constexpr double kLookupPad = 16.0 * FLOAT32_UNIT_ROUNDOFF;
 inline constexpr double kCellSlack = 0.02;
 // Slack for the footprint's own rounding on the host, in tangent units: a few hundred units of
 // double roundoff of the magnitudes involved, far below any float the shader computes.

@@ -61,7 +61,6 @@ public:
     bool hasFloat64() const { return context_.selected().hasFloat64; }
     bool hasEmbree() const { return embree_ != nullptr; }
     std::string embreeVersion() const;
-    std::string gpuName() const { return gpuName_; }
     Precision autoPrecision(const Scene& scene) const { return gpu_.resolve(scene, Precision::Auto); }
 
     // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree single rays", "embree 8-ray packets".

@@ -184,7 +184,7 @@ std::vector<BenchRow> benchRows(const std::vector<BenchScene>& scenes,
         BenchRow row = rowFor(bench, configurations[i], measurements[i], backends);
         row.chosenByAuto = configurations[i].backend == BenchBackend::Gpu &&
                            row.precision == backends.autoPrecision(bench.scene);
-        rows.push_back(std::move(row));
+        rows.push_back(row);
     }
     addRatios(rows);
     return rows;

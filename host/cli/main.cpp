@@ -14,6 +14,7 @@
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
+#include "cli/named_values.h"
 #include "cli/option_checks.h"
 #include "cpu/cpu_renderer.h"
 #include "kernels/kernel_cache.h"
@@ -44,17 +45,11 @@ constexpr const char* kCommands = "render, merge, compare, bench, pixel, devices
 struct CommandLine {
     bool validate = false;
     RenderOptions render;
-    std::string renderBackend = "auto";
-    std::string renderPrecision = "auto";
-    std::string renderCulling = "auto";
     std::string renderTile;
     MergeOptions merge;
     CompareOptions compare;
-    std::string comparePrecision = "auto";
     BenchOptions bench;
     PixelOptions pixel;
-    std::string pixelBackend = "both";
-    std::string pixelPrecision = "auto";
     VulkanOptions devices;
     CacheOptions cache;
 };
@@ -84,14 +79,11 @@ void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
                        "discrete GPU, else an integrated, virtual or CPU one such as lavapipe, with a compute queue)");
 }
 
-CLI::Option* addPrecisionOption(CLI::App& command, std::string& precision) {
-    return command
-        .add_option("--precision", precision,
-                    "Shader arithmetic: auto (per scene: f32 when its float32 error stays below 1e-3 of the scene's "
-                    "smallest feature, else f64), f32, f64 (needs shaderFloat64), or f32-naive (the textbook "
-                    "formulas, for comparison)")
-        ->check(CLI::IsMember({"auto", "f32", "f64", "f32-naive"}))
-        ->capture_default_str();
+CLI::Option* addPrecisionOption(CLI::App& command, Precision& precision) {
+    return addNamedOption(command, "--precision", precision, precisionNames(),
+                          "Shader arithmetic: auto (per scene: f32 when its float32 error stays below 1e-3 of the "
+                          "scene's smallest feature, else f64), f32, f64 (needs shaderFloat64), or f32-naive (the "
+                          "textbook formulas, for comparison)");
 }
 
 void addRenderCommand(CLI::App& app, CommandLine& line) {
@@ -109,20 +101,14 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "(PNG on standard output). Default: <scene name>.png here. With several scenes, or when it is "
                      "a directory: the directory the images go into, as <scene name>.png")
         ->check(NotEmpty());
-    command
-        ->add_option("--backend", line.renderBackend,
-                     "gpu: the Vulkan compute shader; cpu: the double-precision reference; auto: the GPU, or the "
-                     "CPU reference (with a note on stderr) when the GPU path cannot render")
-        ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
-        ->capture_default_str();
-    addPrecisionOption(*command, line.renderPrecision);
-    command
-        ->add_option("--culling", line.renderCulling,
-                     "GPU: render screen tiles with kernels that leave out the tests their rays cannot need "
-                     "(the same image): on, off, or auto (for renders of at least 32 million samples, where it "
-                     "repays compiling the extra kernels)")
-        ->check(CLI::IsMember({"auto", "on", "off"}))
-        ->capture_default_str();
+    addNamedOption(*command, "--backend", render.backend, kBackendNames,
+                   "gpu: the Vulkan compute shader; cpu: the double-precision reference; auto: the GPU, or the CPU "
+                   "reference (with a note on stderr) when the GPU path cannot render");
+    addPrecisionOption(*command, render.precision);
+    addNamedOption(*command, "--culling", render.culling, kCullingNames,
+                   "GPU: render screen tiles with kernels that leave out the tests their rays cannot need (the "
+                   "same image): on, off, or auto (for renders of at least 32 million samples, where it repays "
+                   "compiling the extra kernels)");
     addImageOptions(*command, render.image);
     addDeviceOption(*command, render.vulkan);
     addThreadsOption(*command, render.threads, "CPU backend");
@@ -158,7 +144,7 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
         "mismatches in the decisions not near-tied, colour errors where the classes agree. Fails when the "
         "tolerance is exceeded");
     command->add_option("scenes", compare.scenePaths, "Scene files, or directories of them")->required();
-    CLI::Option* precisionOption = addPrecisionOption(*command, line.comparePrecision);
+    CLI::Option* precisionOption = addPrecisionOption(*command, compare.precision);
     command
         ->add_flag("--all", compare.allPrecisions,
                    "Every precision (f32-naive, f32, f64) for every scene, as one table; f32-naive rows are "
@@ -249,10 +235,8 @@ void addPixelCommand(CLI::App& app, CommandLine& line) {
     command->add_option("scene", pixel.scenePath, "Scene file (JSON)")->required();
     command->add_option("x", pixel.x, "Column, 0 at the left")->required()->check(AnInteger<std::int64_t>());
     command->add_option("y", pixel.y, "Row, 0 at the top")->required()->check(AnInteger<std::int64_t>());
-    command->add_option("--backend", line.pixelBackend, "both (side by side), gpu or cpu")
-        ->check(CLI::IsMember({"both", "gpu", "cpu"}))
-        ->capture_default_str();
-    addPrecisionOption(*command, line.pixelPrecision);
+    addNamedOption(*command, "--backend", pixel.backend, kPixelBackendNames, "both (side by side), gpu or cpu");
+    addPrecisionOption(*command, pixel.precision);
     command->add_option("--sample", pixel.sample, "Which of the pixel's samples to explain (with --spp > 1)")
         ->check(IntegerBetween<std::int64_t>(0, kMaxSamplesPerPixel - 1))
         ->capture_default_str();
@@ -314,9 +298,9 @@ std::optional<std::string> unknownCommand(int argc, char** argv, const CLI::App&
 // What CLI11 cannot check on its own; throws CLI::ValidationError.
 void checkCombinations(const CLI::App& app, const CommandLine& line) {
     const bool cpuOnlyWithPrecision =
-        (app.got_subcommand("render") && line.renderBackend == "cpu" &&
+        (app.got_subcommand("render") && line.render.backend == Backend::Cpu &&
          app.get_subcommand("render")->count("--precision") > 0) ||
-        (app.got_subcommand("pixel") && line.pixelBackend == "cpu" &&
+        (app.got_subcommand("pixel") && line.pixel.backend == PixelBackend::Cpu &&
          app.get_subcommand("pixel")->count("--precision") > 0);
     if (cpuOnlyWithPrecision) {
         throw CLI::ValidationError("--precision", "applies to the GPU backend only");
@@ -338,16 +322,9 @@ int checkBenchPaths(const BenchOptions& bench) {
     });
 }
 
-Backend backendNamed(const std::string& name) {
-    return name == "cpu" ? Backend::Cpu : name == "gpu" ? Backend::Gpu : Backend::Auto;
-}
-
 int runRenderCommand(CommandLine& line) {
     RenderOptions& render = line.render;
     render.vulkan.validate = line.validate;
-    render.backend = backendNamed(line.renderBackend);
-    render.precision = *parsePrecision(line.renderPrecision);
-    render.culling = line.renderCulling == "on" ? Culling::On : line.renderCulling == "off" ? Culling::Off : Culling::Auto;
     render.tile = parseTile(line.renderTile);
     return runRender(render);
 }
@@ -355,10 +332,6 @@ int runRenderCommand(CommandLine& line) {
 int runPixelCommand(CommandLine& line) {
     PixelOptions& pixel = line.pixel;
     pixel.vulkan.validate = line.validate;
-    pixel.backend = line.pixelBackend == "gpu"   ? PixelBackend::Gpu
-                    : line.pixelBackend == "cpu" ? PixelBackend::Cpu
-                                                 : PixelBackend::Both;
-    pixel.precision = *parsePrecision(line.pixelPrecision);
     return runPixel(pixel);
 }
 
@@ -372,7 +345,6 @@ int runCommand(const CLI::App& app, CommandLine& line) {
     }
     if (app.got_subcommand("compare")) {
         line.compare.vulkan.validate = line.validate;
-        line.compare.precision = *parsePrecision(line.comparePrecision);
         return runCompare(line.compare);
     }
     if (app.got_subcommand("bench")) {

@@ -1,4 +1,5 @@
 #include "cpu/cpu_margins.h"
+#include "unit_roundoff.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +75,7 @@ double cameraDirectionRoundoff(const PixelSheet& sheet, const glm::dvec2& sheetP
 }
 
 DecisionBounds decisionBounds(const DecisionRoundoff& roundoff, double directionRoundoff) {
-    constexpr double kFloat32AtanBound = 128.0 * 0x1p-24;
+    constexpr double kFloat32AtanBound = 128.0 * FLOAT32_UNIT_ROUNDOFF;
     const double units = 2.0 * (directionRoundoff + 16.0);
     return {units * roundoff.general, std::max(units * roundoff.sphereChecker, kFloat32AtanBound)};
 }

@@ -21,6 +21,7 @@
 #include "cpu/cpu_shading.h"
 #include "scene/scene_contents.h"
 #include "util/out_of_memory.h"
+#include "unit_roundoff.h"
 
 namespace hexray {
 
@@ -256,7 +257,7 @@ void addShadowMargins(const RenderContext& context, std::size_t shadedNode, cons
 // cell size), so to 2^-53 of the eye's world coordinates whatever the shader's precision.
 glm::dvec2 eyePlaceRoundoff(const RenderContext& context) {
     return glm::dvec2(std::abs(context.frameOrigin.x), std::abs(context.frameOrigin.z)) *
-           (0x1p-53 / context.roundoff.general);
+           (FLOAT64_UNIT_ROUNDOFF / context.roundoff.general);
 }
 
 // The decisions of a lit shader: the checker cell, and for each light whether the surface faces

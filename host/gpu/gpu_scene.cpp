@@ -75,7 +75,7 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& 
         packed.kinds.x = GEOMETRY_SPHERE;
         packed.geometry = toReal4<Real>(placement.position(sphere.center), placement.length(sphere.radius));
         const glm::dvec3 fromCenter = placement.position(eye) - placement.position(sphere.center);
-        packed.surface = toReal4<Real>(glm::dvec3(eyePower(fromCenter, placement.length(sphere.radius)), 0, 0));
+        packed.eyePower = Real(eyePower(fromCenter, placement.length(sphere.radius)));
     }
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         packed.kinds.y = SHADER_CONSTANT;
@@ -139,7 +139,7 @@ std::vector<GpuCandidateSphere<Real>> packCandidateSpheres(const GpuScene<Real>&
     std::vector<GpuCandidateSphere<Real>> spheres;
     spheres.reserve(nodes.size());
     for (const std::uint32_t i : nodes) {
-        spheres.push_back({packed.nodes[i].geometry, packed.nodes[i].surface.x, i, {}});
+        spheres.push_back({packed.nodes[i].geometry, packed.nodes[i].eyePower, i, {}});
     }
     return spheres;
 }

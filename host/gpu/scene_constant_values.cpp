@@ -36,7 +36,7 @@ std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& con
         for (std::uint32_t c = 0; c < constant.components; ++c) {
             switch (constant.field) {
                 case Field::Geometry: append<Real>(bytes, scene.nodes[i].geometry[c]); break;
-                case Field::EyePower: append<Real>(bytes, scene.nodes[i].surface.x); break;
+                case Field::EyePower: append<Real>(bytes, scene.nodes[i].eyePower); break;
                 case Field::Color1: append<float>(bytes, scene.nodes[i].color1[c]); break;
                 case Field::Color2: append<float>(bytes, scene.nodes[i].color2[c]); break;
                 case Field::Checker: append<Real>(bytes, scene.nodes[i].checker[c]); break;

@@ -7,7 +7,8 @@ namespace hexray {
 
 PixelDigest::PixelDigest(std::string_view preamble) {
     hash_.add(preamble);
-    hash_.add(std::string_view("", 1));
+    constexpr char kSeparator = '\0';  // ends the preamble: no preamble is a prefix of another
+    hash_.add(std::string_view(&kSeparator, 1));
 }
 
 void PixelDigest::addRgb8Rows(std::span<const std::uint8_t> rgbRows) {

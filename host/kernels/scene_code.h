@@ -45,9 +45,9 @@ struct ShadowTest {
     bool tested = true;
 };
 
-// A kernel written for one scene's structure (host/gpu/kernel_generator.h): the node tests
+// A kernel written for one scene's structure (host/kernels/kernel_generator.h): the node tests
 // unrolled in order, only the shaders, lights and shadow tests the scene uses. The scene's values
-// reach it as specialization constants (host/gpu/scene_constants.h), which lavapipe compiles in as
+// reach it as specialization constants (host/kernels/scene_constants.h), which lavapipe compiles in as
 // literals: scenes of the same structure share the SPIR-V, and the driver builds a pipeline per
 // scene.
 struct SceneCode {

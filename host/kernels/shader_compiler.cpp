@@ -7,6 +7,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "kernels/shader_library_includer.h"
 #include "shader_library.h"
 #include "util/sha256.h"
 
@@ -16,24 +17,6 @@ namespace {
 // What compileComputeShader targets (its setEnvClient and setEnvTarget), for the fingerprint; the
 // kernel cache validates for the same (spirv_validation.h).
 constexpr const char* kShaderTarget = "SPIR-V 1.3 for Vulkan 1.1";
-
-// Resolves every include, local or system, to a file of the embedded library.
-class LibraryIncluder : public glslang::TShader::Includer {
-public:
-    IncludeResult* includeLocal(const char* name, const char*, size_t) override { return find(name); }
-    IncludeResult* includeSystem(const char* name, const char*, size_t) override { return find(name); }
-    void releaseInclude(IncludeResult* result) override { delete result; }
-
-private:
-    static IncludeResult* find(const char* name) {
-        for (const shader_library::File& file : shader_library::kFiles) {
-            if (file.name == name) {
-                return new IncludeResult(std::string(file.name), file.text.data(), file.text.size(), nullptr);
-            }
-        }
-        return nullptr;  // glslang reports the include as not found
-    }
-};
 
 void initializeGlslangOnce() {
     static std::once_flag once;
@@ -51,7 +34,7 @@ std::vector<std::uint32_t> compileComputeShader(const std::string& source, const
     shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-    LibraryIncluder includer;
+    ShaderLibraryIncluder includer;
     const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
     if (!shader.parse(GetDefaultResources(), 450, false, messages, includer)) {
         throw ShaderCompileError(name + ": " + shader.getInfoLog());

@@ -1,6 +1,8 @@
 #pragma once
-// The scene as the shader reads it: C++ mirrors of the std430 blocks in shaders/scene_data.glsl.
-// Every offset is pinned by a static_assert so that a change on one side cannot drift silently.
+// The scene as the shader reads it: C++ mirrors of the blocks in shaders/scene_data.glsl and the
+// output blocks. tests/layout/gpu_layout_test.cpp compares every member's offset and every array's
+// stride with glslang's reflection of the GLSL; the candidate lists' texels, which GLSL reads by
+// index rather than as blocks, are pinned here.
 //
 // Positions are stored in the shader's precision, `Real` (float for the f32 variants, double
 // for f64); colours are always float. In std430 a vec4 of doubles is 32-byte aligned, which
@@ -42,9 +44,10 @@ template <typename Real>
 struct GpuNode {
     glm::uvec4 kinds;         // .x GEOMETRY_*, .y SHADER_*
     RealVec4<Real> geometry;  // plane: .x = height; sphere: .xyz = centre, .w = radius
-    // Sphere: .x = |eye - centre|^2 - r^2, the eye's power with respect to the sphere, which
-    // every camera ray needs and float cannot form when the eye is close to a large sphere.
-    RealVec4<Real> surface;
+    // Sphere: |eye - centre|^2 - r^2, the eye's power with respect to the sphere, which every
+    // camera ray needs and float cannot form when the eye is close to a large sphere; planes: 0.
+    Real eyePower;
+    Real unused[3];
     glm::vec4 color1;         // .rgb: constant / lambert colour, checker's first colour
     glm::vec4 color2;         // .rgb: checker's second colour
     // Checker: .x = square size; .yz = the eye's fractional cell position (x, z) / size on a
@@ -80,7 +83,7 @@ struct GpuCandidateGrid {
 template <typename Real>
 struct GpuCandidateSphere {
     glm::vec<4, Real> sphere;  // centre, radius: the node's geometry
-    Real eyePower;             // the node's surface.x
+    Real eyePower;             // the node's eyePower
     std::uint32_t node;
     std::uint32_t unused[sizeof(Real) == 4 ? 2 : 1];
 };
@@ -112,28 +115,7 @@ struct Specialization {
 static_assert(offsetof(Specialization, outputMode) == OUTPUT_MODE_ID * sizeof(std::uint32_t));
 static_assert(offsetof(Specialization, samplesPerPixel) == SAMPLES_PER_PIXEL_ID * sizeof(std::uint32_t));
 
-// --- std430 offsets, float variant
-static_assert(offsetof(GpuFrame<float>, origin) == 0);
-static_assert(offsetof(GpuFrame<float>, sheetTopLeft) == 16);
-static_assert(offsetof(GpuFrame<float>, sheetRight) == 32);
-static_assert(offsetof(GpuFrame<float>, sheetDown) == 48);
-static_assert(offsetof(GpuFrame<float>, background) == 64);
-static_assert(offsetof(GpuFrame<float>, ambient) == 80);
-static_assert(offsetof(GpuFrame<float>, imageSize) == 96);
-static_assert(offsetof(GpuFrame<float>, samplingOffset) == 104);
-static_assert(offsetof(GpuFrame<float>, nodeCount) == 108);
-static_assert(offsetof(GpuFrame<float>, lightCount) == 112);
-static_assert(sizeof(GpuFrame<float>) == 128);
-static_assert(offsetof(GpuNode<float>, kinds) == 0);
-static_assert(offsetof(GpuNode<float>, geometry) == 16);
-static_assert(offsetof(GpuNode<float>, surface) == 32);
-static_assert(offsetof(GpuNode<float>, color1) == 48);
-static_assert(offsetof(GpuNode<float>, color2) == 64);
-static_assert(offsetof(GpuNode<float>, checker) == 80);
-static_assert(sizeof(GpuNode<float>) == 96);
-static_assert(offsetof(GpuLight<float>, position) == 0);
-static_assert(offsetof(GpuLight<float>, power) == 16);
-static_assert(sizeof(GpuLight<float>) == 32);
+// --- The candidate lists' texels (16 bytes each)
 static_assert(sizeof(GpuCandidateAxes) == 48);
 static_assert(offsetof(GpuCandidateGrid, cells) == 16);
 static_assert(offsetof(GpuCandidateGrid, reach) == 32);
@@ -141,29 +123,9 @@ static_assert(sizeof(GpuCandidateGrid) == 48);
 static_assert(offsetof(GpuCandidateSphere<float>, eyePower) == 16);
 static_assert(offsetof(GpuCandidateSphere<float>, node) == 20);
 static_assert(sizeof(GpuCandidateSphere<float>) == 32);
-
-// --- std430 offsets, double variant (dvec4 aligned to 32)
-static_assert(offsetof(GpuFrame<double>, origin) == 0);
-static_assert(offsetof(GpuFrame<double>, sheetTopLeft) == 32);
-static_assert(offsetof(GpuFrame<double>, sheetRight) == 64);
-static_assert(offsetof(GpuFrame<double>, sheetDown) == 96);
-static_assert(offsetof(GpuFrame<double>, background) == 128);
-static_assert(offsetof(GpuFrame<double>, ambient) == 144);
-static_assert(offsetof(GpuFrame<double>, imageSize) == 160);
-static_assert(offsetof(GpuFrame<double>, samplingOffset) == 168);
-static_assert(offsetof(GpuFrame<double>, nodeCount) == 172);
-static_assert(offsetof(GpuFrame<double>, lightCount) == 176);
-static_assert(sizeof(GpuFrame<double>) == 192);
-static_assert(offsetof(GpuNode<double>, kinds) == 0);
-static_assert(offsetof(GpuNode<double>, geometry) == 32);
-static_assert(offsetof(GpuNode<double>, surface) == 64);
-static_assert(offsetof(GpuNode<double>, color1) == 96);
-static_assert(offsetof(GpuNode<double>, color2) == 112);
-static_assert(offsetof(GpuNode<double>, checker) == 128);
-static_assert(sizeof(GpuNode<double>) == 160);
-static_assert(offsetof(GpuLight<double>, position) == 0);
-static_assert(offsetof(GpuLight<double>, power) == 32);
-static_assert(sizeof(GpuLight<double>) == 64);
+static_assert(offsetof(GpuCandidateSphere<double>, eyePower) == 32);
+static_assert(offsetof(GpuCandidateSphere<double>, node) == 40);
+static_assert(sizeof(GpuCandidateSphere<double>) == 48);
 
 // --- Inspection (shaders/inspect_hooks.glsl): `hexray render --aov` and `hexray pixel`.
 
@@ -198,43 +160,6 @@ struct GpuTraceEntry {
     glm::uvec4 status;
 };
 
-static_assert(sizeof(GpuAovPixel) == 16);
-static_assert(offsetof(GpuTraceHeader<float>, request) == 0);
-static_assert(offsetof(GpuTraceHeader<float>, result) == 16);
-static_assert(offsetof(GpuTraceHeader<float>, rayOrigin) == 32);
-static_assert(offsetof(GpuTraceHeader<float>, rayDirection) == 48);
-static_assert(offsetof(GpuTraceHeader<float>, hitPosition) == 64);
-static_assert(offsetof(GpuTraceHeader<float>, hitNormal) == 80);
-static_assert(offsetof(GpuTraceHeader<float>, shadowOrigin) == 96);
-static_assert(offsetof(GpuTraceHeader<float>, albedo) == 112);
-static_assert(offsetof(GpuTraceHeader<float>, sampleColor) == 128);
-static_assert(offsetof(GpuTraceHeader<float>, pixelColor) == 144);
-static_assert(sizeof(GpuTraceHeader<float>) == 160);
-static_assert(offsetof(GpuTraceEntry<float>, values) == 0);
-static_assert(offsetof(GpuTraceEntry<float>, color) == 16);
-static_assert(offsetof(GpuTraceEntry<float>, status) == 32);
-static_assert(sizeof(GpuTraceEntry<float>) == 48);
-static_assert(offsetof(GpuTraceHeader<double>, request) == 0);
-static_assert(offsetof(GpuTraceHeader<double>, result) == 16);
-static_assert(offsetof(GpuTraceHeader<double>, rayOrigin) == 32);
-static_assert(offsetof(GpuTraceHeader<double>, rayDirection) == 64);
-static_assert(offsetof(GpuTraceHeader<double>, hitPosition) == 96);
-static_assert(offsetof(GpuTraceHeader<double>, hitNormal) == 128);
-static_assert(offsetof(GpuTraceHeader<double>, shadowOrigin) == 160);
-static_assert(offsetof(GpuTraceHeader<double>, albedo) == 192);
-static_assert(offsetof(GpuTraceHeader<double>, sampleColor) == 208);
-static_assert(offsetof(GpuTraceHeader<double>, pixelColor) == 224);
-static_assert(offsetof(GpuCandidateSphere<double>, eyePower) == 32);
-static_assert(offsetof(GpuCandidateSphere<double>, node) == 40);
-static_assert(sizeof(GpuCandidateSphere<double>) == 48);
-static_assert(sizeof(GpuTraceHeader<double>) == 256);  // std430: the struct rounds up to its 32-byte alignment
-static_assert(offsetof(GpuTraceEntry<double>, values) == 0);
-static_assert(offsetof(GpuTraceEntry<double>, color) == 32);
-static_assert(offsetof(GpuTraceEntry<double>, status) == 48);
-static_assert(sizeof(GpuTraceEntry<double>) == 64);
 
-static_assert(sizeof(GpuBand) == 16);
-static_assert(sizeof(GpuPixel) == 16);
-static_assert(sizeof(GpuPixelClass) == 8);
 
 }  // namespace hexray::gpu

@@ -4,7 +4,7 @@ namespace hexray {
 
 DecisionRoundoff decisionRoundoff(Precision precision) {
     if (precision == Precision::F64) {
-        return {0x1p-53, 0x1p-24};
+        return {FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF};
     }
     return {};
 }

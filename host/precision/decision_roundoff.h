@@ -2,14 +2,15 @@
 // What the CPU reference's margins are read against when it is compared with a GPU render.
 
 #include "precision/precision.h"
+#include "unit_roundoff.h"
 
 namespace hexray {
 
 // The unit roundoff of the arithmetic a comparison tests, per kind of decision: float32's 2^-24
 // by default; double's 2^-53 for what a float64 shader computes in double.
 struct DecisionRoundoff {
-    double general = 0x1p-24;
-    double sphereChecker = 0x1p-24;  // a sphere's checker cell, from its angular texture coordinates
+    double general = FLOAT32_UNIT_ROUNDOFF;
+    double sphereChecker = FLOAT32_UNIT_ROUNDOFF;  // a sphere's checker cell, from its angular texture coordinates
 };
 
 // The unit roundoff the shader makes each kind of decision with in `precision` (never Auto):

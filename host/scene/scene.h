@@ -37,7 +37,7 @@ inline constexpr std::uint64_t kMaxImageSamples = std::uint64_t{1} << 32;  // wi
 // in [kMinIntensity, kMaxIntensity]; colour components are at most kMaxColorComponent.
 // Within it no difference, square or product of two lengths over- or underflows a double, and the
 // scene's dynamic range fits the GPU's float64 (and float32 when it is below 2^100, see
-// host/gpu/precision.h).
+// host/precision/precision.h).
 inline constexpr double kMinSceneLength = 1e-50;
 inline constexpr double kMaxSceneLength = 1e50;
 inline constexpr double kMinIntensity = 1e-100;

@@ -106,7 +106,6 @@ public:
     const DeviceInfo& selected() const { return selected_; }
     const vk::raii::PhysicalDevice& physicalDevice() const { return physicalDevice_; }
     const vk::raii::Device& device() const { return device_; }
-    const vk::raii::Queue& queue() const { return queue_; }
     std::uint32_t queueFamily() const { return queueFamily_; }
 
 private:

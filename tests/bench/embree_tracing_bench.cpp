@@ -1,7 +1,7 @@
 // Prints how fast Embree traces the bench's scenes one ray at a time and in packets
 // (EmbreeTracing), in one process on the same threads: the lecture demo and random-sphere
 // scenes of the given sizes, one sample per pixel, rounds interleaved, medians. A figure for
-// the reader, not a test: see ci/scale-bench.sh.
+// the reader, not a test: see tools/scale-bench.sh.
 
 #include <cstdio>
 #include <filesystem>

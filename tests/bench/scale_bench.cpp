@@ -1,6 +1,6 @@
 // Prints how long one scene file takes to load and its sphere BVH to build on each thread
 // count (medians of interleaved rounds), and the process's peak memory after loading it. A
-// figure for the reader, not a test: see ci/scale-bench.sh, which runs it once per file so that
+// figure for the reader, not a test: see tools/scale-bench.sh, which runs it once per file so that
 // the peak belongs to that file.
 
 #include <sys/resource.h>
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     std::string file;
     int rounds = 3;
     std::vector<unsigned> threadCounts{1, 2};
-    app.add_option("scene", file, "a scene file (e.g. from ci/make-spheres-scene.py)")
+    app.add_option("scene", file, "a scene file (e.g. from tools/make-spheres-scene.py)")
         ->required()
         ->check(CLI::ExistingFile);
     app.add_option("--rounds", rounds)->check(CLI::Range(1, 100));

@@ -75,7 +75,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadOption{"EmptyOutput", "render SCENE -o ''", "--output: must not be empty"},
         BadOption{"EmptyDiff", "compare SCENE --diff ''", "--diff: must not be empty"},
         BadOption{"EmptyCsv", "bench SCENE --csv ''", "--csv: must not be empty"},
-        BadOption{"EmptyAov", "render SCENE -o x.png --aov ''", "--aov: must not be empty"}),
+        BadOption{"EmptyAov", "render SCENE -o x.png --aov ''", "--aov: must not be empty"},
+        // A named value is one of its names, never the enum's number behind it.
+        BadOption{"BackendUnknown", "render SCENE -o x.png --backend vulkan", "--backend: vulkan not in {auto,gpu,cpu}"},
+        BadOption{"BackendByNumber", "render SCENE -o x.png --backend 2", "--backend: 2 not in {auto,gpu,cpu}"},
+        BadOption{"CullingUnknown", "render SCENE -o x.png --culling yes", "--culling: yes not in {auto,on,off}"},
+        BadOption{"PrecisionByNumber", "compare SCENE --precision 1", "--precision: 1 not in {auto,f32,f64,f32-naive}"},
+        BadOption{"PixelBackendUnknown", "pixel SCENE 1 1 --backend auto", "--backend: auto not in {both,gpu,cpu}"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 using OptionCliTest = test::CliTest;

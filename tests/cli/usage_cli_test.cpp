@@ -36,7 +36,7 @@ TEST_F(CliTest, VersionWithoutVulkanSaysSoAndSucceeds) {
 }
 
 TEST_F(CliTest, AnUnknownCommandIsNamedWithTheKnownOnes) {
-    for (const std::string line : {"frobnicate", "--validate frobnicate scene.json"}) {
+    for (const char* line : {"frobnicate", "--validate frobnicate scene.json"}) {
         const RunResult run = hexray(line);
         EXPECT_EQ(run.exitCode, 2) << line;
         EXPECT_NE(run.err.find("hexray: error: unknown command 'frobnicate' (the commands are render, merge, compare, "
@@ -60,7 +60,7 @@ TEST_F(CliTest, GlobalOptionsAreAcceptedAfterTheCommand) {
     // It reaches the command: without the layer to load, --validate after the command fails as
     // before it, and the render without it does not.
     const std::string noLayers = "VK_LAYER_PATH=/nonexistent";
-    for (const std::string line : {render + " --validate", "--validate " + render}) {
+    for (const std::string& line : {render + " --validate", "--validate " + render}) {
         const RunResult run = hexray(line, noLayers);
         EXPECT_EQ(run.exitCode, 3) << line;
         EXPECT_NE(run.err.find("validation was requested but VK_LAYER_KHRONOS_validation is not installed"),

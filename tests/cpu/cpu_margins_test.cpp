@@ -18,6 +18,7 @@
 #include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
 #include "support/test_paths.h"
+#include "unit_roundoff.h"
 
 using namespace hexray;
 
@@ -262,12 +263,12 @@ TEST(CameraDirectionRoundoff, GrowsAsAWideFieldOfViewCancelsAtTheCentre) {
 
 TEST(DecisionBounds, TwiceTheDirectionAndSixteenUnitsOfTheArithmeticsRoundoff) {
     const DecisionBounds f32 = decisionBounds({}, 18.0);
-    EXPECT_EQ(f32.general, 68.0 * 0x1p-24);
-    EXPECT_EQ(f32.sphereChecker, 128.0 * 0x1p-24);  // never below the float atan's allowance
-    const DecisionBounds f64 = decisionBounds({0x1p-53, 0x1p-24}, 18.0);
-    EXPECT_EQ(f64.general, 68.0 * 0x1p-53);
-    EXPECT_EQ(f64.sphereChecker, 128.0 * 0x1p-24);
-    EXPECT_EQ(decisionBounds({}, 100.0).sphereChecker, 232.0 * 0x1p-24);
+    EXPECT_EQ(f32.general, 68.0 * FLOAT32_UNIT_ROUNDOFF);
+    EXPECT_EQ(f32.sphereChecker, 128.0 * FLOAT32_UNIT_ROUNDOFF);  // never below the float atan's allowance
+    const DecisionBounds f64 = decisionBounds({FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF}, 18.0);
+    EXPECT_EQ(f64.general, 68.0 * FLOAT64_UNIT_ROUNDOFF);
+    EXPECT_EQ(f64.sphereChecker, 128.0 * FLOAT32_UNIT_ROUNDOFF);
+    EXPECT_EQ(decisionBounds({}, 100.0).sphereChecker, 232.0 * FLOAT32_UNIT_ROUNDOFF);
 }
 
 TEST(RayDecisions, MarkOnlyThePartsWhoseMarginIsBelowOne) {
@@ -621,7 +622,7 @@ TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
     for (const std::uint32_t samples : {1u, 4u}) {
         scene.image.samplesPerPixel = samples;
         for (const auto& [name, roundoff] : {std::pair("f32", DecisionRoundoff{}),
-                                             std::pair("f64", DecisionRoundoff{0x1p-53, 0x1p-24})}) {
+                                             std::pair("f64", DecisionRoundoff{FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF})}) {
             const double share = ambiguousShare(renderOnCpu(scene, 0, Acceleration::Auto, false, roundoff));
             std::printf("[ ambiguous ] 3000 random spheres, %u spp, %s: %.3f %%\n", samples, name, 100.0 * share);
             EXPECT_LT(share, 0.05);
@@ -632,9 +633,9 @@ TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
 // A light's term is computed to a tolerance unless the point's rounding is large beside the light's
 // distance: then the colour may honestly differ (seed 6000528: a huge sphere's wall a hair below a light).
 TEST(LightTermMargin, OnlyALightCloseBesideAWidelyRoundedPointLeavesTheColourOpen) {
-    EXPECT_GT(lightTermMargin(0.0, 2.0, 0x1p-24), 1.0);      // the demo: a light at its own distance
-    EXPECT_GT(lightTermMargin(1000.0, 1.0, 0x1p-24), 1.0);   // a sphere 1000 radii away: its normal roughly
-    EXPECT_LT(lightTermMargin(0.0, 2.4e5, 0x1p-24), 1.0);    // a wall rounded on a 2.4e5 scale, 1 from the light
-    EXPECT_GT(lightTermMargin(0.0, 2.4e5, 0x1p-53), 1.0);    // the same in double
+    EXPECT_GT(lightTermMargin(0.0, 2.0, FLOAT32_UNIT_ROUNDOFF), 1.0);      // the demo: a light at its own distance
+    EXPECT_GT(lightTermMargin(1000.0, 1.0, FLOAT32_UNIT_ROUNDOFF), 1.0);   // a sphere 1000 radii away: its normal roughly
+    EXPECT_LT(lightTermMargin(0.0, 2.4e5, FLOAT32_UNIT_ROUNDOFF), 1.0);    // a wall rounded on a 2.4e5 scale, 1 from the light
+    EXPECT_GT(lightTermMargin(0.0, 2.4e5, FLOAT64_UNIT_ROUNDOFF), 1.0);    // the same in double
     EXPECT_DOUBLE_EQ(lightTermMargin(1.0, 1.0, 0x1p-10), 0.25);
 }

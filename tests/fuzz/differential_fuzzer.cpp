@@ -36,7 +36,7 @@ struct FuzzOptions {
     std::uint64_t seedStride = 1;  // the seeds checked: firstSeed, firstSeed + seedStride, ...
     std::uint64_t scenes = 0;  // 0: until the time is up
     std::optional<std::uint64_t> seed;  // one scene only, reported in full
-    fs::path failures = "differential-failures";
+    fs::path failures = HEXRAY_BINARY_DIR "/differential-failures";  // in the build tree, never the source tree
     std::uint32_t maxFailures = 5;
     std::string device;
     std::uint64_t generatedEvery = 8;

@@ -1,4 +1,4 @@
-// libFuzzer target for the kernel cache's reader (host/gpu/kernel_cache.h): whatever bytes lie at
+// libFuzzer target for the kernel cache's reader (host/kernels/kernel_cache.h): whatever bytes lie at
 // an entry's name, a load gives either nothing, with the file removed and one report naming it, or
 // exactly the SPIR-V whose stored entry is those very bytes, valid, with the file kept. Anything
 // else (an exception, a crash, a leak, a sanitizer report, a broken invariant) traps. The input's

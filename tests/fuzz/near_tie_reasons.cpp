@@ -1,4 +1,5 @@
 #include "fuzz/near_tie_reasons.h"
+#include "unit_roundoff.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +27,7 @@ constexpr double kCoarsestPlaneCell = 0x1p40;
 // A sphere's checker edges come from the driver's float atan (decisionBounds: 128 float32 units,
 // whatever the precision), of a normal that carries roundoff of (distance from the eye + radius) /
 // radius: cells narrower than this many such bounds leave a few per cent of the pixels near an edge.
-constexpr double kAtanBoundRadians = 128.0 * 0x1p-24;
+constexpr double kAtanBoundRadians = 128.0 * FLOAT32_UNIT_ROUNDOFF;
 constexpr double kSphereCellBounds = 1000.0;
 // Or a field of view so narrow that a pixel spans fewer than this many such bounds: an edge in
 // view, or a pole where every meridian meets, is then near-tied over many pixels.

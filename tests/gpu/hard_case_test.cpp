@@ -79,11 +79,11 @@ struct Render {
 };
 
 struct HardCase {
-    Margins margins;
+    Margins margins{};
     std::uint64_t minLit = 0;                            // per light: pixels whose lit bit is checked
     std::uint64_t minChecker = 0;                        // pixels whose checker cell is checked (scenes with a checker)
     bool assertShading = false;                          // colours against the model (otherwise printed only)
-    std::function<void(const Render&, Outcome&)> extra;  // the scene's own checks
+    std::function<void(const Render&, Outcome&)> extra{};  // the scene's own checks
 };
 
 bool nodeIs(const PixelTruth& p, std::uint32_t node) { return !p.nodeAmbiguous && p.node == node; }

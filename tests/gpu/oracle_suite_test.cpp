@@ -3,7 +3,7 @@
 // one it picks) and explained by the CPU reference (explainPixel), and each answer is checked
 // against the oracle's for the direction that renderer really followed, at its own precision's
 // unit roundoff (ray_check.h states the criteria and bounds). Prints the table that
-// docs/accuracy.md shows (ci/accuracy-report.sh collects the "oracle-row:" lines).
+// docs/accuracy.md shows (tools/accuracy-report.sh collects the "oracle-row:" lines).
 
 #include <cstdio>
 #include <map>
@@ -18,6 +18,7 @@
 #include "oracle/oracle.h"
 #include "oracle/ray_check.h"
 #include "validated_vulkan.h"
+#include "unit_roundoff.h"
 
 namespace hexray {
 namespace {
@@ -26,8 +27,8 @@ using oracle::LightStatus;
 using oracle::RendererRay;
 using oracle::Tally;
 
-constexpr double kFloat32Roundoff = 0x1p-24;
-constexpr double kFloat64Roundoff = 0x1p-53;
+constexpr double kFloat32Roundoff = FLOAT32_UNIT_ROUNDOFF;
+constexpr double kFloat64Roundoff = FLOAT64_UNIT_ROUNDOFF;
 
 LightStatus gpuStatus(std::uint32_t status) {
     switch (status) {

@@ -1,4 +1,4 @@
-// The disk cache of compiled kernels (host/gpu/kernel_cache.h): what it stores comes back only for
+// The disk cache of compiled kernels (host/kernels/kernel_cache.h): what it stores comes back only for
 // the same key; a corrupt, truncated, spliced or foreign file is a miss and is rewritten; a cache that
 // cannot be written is no cache, never an error; no temporary file is left behind.
 

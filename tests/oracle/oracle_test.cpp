@@ -10,12 +10,13 @@
 #include "oracle/hard_rays.h"
 #include "oracle/oracle.h"
 #include "oracle/ray_check.h"
+#include "unit_roundoff.h"
 
 namespace hexray::oracle {
 namespace {
 
-constexpr double kF32 = 0x1p-24;
-constexpr double kF64 = 0x1p-53;
+constexpr double kF32 = FLOAT32_UNIT_ROUNDOFF;
+constexpr double kF64 = FLOAT64_UNIT_ROUNDOFF;
 
 Scene sphereScene(const glm::dvec3& center, double radius, const glm::dvec3& light = {0, 10, 0}) {
     Scene scene;

@@ -25,6 +25,7 @@
 #include <glm/vec3.hpp>
 #include <limits>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -481,6 +482,8 @@ inline ImageTruth classifyImage(const Scene& scene, const Margins& margins = {})
 // What a check looked at and what it found. `checked` counts the pixels it asserted about
 // (after excluding ambiguous ones), so a caller can require it to be non-empty.
 struct CheckCount {
+    explicit CheckCount(std::string checkName) : name(std::move(checkName)) {}
+
     std::string name;
     std::uint64_t checked = 0;
     std::uint64_t excluded = 0;

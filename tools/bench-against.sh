@@ -5,8 +5,8 @@
 # is a ratio from one run rather than a figure from another day. Needs this checkout built
 # (build/hexray) and git history holding REVISION.
 #
-# Usage: ci/bench-against.sh REVISION SCENE [BENCH OPTIONS...]
-#   e.g. ci/bench-against.sh 39d3746 scenes/spheres-and-lights.json --width 960 --height 540
+# Usage: tools/bench-against.sh REVISION SCENE [BENCH OPTIONS...]
+#   e.g. tools/bench-against.sh 39d3746 scenes/spheres-and-lights.json --width 960 --height 540
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

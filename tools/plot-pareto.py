@@ -7,7 +7,7 @@ Pareto frontier. Rows of the sphere curve
 sphere count (log-log), and core-ns per pixel against it (log x, so cost growing like log N
 shows as a straight line).
 
-Usage: ci/plot-pareto.py BENCH.csv OUT.png
+Usage: tools/plot-pareto.py BENCH.csv OUT.png
 """
 import csv
 import sys

@@ -2,7 +2,7 @@
 """Writes a scene file of N random spheres, compactly (one line, 3 decimals), for measuring how
 hexray loads, builds and renders large scenes:
 
-    python3 ci/make-spheres-scene.py 1000000 big.json
+    python3 tools/make-spheres-scene.py 1000000 big.json
 
 The layout follows makeRandomSpheresScene (host/scene/random_spheres.h): a checkered floor,
 spheres of radii 0.5 to 2.5 over a square whose side grows as sqrt(N), two lights, a camera

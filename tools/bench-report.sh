@@ -23,8 +23,8 @@ bench_curve=$($hexray bench --spheres $curve_counts --width 1920 --height 1080 -
 { cat docs/performance-demo.csv; tail -n +2 docs/performance-spheres.csv; tail -n +2 docs/performance-curve.csv; } \
   > docs/performance.csv
 rm docs/performance-demo.csv docs/performance-spheres.csv docs/performance-curve.csv
-/usr/bin/python3 ci/plot-pareto.py docs/performance.csv docs/performance.png
-targets=$(/usr/bin/python3 ci/performance-targets.py docs/performance.csv)
+/usr/bin/python3 tools/plot-pareto.py docs/performance.csv docs/performance.png
+targets=$(/usr/bin/python3 tools/performance-targets.py docs/performance.csv)
 
 # Whole process: `hexray render` of the demo at 1080p to PNG, warm (hexray's kernel cache and
 # Mesa's shader cache filled), cold (Mesa's cache disabled) and new (a scene never seen: both
@@ -49,10 +49,10 @@ unset XDG_CACHE_HOME
 rm -rf "$output"
 median() { printf '%s\n' "$@" | sort -n | sed -n 4p; }
 
-# Many scenes in one process against one process each (ci/batch-bench.sh prints its own table).
+# Many scenes in one process against one process each (tools/batch-bench.sh prints its own table).
 batch=""
-if [ -f ci/batch-bench.sh ]; then
-  batch=$(bash ci/batch-bench.sh)
+if [ -f tools/batch-bench.sh ]; then
+  batch=$(bash tools/batch-bench.sh)
 fi
 elapsed=$(( $(date +%s) - start_seconds ))
 
@@ -63,7 +63,7 @@ embree_line=$(printf '%s\n' "$bench_curve" | sed -n 's/^Embree: \(.*\)\.$/\1 (De
   cat <<HEADER
 # Performance: speed against error
 
-Regenerate with \`bash ci/bench-report.sh\` (it installs and builds first). It runs
+Regenerate with \`bash tools/bench-report.sh\` (it installs and builds first). It runs
 \`hexray bench\` (five interleaved rounds of every configuration in one process) on the demo
 scene at 1920×1080 and on spheres-and-lights at 960×540, then the scaling curve (random
 spheres over a plane, N = ${curve_counts//,/, }, at 1920×1080, ${curve_rounds} rounds), writes
@@ -106,7 +106,7 @@ checker cell or lit lights differ from that reference, outside its ambiguous pix
 ## Targets
 
 Each performance target of the current issues against this run's figures
-(\`ci/performance-targets.py docs/performance.csv\`):
+(\`tools/performance-targets.py docs/performance.csv\`):
 
 $targets
 

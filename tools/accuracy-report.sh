@@ -10,7 +10,7 @@ device=$(./build/hexray devices | sed -n 's/^\* [0-9]*: //p')
   cat <<HEADER
 # Accuracy: GPU against the CPU reference, per scene and precision
 
-Regenerate with \`bash ci/accuracy-report.sh\` (runs \`build/hexray compare --all scenes/\`).
+Regenerate with \`bash tools/accuracy-report.sh\` (runs \`build/hexray compare --all scenes/\`).
 Device: ${device}. Generated $(date -u +%Y-%m-%d).
 
 Columns: **topology mismatches** = pixels whose visible node, checker cell or set of lit lights

@@ -2,7 +2,7 @@
 """The performance targets of docs/performance.md against the figures of one bench run, from the
 CSV `hexray bench --csv` writes: ratios taken within the run, never against another day's numbers.
 
-Usage: ci/performance-targets.py BENCH.csv
+Usage: tools/performance-targets.py BENCH.csv
 Prints a markdown table: target, figure, met or not.
 """
 import csv

@@ -5,7 +5,7 @@
 # `hexray render` with empty caches; many lights (100k, with no spheres and with 100) on the GPU
 # path and the CPU reference; and loading scene files of 237 MiB (2.5 million spheres, 4.3 million
 # lights). One run each, printed as markdown; about 25 minutes on two cores. Usage:
-# ci/memory-bench.sh [SCENES] (default 3000; the frames are a tenth of it); needs build/hexray and
+# tools/memory-bench.sh [SCENES] (default 3000; the frames are a tenth of it); needs build/hexray and
 # build/tests/hexray_scale_bench.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,10 +44,10 @@ for i in range(max(count // 10, 1)):
     frame = scene([("p", "k"), ("s", "l"), ("s", "c"), ("s", "l")], 2, 0.01 * i)
     json.dump(frame, open(os.path.join(work, "frames", f"f{i:05d}.json"), "w"))
 PY
-python3 ci/make-lights-scene.py 100000 0 "$work/lights.json" --width 160 --height 90
-python3 ci/make-lights-scene.py 100000 100 "$work/lights-spheres.json" --width 160 --height 90
-python3 ci/make-spheres-scene.py 2540000 "$work/spheres-237.json"
-python3 ci/make-lights-scene.py 4300000 0 "$work/lights-237.json"
+python3 tools/make-lights-scene.py 100000 0 "$work/lights.json" --width 160 --height 90
+python3 tools/make-lights-scene.py 100000 100 "$work/lights-spheres.json" --width 160 --height 90
+python3 tools/make-spheres-scene.py 2540000 "$work/spheres-237.json"
+python3 tools/make-lights-scene.py 4300000 0 "$work/lights-237.json"
 
 # Runs a command with fresh caches; prints "| what | peak MiB | wall s |".
 measure() {

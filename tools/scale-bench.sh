@@ -18,7 +18,7 @@ trap 'rm -rf "$scenes"' EXIT
 
 echo "=== loading and BVH building"
 for count in 100000 400000 1000000; do
-  python3 ci/make-spheres-scene.py "$count" "$scenes/$count.json"
+  python3 tools/make-spheres-scene.py "$count" "$scenes/$count.json"
   ./build/tests/hexray_scale_bench "$scenes/$count.json" --rounds 3
 done
 

@@ -2,8 +2,8 @@
 # Many small scenes: 20 scenes of 320x240 (the shipped scenes, five camera angles each) rendered
 # by one `hexray render` of all 20, against 20 processes of one scene each, on lavapipe. Both
 # ways run in interleaved rounds after a warm-up round (the kernel cache and Mesa's shader cache
-# warm for both); prints a markdown table of the medians and their ratio. Run it through
-# `heavy`, on an idle machine. Usage: ci/batch-bench.sh [ROUNDS] (default 5); needs build/hexray.
+# warm for both); prints a markdown table of the medians and their ratio. Run it on an
+# idle machine. Usage: tools/batch-bench.sh [ROUNDS] (default 5); needs build/hexray.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

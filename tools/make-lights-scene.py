@@ -2,9 +2,9 @@
 """Writes a scene file of many random point lights (and optionally random spheres), compactly,
 for measuring how hexray plans, loads and renders scenes with many lights:
 
-    python3 ci/make-lights-scene.py 100000 0 lights.json          # 100k lights, nothing to light
-    python3 ci/make-lights-scene.py 100000 100 lights.json        # and 100 spheres
-    python3 ci/make-lights-scene.py 2000 20 lights.json --floor   # a checkered floor under them
+    python3 tools/make-lights-scene.py 100000 0 lights.json          # 100k lights, nothing to light
+    python3 tools/make-lights-scene.py 100000 100 lights.json        # and 100 spheres
+    python3 tools/make-lights-scene.py 2000 20 lights.json --floor   # a checkered floor under them
 
 The lights hang at heights of 10 to 30 over the square the spheres (radii 0.5 to 2.5) stand on,
 their intensities summing to about one bright light's, so the image neither saturates nor goes

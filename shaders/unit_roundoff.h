@@ -1,0 +1,21 @@
+// The unit roundoff of float32 and float64, half a unit in the last place of 1 (2^-24, 2^-53): the
+// unit every error bound in hexray is counted in. Read by C++ (the CPU reference's margins, the
+// candidate lists' padding, a comparison's roundoff) and by GLSL (precision.glsl), so that both
+// sides hold one definition. The decimals are the powers of two exactly.
+#ifndef HEXRAY_UNIT_ROUNDOFF_H
+#define HEXRAY_UNIT_ROUNDOFF_H
+
+#ifdef __cplusplus
+namespace hexray {
+inline constexpr double FLOAT32_UNIT_ROUNDOFF = 5.9604644775390625e-8;
+inline constexpr double FLOAT64_UNIT_ROUNDOFF = 1.1102230246251565404236316680908203125e-16;
+static_assert(FLOAT32_UNIT_ROUNDOFF == 0x1p-24 && FLOAT64_UNIT_ROUNDOFF == 0x1p-53);
+}  // namespace hexray
+#else
+const float FLOAT32_UNIT_ROUNDOFF = 5.9604644775390625e-8;
+#ifdef HEXRAY_F64  // a double constant would make every kernel need float64
+const double FLOAT64_UNIT_ROUNDOFF = 1.1102230246251565404236316680908203125e-16lf;
+#endif
+#endif
+
+#endif  // HEXRAY_UNIT_ROUNDOFF_H
