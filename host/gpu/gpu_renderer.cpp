@@ -432,6 +432,17 @@ std::vector<std::byte> traceRequest(const Scene& scene, std::uint32_t x, std::ui
     return bytes;
 }
 
+// One invocation traces a pixel: its loops cannot be split between dispatches (loop_budget.h).
+void requireTraceWithinLoopLimit(const RenderPlan& plan, const std::string& device) {
+    if (plan.tracePasses > plan.loopPassLimit) {
+        throw VulkanError(VulkanFailure::Unsupported,
+                          "tracing a pixel of this scene may need " + std::to_string(plan.tracePasses) +
+                              " loop passes in one invocation, and " + device + " ends a shader's loops after " +
+                              std::to_string(plan.loopPassLimit) + " in all: the trace would be wrong",
+                          "use --backend cpu");
+    }
+}
+
 std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) {
     if (tracing) return gpu::OUTPUT_TRACE;
     switch (output) {
@@ -446,6 +457,7 @@ std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) 
 
 GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,
                                       std::uint32_t sample) {
+    requireTraceWithinLoopLimit(plan, context_.selected().name);
     const bool f64 = plan.width == FloatWidth::F64;
     const std::vector<std::byte> request =
         f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
@@ -498,6 +510,53 @@ BandTiles bandTiles(const TileClassification& classification, std::uint32_t firs
     return band;
 }
 
+// What the dispatches of every band share: the kernels' pipelines (the plan's, or one per tile
+// class), the tiles' classification, and each pixel's work in shares, one dispatch each (the
+// data-driven kernel's light batches; otherwise one share, all of it).
+struct BandWork {
+    std::vector<const vk::raii::Pipeline*> pipelines;
+    const TileClassification* classification = nullptr;
+    std::vector<PixelWork> shares;
+    std::uint32_t width = 0;
+};
+
+// The dispatches of the band [firstRow, firstRow + rows): the whole grid of tiles once per share,
+// or each tile class's listed tiles with its kernel (the lists uploaded to `tileBuffer` here).
+std::vector<Dispatch> bandDispatches(const BandWork& work, std::uint32_t firstRow, std::uint32_t rows,
+                                     HostVisibleBuffer& tileBuffer) {
+    std::vector<Dispatch> dispatches;
+    if (!work.classification) {
+        for (const PixelWork& share : work.shares) {
+            const GpuBand band{firstRow, rows, 0, share.firstSample, share.endSample, share.firstLight,
+                               share.endLight, 0};
+            dispatches.push_back({work.pipelines[0], band, groupsFor(work.width), groupsFor(rows)});
+        }
+        return dispatches;
+    }
+    const PixelWork& all = work.shares.front();
+    const BandTiles tiles = bandTiles(*work.classification, firstRow, rows);
+    tileBuffer.upload(std::as_bytes(std::span(tiles.tiles)));
+    for (std::size_t c = 0; c < work.pipelines.size(); ++c) {
+        if (tiles.counts[c] > 0) {
+            const GpuBand band{firstRow, rows, tiles.firsts[c], 0, all.endSample, 0, all.endLight, 0};
+            dispatches.push_back({work.pipelines[c], band, tiles.counts[c], 1});
+        }
+    }
+    return dispatches;
+}
+
+// One workgroup of each kernel, so that the driver's compile of it (lavapipe JITs at the first
+// dispatch) is not counted as render time: of the first share, which reads nothing carried.
+std::vector<Dispatch> warmUpDispatches(std::vector<Dispatch> dispatches) {
+    std::erase_if(dispatches, [](const Dispatch& dispatch) {
+        return dispatch.band.firstSample > 0 || dispatch.band.firstLight > 0;
+    });
+    for (Dispatch& dispatch : dispatches) {
+        dispatch.groupsX = dispatch.groupsY = 1;
+    }
+    return dispatches;
+}
+
 // The band buffer's pixels from `offset` on (null for a buffer this render does not fill).
 template <typename Pixel>
 const Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
@@ -511,6 +570,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
                               const std::function<void(const Band&)>& consume, RowRange rowRange,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
+    const bool batched = plan.lightBatches.splits() && !tracing;
     const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
     const bool linear = output != GpuOutput::Encoded8 && !tracing;
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
@@ -526,10 +586,11 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const TileClassification* classification = tracing ? nullptr : plan.tileClasses.classification.get();
     const std::span<const Kernel> kernels = classification ? std::span<const Kernel>(plan.tileClasses.kernels)
                                                            : std::span<const Kernel>(&plan.kernel, 1);
-    std::vector<const vk::raii::Pipeline*> pipelines;
+    BandWork work{{}, classification, {}, scene.image.width};
+    work.shares = plan.lightBatches.work(scene.image.samplesPerPixel, std::uint32_t(scene.lights.size()));
     for (const Kernel& kernel : kernels) {
         KernelBuild build;
-        pipelines.push_back(
+        work.pipelines.push_back(
             &kernelPipeline(kernel, build, plan.layout, specialization, packed.constants, packed.constantSizes));
         result.timing.kernel.generateMilliseconds += build.generateMilliseconds;
         result.timing.kernel.compileMilliseconds += build.compileMilliseconds;
@@ -540,9 +601,10 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
 
-    // Large images render in bands of rows so the pixel buffer stays within the device's limit; a
-    // band is whole rows of tiles.
-    const vk::DeviceSize rowBytes = vk::DeviceSize{width} * sizeof(GpuPixel);
+    // Large images render in bands of rows so the pixel buffer (and light batches' carry) stays
+    // within the device's limit; a band is whole rows of tiles.
+    const vk::DeviceSize rowBytes =
+        vk::DeviceSize{width} * (sizeof(GpuPixel) + (batched ? sizeof(gpu::GpuPixelCarry) : 0));
     const vk::DeviceSize bandBytes =
         std::min<vk::DeviceSize>(physicalDevice.getProperties().limits.maxStorageBufferRange, maxBandBytes_);
     const std::uint32_t fitting = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
@@ -565,6 +627,8 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
                                     linear || tracing ? 0 : bandPixels * sizeof(gpu::GpuEncodedPixel), storage);
     HostVisibleBuffer aovBuffer(device, physicalDevice, aov ? bandPixels * sizeof(gpu::GpuAovPixel) : 0, storage);
     HostVisibleBuffer traceBuffer(device, physicalDevice, traceRequest.size(), storage);
+    HostVisibleBuffer carryBuffer(device, physicalDevice, batched ? bandPixels * sizeof(gpu::GpuPixelCarry) : 0,
+                                  storage);
     if (tracing) {
         traceBuffer.upload(traceRequest);
     }
@@ -590,7 +654,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
     const std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> buffers = {
         &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer, &encodedBuffer, nullptr,
-        nullptr,      &aovBuffer,  &traceBuffer, &tileBuffer,  nullptr,      nullptr};
+        nullptr,      &aovBuffer,  &traceBuffer, &tileBuffer,  nullptr,      nullptr,        &carryBuffer};
     candidateBuffers.write(device, set);
     for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
         if (!buffers[binding]) {
@@ -634,8 +698,10 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
         for (std::size_t i = 0; i < dispatches.size(); ++i) {
             const Dispatch& dispatch = dispatches[i];
             if (i > 0) {
-                // The classes write different pixels of the same buffers: ordered all the same.
-                const vk::MemoryBarrier between(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderWrite);
+                // The classes write different pixels of the same buffers: ordered all the same. A
+                // light batch reads and writes what the one before it carried.
+                const vk::MemoryBarrier between(vk::AccessFlagBits::eShaderWrite,
+                                                vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);
                 commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
                                          vk::PipelineStageFlagBits::eComputeShader, {}, between, nullptr, nullptr);
             }
@@ -644,7 +710,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
                                             dispatch.band);
             commands.dispatch(dispatch.groupsX, dispatch.groupsY, 1);
             samples += std::uint64_t(dispatch.groupsX) * dispatch.groupsY * WORKGROUP_SIZE * WORKGROUP_SIZE *
-                       scene.image.samplesPerPixel;
+                       (dispatch.band.endSample - dispatch.band.firstSample);
         }
         if (useTimestamps) {
             commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
@@ -668,40 +734,18 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
         return double((ticks[1] - ticks[0]) & timestampMask_) * nanosecondsPerTick_ * 1e-6;
     };
 
-    // The dispatches of the band [firstRow, firstRow + rows): the whole grid of tiles, or each
-    // tile class's listed tiles with its kernel (the lists uploaded here).
-    const auto bandDispatches = [&](std::uint32_t firstRow, std::uint32_t rows) {
-        std::vector<Dispatch> dispatches;
-        if (!classification) {
-            dispatches.push_back({pipelines[0], GpuBand{firstRow, rows, 0, 0}, groupsFor(width), groupsFor(rows)});
-            return dispatches;
-        }
-        const BandTiles tiles = bandTiles(*classification, firstRow, rows);
-        tileBuffer.upload(std::as_bytes(std::span(tiles.tiles)));
-        for (std::size_t c = 0; c < pipelines.size(); ++c) {
-            if (tiles.counts[c] > 0) {
-                dispatches.push_back({pipelines[c], GpuBand{firstRow, rows, tiles.firsts[c], 0}, tiles.counts[c], 1});
-            }
-        }
-        return dispatches;
-    };
-
     GpuTiming& timing = result.timing;
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
     if (tracing) {
         // One invocation does the work; the pixel is in the request, not in the dispatch.
-        const Dispatch trace{pipelines[0], GpuBand{0, 1, 0, 0}, 1, 1};
+        const GpuBand whole{0, 1, 0, 0, scene.image.samplesPerPixel, 0, std::uint32_t(scene.lights.size()), 0};
+        const Dispatch trace{work.pipelines[0], whole, 1, 1};
         timing.renderMilliseconds = run(std::span(&trace, 1), false);
         consume(Band{0, 0, nullptr, nullptr, nullptr, nullptr, traceBuffer.data()});
         return;
     }
-    // Warm-up: one workgroup of each kernel, so the driver's compile of it (lavapipe JITs at the
-    // first dispatch) is not counted as render time.
-    std::vector<Dispatch> warmUp = bandDispatches(0, std::min(rowsPerBand, height));
-    for (Dispatch& dispatch : warmUp) {
-        dispatch.groupsX = dispatch.groupsY = 1;
-    }
-    timing.firstDispatchMilliseconds = run(warmUp, false);
+    timing.firstDispatchMilliseconds =
+        run(warmUpDispatches(bandDispatches(work, 0, std::min(rowsPerBand, height), tileBuffer)), false);
 
     // Bands start on a tile row, so each tile is one of the classification's (a range of rows
     // that starts inside a tile renders that tile whole and hands on only the range's rows).
@@ -709,7 +753,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const std::uint32_t startRow = std::min(rowRange.first, endRow) / WORKGROUP_SIZE * WORKGROUP_SIZE;
     for (std::uint32_t firstRow = startRow; firstRow < endRow; firstRow += rowsPerBand) {
         const std::uint32_t rows = std::min(rowsPerBand, endRow - firstRow);
-        timing.renderMilliseconds += run(bandDispatches(firstRow, rows), true);
+        timing.renderMilliseconds += run(bandDispatches(work, firstRow, rows, tileBuffer), true);
         const std::uint32_t skipped = std::max(firstRow, rowRange.first) - firstRow;
         const std::size_t offset = std::size_t(skipped) * width;
         consume(Band{firstRow + skipped, rows - skipped, pixelsFrom<GpuPixel>(pixelBuffer, offset),
