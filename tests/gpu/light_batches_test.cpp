@@ -72,7 +72,24 @@ void expectAgreementWithTheReference(const Scene& scene, const GpuRenderResult& 
 TEST_P(LightBatchesTest, AFloorUnder25000LightsAgreesWithTheReference) {
     GpuRenderer renderer(context());
     const Scene scene = floorUnderLights(25000, 16, 12);
-    expectAgreementWithTheReference(scene, renderer.render(scene, GetParam()));
+    const RenderPlan plan = renderer.plan(scene, {GetParam()});
+    if (onLavapipe()) {
+        EXPECT_EQ(plan.lightBatches.lightEnds.size(), 2u);
+    }
+    expectAgreementWithTheReference(scene, renderer.render(scene, plan, GpuOutput::LinearAndClasses));
+}
+
+// Past the limit for four samples, not for one: two samples a dispatch.
+TEST_P(LightBatchesTest, AFloorUnder10000LightsAtFourSamplesAPixelAgreesWithTheReference) {
+    GpuRenderer renderer(context());
+    Scene scene = floorUnderLights(10000, 16, 12);
+    scene.image.samplesPerPixel = 4;
+    const RenderPlan plan = renderer.plan(scene, {GetParam()});
+    if (onLavapipe()) {
+        EXPECT_EQ(plan.lightBatches.samplesPerDispatch, 2u);
+        EXPECT_EQ(plan.lightBatches.lightEnds.size(), 1u);
+    }
+    expectAgreementWithTheReference(scene, renderer.render(scene, plan, GpuOutput::LinearAndClasses));
 }
 
 // `spheres` random spheres on the checkered floor under `lights` lights hanging over them, whose
