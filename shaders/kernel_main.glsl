@@ -14,6 +14,16 @@
 #include "scene_data.glsl"
 #include "surface.glsl"
 
+#ifdef HEXRAY_LIGHT_BATCHES
+#include "light_batches.glsl"
+#else
+// A generated kernel renders every sample and light of a pixel in one dispatch: its loops are
+// unrolled.
+#define FIRST_SAMPLE 0u
+#define END_SAMPLE SAMPLES_PER_PIXEL
+#define LAST_LIGHTS true
+#endif
+
 // The background colour: a generated kernel has it as a specialization constant, and then a tile
 // of sky compiles to a constant store.
 #ifndef SCENE_BACKGROUND
@@ -81,6 +91,37 @@ void traceMain() {
     trace.header.result.x = 1u;
 }
 
+#ifndef HEXRAY_LIGHT_BATCHES
+// A generated kernel shades a sample whole and carries nothing.
+vec3 shadeSample(Ray ray, Hit hit, bool background, uint index, out uint flags) {
+    return shade(ray, hit, flags);
+}
+
+vec3 carriedSum(uint index) {
+    return vec3(0.0);
+}
+
+void carrySum(uint index, vec3 sum) {}
+#endif
+
+// What the pixel shows and, with the AOVs, where: from its first sample.
+void writeClass(uint index, uint node, uint flags, Ray firstRay, Hit firstHit) {
+    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
+        classes[index] = uvec2(node, flags);
+        if (OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
+            writeAov(index, firstRay, firstHit);
+        }
+    }
+}
+
+void writeColor(uint index, vec3 color) {
+    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
+        pixels[index] = vec4(color, 1.0);
+    } else {
+        encodedPixels[index] = encode8(color);
+    }
+}
+
 void main() {
     if (OUTPUT_MODE == OUTPUT_TRACE) {
         traceMain();
@@ -90,20 +131,21 @@ void main() {
     if (pixel.x >= frame.imageSize.x || pixel.y >= band.rowCount) {
         return;
     }
+    uint index = pixel.y * frame.imageSize.x + pixel.x;
     // The pixel is classified by its first sample (as the CPU reference does).
     uint node = NO_NODE;
     uint flags = 0u;
     Ray firstRay;
     Hit firstHit;
-    vec3 sum = vec3(0.0);
-    for (uint sampleIndex = 0u; sampleIndex < SAMPLES_PER_PIXEL; ++sampleIndex) {
+    vec3 sum = FIRST_SAMPLE == 0u ? vec3(0.0) : carriedSum(index);
+    for (uint sampleIndex = FIRST_SAMPLE; sampleIndex < END_SAMPLE; ++sampleIndex) {
         Ray ray = primaryRay(uvec2(pixel.x, band.firstRow + pixel.y), sampleIndex);
         Hit hit = findNearestHit(ray);
+        bool background = hit.node == NO_NODE;
         uint sampleFlags = 0u;
         // Shaded whatever the hit: lavapipe runs both sides of a branch anyway, and a select
         // costs it less than the branch's bookkeeping.
-        vec3 shaded = shade(ray, hit, sampleFlags);
-        bool background = hit.node == NO_NODE;
+        vec3 shaded = shadeSample(ray, hit, background, index, sampleFlags);
         sum += background ? SCENE_BACKGROUND : shaded;
         if (sampleIndex == 0u) {
             node = hit.node;
@@ -112,16 +154,16 @@ void main() {
             firstHit = hit;
         }
     }
-    vec3 color = sampleAverage(sum);
-    uint index = pixel.y * frame.imageSize.x + pixel.x;
-    if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
-        pixels[index] = vec4(color, 1.0);
-        classes[index] = uvec2(node, flags);
-        if (OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
-            writeAov(index, firstRay, firstHit);
-        }
+    if (!LAST_LIGHTS) {
+        return;  // the sample goes on in the next dispatch
+    }
+    if (FIRST_SAMPLE == 0u) {
+        writeClass(index, node, flags, firstRay, firstHit);
+    }
+    if (END_SAMPLE == SAMPLES_PER_PIXEL) {
+        writeColor(index, sampleAverage(sum));
     } else {
-        encodedPixels[index] = encode8(color);
+        carrySum(index, sum);
     }
 }
 

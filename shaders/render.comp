@@ -7,6 +7,9 @@
 // HEXRAY_CANDIDATES.
 #extension GL_GOOGLE_include_directive : require
 
+// Its loops may pass lavapipe's limit: the host may render a pixel's lights in batches.
+#define HEXRAY_LIGHT_BATCHES
+
 #include "checker.glsl"
 #include "lighting.glsl"
 #include "node_tests.glsl"
@@ -110,9 +113,8 @@ Surface hitSurface(Ray ray, Hit hit) {
 #endif
 }
 
-vec3 shade(Ray ray, Hit hit, out uint flags) {
+vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 irradiance, inout uint flags) {
     Node node = nodes[hit.node];
-    flags = 0u;
     if (node.kinds.y == SHADER_CONSTANT) {
         return node.color1.rgb;
     }
@@ -125,12 +127,17 @@ vec3 shade(Ray ray, Hit hit, out uint flags) {
         flags |= ODD_CHECKER_BIT;
     }
     traceSurface(s, albedo);
-    vec3 irradiance = frame.ambient.rgb;
-    for (uint i = 0u; i < frame.lightCount; ++i) {
+    for (uint i = firstLight; i < endLight; ++i) {
         LightPath path = lightPath(s, lights[i].position.xyz);
         irradiance += lightTerm(i, lights[i].power, path, isOccluded(i, path, hit), flags);
     }
     return litColor(albedo, irradiance);
+}
+
+vec3 shade(Ray ray, Hit hit, out uint flags) {
+    flags = 0u;
+    vec3 irradiance = frame.ambient.rgb;
+    return shadeLights(ray, hit, 0u, frame.lightCount, irradiance, flags);
 }
 
 #include "kernel_main.glsl"

@@ -25,10 +25,16 @@ layout(std430, set = 0, binding = ENCODED_BINDING) writeonly buffer EncodedBlock
     uint encodedPixels[];
 };
 
+// GpuBand: the rows, and (the data-driven kernel's light batches, light_batches.glsl) the samples
+// of each pixel and the lights of each sample that this dispatch renders.
 layout(push_constant) uniform BandBlock {
     uint firstRow;
     uint rowCount;
     uint firstTile;
+    uint firstSample;
+    uint endSample;
+    uint firstLight;
+    uint endLight;
     uint unused;
 } band;
 

@@ -17,7 +17,8 @@ enum ExitCode : int {
     kSuccess = 0,
     kToleranceExceeded = 1,  // compare: the renders disagree by more than allowed
     kBadInput = 2,           // scene file or command line
-    kVulkanUnavailable = 3,  // no driver or device, no compute queue, no float64 for f64, a failed call
+    kVulkanUnavailable = 3,  // no driver or device, no compute queue, no float64 for f64, a failed call, a scene
+                             // past the device's loop limit (gpu/loop_budget.h)
     kValidationFailed = 4,   // --validate and the validation layer reported something
     kOutputFailed = 5,       // the image (or CSV) could not be written
     kInternalError = 6,      // anything else: out of memory, a thread that could not start

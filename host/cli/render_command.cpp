@@ -68,10 +68,21 @@ struct SceneRender {
     Progress progress() const { return Progress("rendering " + target.scenePath, rows.count); }
 };
 
+// How the data-driven kernel's work is split to stay within the device's loop limit (loop_budget.h).
+std::string describeBatches(const LightBatches& batches) {
+    if (!batches.splits()) {
+        return "";
+    }
+    if (batches.lightEnds.size() == 1) {
+        return ", " + std::to_string(batches.samplesPerDispatch) + " samples a dispatch (the device's loop limit)";
+    }
+    return ", " + std::to_string(batches.lightEnds.size()) + " batches of lights a sample (the device's loop limit)";
+}
+
 // "generated for the scene, written in 0.12 ms, glslang 9.8 ms", for the summary line.
 std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
     if (!plan.kernel.code) {
-        return plan.kernel.name + " (prebuilt)";
+        return plan.kernel.name + " (prebuilt)" + describeBatches(plan.lightBatches);
     }
     const std::size_t classes = plan.tileClasses.kernels.size();
     const std::string name = classes ? "generated for each of " + std::to_string(classes) + " tile classes"

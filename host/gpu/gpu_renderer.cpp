@@ -432,6 +432,17 @@ std::vector<std::byte> traceRequest(const Scene& scene, std::uint32_t x, std::ui
     return bytes;
 }
 
+// One invocation traces a pixel: its loops cannot be split between dispatches (loop_budget.h).
+void requireTraceWithinLoopLimit(const RenderPlan& plan, const std::string& device) {
+    if (plan.tracePasses > plan.loopPassLimit) {
+        throw VulkanError(VulkanFailure::Unsupported,
+                          "tracing a pixel of this scene may need " + std::to_string(plan.tracePasses) +
+                              " loop passes in one invocation, and " + device + " ends a shader's loops after " +
+                              std::to_string(plan.loopPassLimit) + " in all: the trace would be wrong",
+                          "use --backend cpu");
+    }
+}
+
 std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) {
     if (tracing) return gpu::OUTPUT_TRACE;
     switch (output) {
@@ -446,6 +457,7 @@ std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) 
 
 GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,
                                       std::uint32_t sample) {
+    requireTraceWithinLoopLimit(plan, context_.selected().name);
     const bool f64 = plan.width == FloatWidth::F64;
     const std::vector<std::byte> request =
         f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
@@ -498,6 +510,53 @@ BandTiles bandTiles(const TileClassification& classification, std::uint32_t firs
     return band;
 }
 
+// What the dispatches of every band share: the kernels' pipelines (the plan's, or one per tile
+// class), the tiles' classification, and each pixel's work in shares, one dispatch each (the
+// data-driven kernel's light batches; otherwise one share, all of it).
+struct BandWork {
+    std::vector<const vk::raii::Pipeline*> pipelines;
+    const TileClassification* classification = nullptr;
+    std::vector<PixelWork> shares;
+    std::uint32_t width = 0;
+};
+
+// The dispatches of the band [firstRow, firstRow + rows): the whole grid of tiles once per share,
+// or each tile class's listed tiles with its kernel (the lists uploaded to `tileBuffer` here).
+std::vector<Dispatch> bandDispatches(const BandWork& work, std::uint32_t firstRow, std::uint32_t rows,
+                                     HostVisibleBuffer& tileBuffer) {
+    std::vector<Dispatch> dispatches;
+    if (!work.classification) {
+        for (const PixelWork& share : work.shares) {
+            const GpuBand band{firstRow, rows, 0, share.firstSample, share.endSample, share.firstLight,
+                               share.endLight, 0};
+            dispatches.push_back({work.pipelines[0], band, groupsFor(work.width), groupsFor(rows)});
+        }
+        return dispatches;
+    }
+    const PixelWork& all = work.shares.front();
+    const BandTiles tiles = bandTiles(*work.classification, firstRow, rows);
+    tileBuffer.upload(std::as_bytes(std::span(tiles.tiles)));
+    for (std::size_t c = 0; c < work.pipelines.size(); ++c) {
+        if (tiles.counts[c] > 0) {
+            const GpuBand band{firstRow, rows, tiles.firsts[c], 0, all.endSample, 0, all.endLight, 0};
+            dispatches.push_back({work.pipelines[c], band, tiles.counts[c], 1});
+        }
+    }
+    return dispatches;
+}
+
+// One workgroup of each kernel, so that the driver's compile of it (lavapipe JITs at the first
+// dispatch) is not counted as render time: of the first share, which reads nothing carried.
+std::vector<Dispatch> warmUpDispatches(std::vector<Dispatch> dispatches) {
+    std::erase_if(dispatches, [](const Dispatch& dispatch) {
+        return dispatch.band.firstSample > 0 || dispatch.band.firstLight > 0;
+    });
+    for (Dispatch& dispatch : dispatches) {
+        dispatch.groupsX = dispatch.groupsY = 1;
+    }
+    return dispatches;
+}
+
 // The band buffer's pixels from `offset` on (null for a buffer this render does not fill).
 template <typename Pixel>
 const Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
@@ -505,217 +564,271 @@ const Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
     return first ? first + offset : nullptr;
 }
 
-}  // namespace
+// What one render writes and how large its bands are.
+struct BandShape {
+    bool linear;          // pixels and classes (else the encoded image)
+    bool aov;             // and the AOVs
+    bool batched;         // light batches: the carry buffer
+    std::uint32_t rows;   // per band
+    std::size_t pixels;   // per band
+    std::size_t tiles;    // per band, when tile classes list their tiles
+};
 
-void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
-                              const std::function<void(const Band&)>& consume, RowRange rowRange,
-                              std::span<const std::byte> traceRequest) {
-    const bool tracing = !traceRequest.empty();
-    const bool aov = output == GpuOutput::LinearClassesAndAov && !tracing;
-    const bool linear = output != GpuOutput::Encoded8 && !tracing;
-    const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
-    const auto uploadStart = std::chrono::steady_clock::now();
-    const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
-    const bool uniformScene = plan.layout == SceneLayout::Uniform;
-    result.precision = plan.precision;
-    result.usedCandidateLists = plan.layout == SceneLayout::StorageCandidates;
-
-    const vk::raii::Device& device = context_.device();
-    const vk::raii::PhysicalDevice& physicalDevice = context_.physicalDevice();
-    // The kernels: the plan's, or (culling, not for a traced pixel) one per tile class.
-    const TileClassification* classification = tracing ? nullptr : plan.tileClasses.classification.get();
-    const std::span<const Kernel> kernels = classification ? std::span<const Kernel>(plan.tileClasses.kernels)
-                                                           : std::span<const Kernel>(&plan.kernel, 1);
-    std::vector<const vk::raii::Pipeline*> pipelines;
-    for (const Kernel& kernel : kernels) {
-        KernelBuild build;
-        pipelines.push_back(
-            &kernelPipeline(kernel, build, plan.layout, specialization, packed.constants, packed.constantSizes));
-        result.timing.kernel.generateMilliseconds += build.generateMilliseconds;
-        result.timing.kernel.compileMilliseconds += build.compileMilliseconds;
-        result.timing.kernel.loadMilliseconds += build.loadMilliseconds;
-        result.timing.kernel.fromDiskCache = build.fromDiskCache;
-    }
-    const SceneBindings& sceneBindings = bindings(plan.layout);
+// Large images render in bands of rows so the pixel buffer (and the light batches' carry) stays
+// within `limit` bytes; a band is whole rows of tiles.
+BandShape bandShape(const Scene& scene, GpuOutput output, bool tracing, bool lightBatches, bool tiled,
+                    vk::DeviceSize limit) {
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
+    const bool batched = lightBatches && !tracing;
+    const vk::DeviceSize rowBytes =
+        vk::DeviceSize{width} * (sizeof(GpuPixel) + (batched ? sizeof(gpu::GpuPixelCarry) : 0));
+    const std::uint32_t fitting = std::uint32_t(std::clamp<vk::DeviceSize>(limit / rowBytes, 1, height));
+    const std::uint32_t rows =
+        fitting >= height ? height : std::max(WORKGROUP_SIZE, fitting / WORKGROUP_SIZE * WORKGROUP_SIZE);
+    return {output != GpuOutput::Encoded8 && !tracing, output == GpuOutput::LinearClassesAndAov && !tracing, batched,
+            rows, std::size_t(rows) * width, tiled ? std::size_t(groupsFor(width)) * groupsFor(rows) : 0};
+}
 
-    // Large images render in bands of rows so the pixel buffer stays within the device's limit; a
-    // band is whole rows of tiles.
-    const vk::DeviceSize rowBytes = vk::DeviceSize{width} * sizeof(GpuPixel);
-    const vk::DeviceSize bandBytes =
-        std::min<vk::DeviceSize>(physicalDevice.getProperties().limits.maxStorageBufferRange, maxBandBytes_);
-    const std::uint32_t fitting = std::uint32_t(std::clamp<vk::DeviceSize>(bandBytes / rowBytes, 1, height));
-    const std::uint32_t rowsPerBand = fitting >= height ? height : std::max(WORKGROUP_SIZE, fitting / WORKGROUP_SIZE * WORKGROUP_SIZE);
-    const std::size_t bandPixels = std::size_t(rowsPerBand) * width;
-    const std::size_t bandTileCount = std::size_t(groupsFor(width)) * groupsFor(rowsPerBand);
+// A render's buffers with its descriptor set, command buffer and fence: created together,
+// destroyed together, or after a hang left together to the device (abandon(), LeakIfAbandoned).
+struct BandBuffers {
+    HostVisibleBuffer frame, nodes, lights, pixels, classes, encoded, aov, trace, tiles, carry;
+    CandidateBuffers candidates;
+    vk::raii::DescriptorPool pool = nullptr;
+    vk::raii::DescriptorSets sets = nullptr;
+    vk::raii::CommandBuffers commandBuffers = nullptr;
+    vk::raii::Fence done = nullptr;
 
+    // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
+    std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> byBinding() {
+        return {&frame, &nodes,  &lights, &pixels, &classes, &encoded, nullptr,
+                nullptr, &aov,  &trace,  &tiles,  nullptr,  nullptr,  &carry};
+    }
+    void abandon() {
+        for (HostVisibleBuffer* buffer : byBinding()) {
+            if (buffer) {
+                buffer->abandon();
+            }
+        }
+        candidates.abandon();
+        sets[0].release();
+        pool.release();
+        commandBuffers[0].release();
+        done.release();
+    }
+};
+
+// The descriptor set of `buffers`, every binding written; the command buffer and fence.
+void bindBandBuffers(BandBuffers& buffers, const vk::raii::Device& device, const vk::raii::CommandPool& commandPool,
+                     const vk::raii::DescriptorSetLayout& setLayout, bool uniformScene) {
+    const std::array<vk::DescriptorPoolSize, 3> poolSizes = {
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, gpu::BINDING_COUNT),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, gpu::BINDING_COUNT),
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, gpu::BINDING_COUNT)};
+    buffers.pool = vk::raii::DescriptorPool(
+        device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
+    const vk::DescriptorSetLayout layouts[] = {*setLayout};
+    buffers.sets = vk::raii::DescriptorSets(device, vk::DescriptorSetAllocateInfo(*buffers.pool, layouts));
+    const vk::raii::DescriptorSet& set = buffers.sets[0];
+    buffers.candidates.write(device, set);
+    const auto byBinding = buffers.byBinding();
+    for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
+        if (const HostVisibleBuffer* buffer = byBinding[binding]) {
+            const vk::DescriptorBufferInfo info(*buffer->buffer(), 0, buffer->size());
+            device.updateDescriptorSets(
+                vk::WriteDescriptorSet(*set, binding, 0, descriptorType(binding, uniformScene), nullptr, info),
+                nullptr);
+        }
+    }
+    buffers.commandBuffers = vk::raii::CommandBuffers(
+        device, vk::CommandBufferAllocateInfo(*commandPool, vk::CommandBufferLevel::ePrimary, 1));
+    buffers.done = vk::raii::Fence(device, vk::FenceCreateInfo());
+}
+
+// Records `dispatches` into `commands`, each after the writes of the one before; returns the
+// samples they render, for the hang timeout.
+std::uint64_t recordDispatches(const vk::raii::CommandBuffer& commands, const vk::raii::PipelineLayout& layout,
+                               std::span<const Dispatch> dispatches) {
+    std::uint64_t samples = 0;
+    for (std::size_t i = 0; i < dispatches.size(); ++i) {
+        const Dispatch& dispatch = dispatches[i];
+        if (i > 0) {
+            // The classes write different pixels of the same buffers: ordered all the same. A
+            // light batch reads and writes what the one before it carried.
+            const vk::MemoryBarrier between(vk::AccessFlagBits::eShaderWrite,
+                                            vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);
+            commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
+                                     vk::PipelineStageFlagBits::eComputeShader, {}, between, nullptr, nullptr);
+        }
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, **dispatch.pipeline);
+        commands.pushConstants<GpuBand>(*layout, vk::ShaderStageFlagBits::eCompute, 0, dispatch.band);
+        commands.dispatch(dispatch.groupsX, dispatch.groupsY, 1);
+        samples += std::uint64_t(dispatch.groupsX) * dispatch.groupsY * WORKGROUP_SIZE * WORKGROUP_SIZE *
+                   (dispatch.band.endSample - dispatch.band.firstSample);
+    }
+    return samples;
+}
+
+// A render's buffers, the scene's uploaded (running out of memory there is the scene's size) and
+// the request of a traced pixel, bound to a descriptor set of `setLayout`.
+BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::CommandPool& commandPool,
+                            const vk::raii::DescriptorSetLayout& setLayout, const Scene& scene, const RenderPlan& plan,
+                            const PackedScene& packed, const BandShape& shape, std::span<const std::byte> traceRequest) {
+    const vk::raii::Device& device = context.device();
+    const vk::raii::PhysicalDevice& physicalDevice = context.physicalDevice();
+    const bool uniformScene = plan.layout == SceneLayout::Uniform;
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
     const vk::BufferUsageFlags sceneUsage = uniformScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
     const auto sceneBuffer = [&](std::size_t size) {
         return holdingScene(scene, plan, [&] { return HostVisibleBuffer(device, physicalDevice, size, sceneUsage); });
     };
-    HostVisibleBuffer frameBuffer(device, physicalDevice, packed.frame.size(), sceneUsage);
-    HostVisibleBuffer nodeBuffer = sceneBuffer(packed.nodes.size());
-    HostVisibleBuffer lightBuffer = sceneBuffer(packed.lights.size());
     // Only the output mode's buffers get their full size; the others are bound but never written.
-    HostVisibleBuffer pixelBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixel) : 0, storage);
-    HostVisibleBuffer classBuffer(device, physicalDevice, linear ? bandPixels * sizeof(GpuPixelClass) : 0, storage);
-    HostVisibleBuffer encodedBuffer(device, physicalDevice,
-                                    linear || tracing ? 0 : bandPixels * sizeof(gpu::GpuEncodedPixel), storage);
-    HostVisibleBuffer aovBuffer(device, physicalDevice, aov ? bandPixels * sizeof(gpu::GpuAovPixel) : 0, storage);
-    HostVisibleBuffer traceBuffer(device, physicalDevice, traceRequest.size(), storage);
-    if (tracing) {
-        traceBuffer.upload(traceRequest);
+    const auto output = [&](bool used, std::size_t bytesPerPixel) {
+        return HostVisibleBuffer(device, physicalDevice, used ? shape.pixels * bytesPerPixel : 0, storage);
+    };
+    const bool encoded = !shape.linear && traceRequest.empty();
+    BandBuffers buffers{
+        HostVisibleBuffer(device, physicalDevice, packed.frame.size(), sceneUsage), sceneBuffer(packed.nodes.size()),
+        sceneBuffer(packed.lights.size()), output(shape.linear, sizeof(GpuPixel)),
+        output(shape.linear, sizeof(GpuPixelClass)), output(encoded, sizeof(gpu::GpuEncodedPixel)),
+        output(shape.aov, sizeof(gpu::GpuAovPixel)),
+        HostVisibleBuffer(device, physicalDevice, traceRequest.size(), storage),
+        HostVisibleBuffer(device, physicalDevice, shape.tiles * sizeof(glm::uvec2), storage),
+        output(shape.batched, sizeof(gpu::GpuPixelCarry)), holdingScene(scene, plan, [&] {
+            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
+        })};
+    buffers.trace.upload(traceRequest);
+    buffers.frame.upload(std::span(packed.frame));
+    buffers.nodes.upload(std::span(packed.nodes));
+    buffers.lights.upload(std::span(packed.lights));
+    bindBandBuffers(buffers, device, commandPool, setLayout, uniformScene);
+    return buffers;
+}
+
+// The device's timestamps (a null pool: none), to time dispatches by.
+struct Timestamps {
+    const vk::raii::QueryPool& pool;
+    std::uint64_t mask;
+    double nanosecondsPerTick;
+};
+
+// Records, submits and waits for `dispatches`; returns their duration in milliseconds (`timed`:
+// by the device's timestamps where it has them).
+double submitBand(const VulkanContext& context, const Timestamps& timestamps, BandBuffers& buffers,
+                  const vk::raii::PipelineLayout& pipelineLayout, const Scene& scene,
+                  std::span<const Dispatch> dispatches, bool timed) {
+    const vk::raii::QueryPool& timestamps_ = timestamps.pool;
+    const bool useTimestamps = timed && *timestamps_;
+    const vk::raii::CommandBuffer& commands = buffers.commandBuffers[0];
+    commands.reset();
+    commands.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
+    if (useTimestamps) {
+        commands.resetQueryPool(*timestamps_, 0, 2);
+        commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
     }
-    HostVisibleBuffer tileBuffer(device, physicalDevice, classification ? bandTileCount * sizeof(glm::uvec2) : 0,
-                                 storage);
-    frameBuffer.upload(std::span(packed.frame));
-    nodeBuffer.upload(std::span(packed.nodes));
-    lightBuffer.upload(std::span(packed.lights));
-    CandidateBuffers candidateBuffers = holdingScene(scene, plan, [&] {
-        return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
-    });
+    commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout, 0, *buffers.sets[0], nullptr);
+    const std::uint64_t samples = recordDispatches(commands, pipelineLayout, dispatches);
+    if (useTimestamps) {
+        commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
+    }
+    // The shader's writes must be visible to the host's reads of the mapped buffers.
+    const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
+    commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {}, toHost,
+                             nullptr, nullptr);
+    commands.end();
+
+    const auto start = std::chrono::steady_clock::now();
+    context.submitAndWait(commands, buffers.done, dispatchTimeout(scene, samples));  // throws VulkanError
+    context.device().resetFences(*buffers.done);
+    const double wallMilliseconds = millisecondsSince(start);
+    if (!useTimestamps) {
+        return wallMilliseconds;
+    }
+    const auto [status, ticks] = timestamps_.getResults<std::uint64_t>(
+        0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
+        vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+    return double((ticks[1] - ticks[0]) & timestamps.mask) * timestamps.nanosecondsPerTick * 1e-6;
+}
+
+}  // namespace
+
+std::vector<const vk::raii::Pipeline*> GpuRenderer::pipelinesFor(std::span<const Kernel> kernels,
+                                                                 const RenderPlan& plan,
+                                                                 const gpu::Specialization& specialization,
+                                                                 std::span<const std::byte> sceneValues,
+                                                                 std::span<const std::uint32_t> sceneSizes,
+                                                                 KernelBuild& timing) {
+    std::vector<const vk::raii::Pipeline*> pipelines;
+    for (const Kernel& kernel : kernels) {
+        KernelBuild build;
+        pipelines.push_back(&kernelPipeline(kernel, build, plan.layout, specialization, sceneValues, sceneSizes));
+        timing.generateMilliseconds += build.generateMilliseconds;
+        timing.compileMilliseconds += build.compileMilliseconds;
+        timing.loadMilliseconds += build.loadMilliseconds;
+        timing.fromDiskCache = build.fromDiskCache;
+    }
+    return pipelines;
+}
+
+void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
+                              const std::function<void(const Band&)>& consume, RowRange rowRange,
+                              std::span<const std::byte> traceRequest) {
+    const bool tracing = !traceRequest.empty();
+    const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
+    const auto uploadStart = std::chrono::steady_clock::now();
+    const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
+    result.precision = plan.precision;
+    result.usedCandidateLists = plan.layout == SceneLayout::StorageCandidates;
+    // The kernels: the plan's, or (culling, not for a traced pixel) one per tile class.
+    const TileClassification* classification = tracing ? nullptr : plan.tileClasses.classification.get();
+    const std::span<const Kernel> kernels = classification ? std::span<const Kernel>(plan.tileClasses.kernels)
+                                                           : std::span<const Kernel>(&plan.kernel, 1);
+    const std::uint32_t lightCount = std::uint32_t(scene.lights.size());
+    const BandWork work{pipelinesFor(kernels, plan, specialization, packed.constants, packed.constantSizes,
+                                     result.timing.kernel),
+                        classification, plan.lightBatches.work(scene.image.samplesPerPixel, lightCount),
+                        scene.image.width};
+    const vk::DeviceSize bandBytes = std::min<vk::DeviceSize>(
+        context_.physicalDevice().getProperties().limits.maxStorageBufferRange, maxBandBytes_);
+    const BandShape shape =
+        bandShape(scene, output, tracing, plan.lightBatches.splits(), classification != nullptr, bandBytes);
+    const SceneBindings& sceneBindings = bindings(plan.layout);
+    BandBuffers buffers =
+        makeBandBuffers(context_, commandPool_, sceneBindings.setLayout, scene, plan, packed, shape, traceRequest);
     result.timing.uploadMilliseconds = millisecondsSince(uploadStart);
-
-    const std::array<vk::DescriptorPoolSize, 3> poolSizes = {
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, gpu::BINDING_COUNT),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, gpu::BINDING_COUNT),
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformTexelBuffer, gpu::BINDING_COUNT)};
-    vk::raii::DescriptorPool pool(
-        device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
-    const vk::DescriptorSetLayout layouts[] = {*sceneBindings.setLayout};
-    vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo(*pool, layouts));
-    const vk::raii::DescriptorSet& set = sets[0];
-    // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
-    const std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> buffers = {
-        &frameBuffer, &nodeBuffer, &lightBuffer, &pixelBuffer, &classBuffer, &encodedBuffer, nullptr,
-        nullptr,      &aovBuffer,  &traceBuffer, &tileBuffer,  nullptr,      nullptr};
-    candidateBuffers.write(device, set);
-    for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
-        if (!buffers[binding]) {
-            continue;
-        }
-        const vk::DescriptorBufferInfo info(*buffers[binding]->buffer(), 0, buffers[binding]->size());
-        device.updateDescriptorSets(
-            vk::WriteDescriptorSet(*set, binding, 0, descriptorType(binding, uniformScene), nullptr, info), nullptr);
-    }
-
-    vk::raii::CommandBuffers commandBuffers(
-        device, vk::CommandBufferAllocateInfo(*commandPool_, vk::CommandBufferLevel::ePrimary, 1));
-    const vk::raii::CommandBuffer& commands = commandBuffers[0];
-    vk::raii::Fence done(device, vk::FenceCreateInfo());
     // Destroyed first when a hang unwinds this scope: the hung dispatch may still be using the
-    // objects above, so they are leaked with the device instead (VulkanContext::abandoned()).
-    const LeakIfAbandoned leakIfAbandoned{context_, [&] {
-        for (HostVisibleBuffer* buffer : buffers) {
-            if (buffer) {
-                buffer->abandon();
-            }
-        }
-        candidateBuffers.abandon();
-        sets[0].release();
-        pool.release();
-        commandBuffers[0].release();
-        done.release();
-    }};
-
-    // Records, submits and waits for a band's dispatches; returns their duration in milliseconds.
+    // buffers, so they are leaked with the device instead (VulkanContext::abandoned()).
+    const LeakIfAbandoned leakIfAbandoned{context_, [&] { buffers.abandon(); }};
+    const Timestamps timestamps{timestamps_, timestampMask_, nanosecondsPerTick_};
     const auto run = [&](std::span<const Dispatch> dispatches, bool timed) {
-        const bool useTimestamps = timed && *timestamps_;
-        commands.reset();
-        commands.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
-        if (useTimestamps) {
-            commands.resetQueryPool(*timestamps_, 0, 2);
-            commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *timestamps_, 0);
-        }
-        commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *sceneBindings.pipelineLayout, 0, *set, nullptr);
-        std::uint64_t samples = 0;
-        for (std::size_t i = 0; i < dispatches.size(); ++i) {
-            const Dispatch& dispatch = dispatches[i];
-            if (i > 0) {
-                // The classes write different pixels of the same buffers: ordered all the same.
-                const vk::MemoryBarrier between(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderWrite);
-                commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader,
-                                         vk::PipelineStageFlagBits::eComputeShader, {}, between, nullptr, nullptr);
-            }
-            commands.bindPipeline(vk::PipelineBindPoint::eCompute, **dispatch.pipeline);
-            commands.pushConstants<GpuBand>(*sceneBindings.pipelineLayout, vk::ShaderStageFlagBits::eCompute, 0,
-                                            dispatch.band);
-            commands.dispatch(dispatch.groupsX, dispatch.groupsY, 1);
-            samples += std::uint64_t(dispatch.groupsX) * dispatch.groupsY * WORKGROUP_SIZE * WORKGROUP_SIZE *
-                       scene.image.samplesPerPixel;
-        }
-        if (useTimestamps) {
-            commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *timestamps_, 1);
-        }
-        // The shader's writes must be visible to the host's reads of the mapped buffers.
-        const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
-        commands.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {},
-                                 toHost, nullptr, nullptr);
-        commands.end();
-
-        const auto start = std::chrono::steady_clock::now();
-        context_.submitAndWait(commands, done, dispatchTimeout(scene, samples));  // throws VulkanError
-        device.resetFences(*done);
-        const double wallMilliseconds = millisecondsSince(start);
-        if (!useTimestamps) {
-            return wallMilliseconds;
-        }
-        const auto [status, ticks] = timestamps_.getResults<std::uint64_t>(
-            0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
-            vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-        return double((ticks[1] - ticks[0]) & timestampMask_) * nanosecondsPerTick_ * 1e-6;
+        return submitBand(context_, timestamps, buffers, sceneBindings.pipelineLayout, scene, dispatches, timed);
     };
-
-    // The dispatches of the band [firstRow, firstRow + rows): the whole grid of tiles, or each
-    // tile class's listed tiles with its kernel (the lists uploaded here).
-    const auto bandDispatches = [&](std::uint32_t firstRow, std::uint32_t rows) {
-        std::vector<Dispatch> dispatches;
-        if (!classification) {
-            dispatches.push_back({pipelines[0], GpuBand{firstRow, rows, 0, 0}, groupsFor(width), groupsFor(rows)});
-            return dispatches;
-        }
-        const BandTiles tiles = bandTiles(*classification, firstRow, rows);
-        tileBuffer.upload(std::as_bytes(std::span(tiles.tiles)));
-        for (std::size_t c = 0; c < pipelines.size(); ++c) {
-            if (tiles.counts[c] > 0) {
-                dispatches.push_back({pipelines[c], GpuBand{firstRow, rows, tiles.firsts[c], 0}, tiles.counts[c], 1});
-            }
-        }
-        return dispatches;
-    };
-
     GpuTiming& timing = result.timing;
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
     if (tracing) {
         // One invocation does the work; the pixel is in the request, not in the dispatch.
-        const Dispatch trace{pipelines[0], GpuBand{0, 1, 0, 0}, 1, 1};
+        const Dispatch trace{work.pipelines[0], GpuBand{0, 1, 0, 0, scene.image.samplesPerPixel, 0, lightCount, 0}, 1, 1};
         timing.renderMilliseconds = run(std::span(&trace, 1), false);
-        consume(Band{0, 0, nullptr, nullptr, nullptr, nullptr, traceBuffer.data()});
+        consume(Band{0, 0, nullptr, nullptr, nullptr, nullptr, buffers.trace.data()});
         return;
     }
-    // Warm-up: one workgroup of each kernel, so the driver's compile of it (lavapipe JITs at the
-    // first dispatch) is not counted as render time.
-    std::vector<Dispatch> warmUp = bandDispatches(0, std::min(rowsPerBand, height));
-    for (Dispatch& dispatch : warmUp) {
-        dispatch.groupsX = dispatch.groupsY = 1;
-    }
-    timing.firstDispatchMilliseconds = run(warmUp, false);
-
+    const std::uint32_t height = scene.image.height;
+    timing.firstDispatchMilliseconds =
+        run(warmUpDispatches(bandDispatches(work, 0, std::min(shape.rows, height), buffers.tiles)), false);
     // Bands start on a tile row, so each tile is one of the classification's (a range of rows
     // that starts inside a tile renders that tile whole and hands on only the range's rows).
     const std::uint32_t endRow = std::min(rowRange.end(), height);
     const std::uint32_t startRow = std::min(rowRange.first, endRow) / WORKGROUP_SIZE * WORKGROUP_SIZE;
-    for (std::uint32_t firstRow = startRow; firstRow < endRow; firstRow += rowsPerBand) {
-        const std::uint32_t rows = std::min(rowsPerBand, endRow - firstRow);
-        timing.renderMilliseconds += run(bandDispatches(firstRow, rows), true);
+    for (std::uint32_t firstRow = startRow; firstRow < endRow; firstRow += shape.rows) {
+        const std::uint32_t rows = std::min(shape.rows, endRow - firstRow);
+        timing.renderMilliseconds += run(bandDispatches(work, firstRow, rows, buffers.tiles), true);
         const std::uint32_t skipped = std::max(firstRow, rowRange.first) - firstRow;
-        const std::size_t offset = std::size_t(skipped) * width;
-        consume(Band{firstRow + skipped, rows - skipped, pixelsFrom<GpuPixel>(pixelBuffer, offset),
-                     pixelsFrom<GpuPixelClass>(classBuffer, offset),
-                     pixelsFrom<gpu::GpuEncodedPixel>(encodedBuffer, offset),
-                     pixelsFrom<gpu::GpuAovPixel>(aovBuffer, offset), traceBuffer.data()});
+        const std::size_t offset = std::size_t(skipped) * scene.image.width;
+        consume(Band{firstRow + skipped, rows - skipped, pixelsFrom<GpuPixel>(buffers.pixels, offset),
+                     pixelsFrom<GpuPixelClass>(buffers.classes, offset),
+                     pixelsFrom<gpu::GpuEncodedPixel>(buffers.encoded, offset),
+                     pixelsFrom<gpu::GpuAovPixel>(buffers.aov, offset), buffers.trace.data()});
     }
 }
 

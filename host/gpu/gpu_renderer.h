@@ -180,6 +180,11 @@ private:
     const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, std::uint64_t generatedId, SceneLayout layout,
                                        const gpu::Specialization& specialization,
                                        std::span<const std::byte> sceneValues, std::span<const std::uint32_t> sceneSizes);
+    // The pipelines of `kernels` for `plan`, their build times added to `timing`.
+    std::vector<const vk::raii::Pipeline*> pipelinesFor(std::span<const Kernel> kernels, const RenderPlan& plan,
+                                                        const gpu::Specialization& specialization,
+                                                        std::span<const std::byte> sceneValues,
+                                                        std::span<const std::uint32_t> sceneSizes, KernelBuild& timing);
     // `kernel`'s SPIR-V (see KernelCompiler) and its pipeline. SPIR-V from the disk cache that the
     // driver refuses is a miss: it is compiled afresh and the pipeline made again; only a failure on
     // fresh SPIR-V is an error.

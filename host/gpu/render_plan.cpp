@@ -40,12 +40,6 @@ constexpr double kFastMaxShadowOutside = 32.0;
 constexpr std::size_t kMaxTileClasses = 12;
 static_assert(kMaxTileClasses < kKeptPipelines, "a render holds a pipeline per tile class at once");
 constexpr std::uint64_t kCullingMinSamples = std::uint64_t{32} << 20;
-// lavapipe (Mesa's gallivm, LP_MAX_TGSI_LOOP_ITERATIONS) ends every loop of a shader invocation,
-// silently, once its loops together have run this many iterations.
-constexpr std::uint64_t kLavapipeLoopIterations = 65535;
-// The data-driven kernel's iterations per light at a lit point, besides its shadow tests (measured:
-// a floor alone under 21000 lights renders right, under 22500 not).
-constexpr std::uint64_t kLoopIterationsPerLight = 2;
 
 // The first sphere that hides `light` from every visible point (sphereHidesLight), if any.
 std::optional<std::uint32_t> sphereHidingLight(const Scene& scene, const PointLight& light) {
@@ -181,24 +175,34 @@ TileClasses tileClassesFor(const Scene& scene, const SceneCode& code) {
     return classes;
 }
 
-// On lavapipe, the data-driven kernel's loop iterations for a pixel that shows a lit surface: per
-// sample, each light's and its shadow tests (its planes and at least one listed sphere, or every
-// node). A warning when they pass what lavapipe runs.
-std::optional<std::string> loopLimitProblem(const Scene& scene, const RenderPlan& plan, const DeviceAbilities& device) {
-    if (plan.layout == SceneLayout::Uniform || device.name.find("llvmpipe") == std::string::npos) {
-        return std::nullopt;  // a generated kernel's loops are unrolled
+// The loop passes one dispatch may make on `device`: lavapipe's limit, or none (loop_budget.h).
+std::uint64_t loopPassLimitOf(const PlanRequest& request, const DeviceAbilities& device) {
+    if (request.loopPassLimit != 0) {
+        return request.loopPassLimit;
     }
-    const std::uint64_t planes = scene.nodes.size() - countSpheres(scene);
-    const std::uint64_t shadowTests = plan.candidates ? planes + 1 : scene.nodes.size();
-    const std::uint64_t iterations =
-        std::uint64_t(scene.image.samplesPerPixel) * scene.lights.size() * (kLoopIterationsPerLight + shadowTests);
-    if (iterations <= kLavapipeLoopIterations) {
-        return std::nullopt;
+    return device.name.find("llvmpipe") != std::string::npos ? kLavapipeLoopPasses : UINT64_MAX;
+}
+
+// The data-driven kernel's light batches within the device's loop limit (a generated kernel's
+// loops are unrolled); a scene one sample and one light of which pass it is refused.
+void planLoops(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device, RenderPlan& plan) {
+    if (plan.layout == SceneLayout::Uniform) {
+        return;
     }
-    return "lavapipe stops a shader's loops after 65535 loop iterations in all, and a pixel of this scene may need " +
-           std::to_string(iterations) + " (" + std::to_string(scene.lights.size()) +
-           " lights, each with its shadow tests, per sample): such pixels come out wrong; --backend cpu renders "
-           "them right";
+    plan.loopPassLimit = loopPassLimitOf(request, device);
+    const LoopPasses passes = loopPasses(scene, plan.candidates.get());
+    plan.tracePasses = tracePasses(passes, scene.image.samplesPerPixel);
+    if (auto batches = planLightBatches(passes, scene.image.samplesPerPixel, plan.loopPassLimit)) {
+        plan.lightBatches = std::move(*batches);
+        return;
+    }
+    throw VulkanError(VulkanFailure::Unsupported,
+                      "a pixel of this scene (" + sceneContents(scene) + ") may need " +
+                          std::to_string(smallestDispatchPasses(passes)) +
+                          " loop passes for a single sample and light (its camera ray and its longest shadow test), "
+                          "and " + device.name + " ends a shader's loops after " +
+                          std::to_string(plan.loopPassLimit) + " in all: it cannot render it right",
+                      "use --backend cpu");
 }
 
 }  // namespace
@@ -276,9 +280,7 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
     }
-    if (const auto problem = loopLimitProblem(scene, plan, device)) {
-        plan.warnings.push_back(*problem);
-    }
+    planLoops(scene, request, device, plan);
     return plan;
 }
 

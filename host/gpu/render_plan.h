@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "accel/acceleration.h"
+#include "gpu/loop_budget.h"
 #include "kernels/kernel.h"
 #include "precision/arithmetic.h"
 #include "precision/precision.h"
@@ -49,6 +50,10 @@ struct PlanRequest {
     // False: the data-driven kernel even for a small scene. It is the same program for every scene,
     // so a test of many scenes (the differential fuzzer) compiles it once rather than per scene.
     bool generatedKernel = true;
+    // The most loop passes one dispatch of the data-driven kernel may make in an invocation
+    // (loop_budget.h). 0: the device's, kLavapipeLoopPasses on lavapipe and no limit elsewhere. A
+    // smaller one splits renders into light batches on any device (tests force them so).
+    std::uint64_t loopPassLimit = 0;
 };
 
 struct TileClassification;
@@ -68,11 +73,17 @@ struct RenderPlan {
     std::shared_ptr<const CandidateLists> candidates;  // StorageCandidates only: the lists the kernel reads
     Kernel kernel;                                     // for the whole image (and for a traced pixel)
     TileClasses tileClasses;                           // when culling: the kernels that render the image instead
+    // The data-driven kernel: how a pixel's samples and lights are split between dispatches, each
+    // within `loopPassLimit` (loop_budget.h), and what tracing a pixel needs in one.
+    LightBatches lightBatches;
+    std::uint64_t loopPassLimit = UINT64_MAX;
+    std::uint64_t tracePasses = 0;
     std::vector<std::string> warnings;  // what `render` tells the user: a precision overruled
 };
 
-// Decides everything about how the GPU renders `scene`. Throws VulkanError (NoFloat64) for
-// Precision::F64 on a device without float64.
+// Decides everything about how the GPU renders `scene`. Throws VulkanError: NoFloat64 for
+// Precision::F64 on a device without float64, Unsupported for a scene a pixel of which needs more
+// loop passes for one sample and one light than the device runs (loop_budget.h).
 RenderPlan planRender(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device);
 
 // The precision planRender chooses (never Auto); throws like it. f32 asked for a scene whose

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "shader_interface.h"  // the constants both sides agree on
@@ -88,11 +89,25 @@ struct GpuCandidateSphere {
     std::uint32_t unused[sizeof(Real) == 4 ? 2 : 1];
 };
 
-// Which rows of the image one dispatch covers (large images render in bands): push constants.
+// Which rows of the image one dispatch covers (large images render in bands) and, of each pixel,
+// which samples and, of each, which lights (the data-driven kernel's light batches,
+// shaders/light_batches.glsl; a generated kernel renders them all): push constants.
 struct GpuBand {
     std::uint32_t firstRow;
     std::uint32_t rowCount;
     std::uint32_t firstTile;  // a tile class's kernel: where its tiles start in the tile buffer
+    std::uint32_t firstSample;
+    std::uint32_t endSample;
+    std::uint32_t firstLight;
+    std::uint32_t endLight;
+    std::uint32_t unused;
+};
+
+// What a pixel has so far, between the dispatches of a render in light batches.
+struct GpuPixelCarry {
+    glm::vec3 sum;  // the colours of its samples so far
+    std::uint32_t flags;
+    glm::vec3 irradiance;  // of the sample in progress
     std::uint32_t unused;
 };
 
@@ -159,7 +174,5 @@ struct GpuTraceEntry {
     glm::vec4 color;
     glm::uvec4 status;
 };
-
-
 
 }  // namespace hexray::gpu

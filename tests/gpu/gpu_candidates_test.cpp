@@ -123,8 +123,8 @@ Scene hugeScene() {
 }
 
 // A few spheres on a floor under a few thousand lights: each light has its own lists, built on a
-// thread per core. (Kept to what lavapipe runs whole: it ends any invocation's loops after 65535
-// iterations in all, and testing every node takes lights x nodes of them.)
+// thread per core. (Kept to what lavapipe runs in one dispatch, testing every node too: past its
+// loop limit both would render in light batches, light_batches_test.cpp's subject.)
 Scene manyLightsScene() {
     Scene scene = makeRandomSpheresScene(24, 5);
     scene.image.width = 64;

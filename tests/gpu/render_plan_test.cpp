@@ -179,18 +179,47 @@ Scene floorUnderLights(std::size_t lights) {
     return scene;
 }
 
-bool warnsOfTheLoopLimit(const RenderPlan& plan) {
-    return std::ranges::any_of(plan.warnings, [](const std::string& warning) {
-        return warning.find("65535 loop iterations") != std::string::npos;
-    });
+const DeviceAbilities kLlvmpipe{"llvmpipe (LLVM 15.0.6, 256 bits)", true};
+
+// On lavapipe, three loop passes a light (loop_budget.h): 30000 lights take two batches, 1000 one
+// dispatch; a device without the limit renders any number in one.
+TEST(RenderPlan, OnLavapipeAFloorUnder30000LightsRendersInTwoBatchesOfLights) {
+    const RenderPlan many = planRender(floorUnderLights(30000), {}, kLlvmpipe);
+    EXPECT_EQ(many.lightBatches.samplesPerDispatch, 1u);
+    EXPECT_EQ(many.lightBatches.lightEnds.size(), 2u);
+    EXPECT_EQ(many.lightBatches.lightEnds.back(), 30000u);
+    EXPECT_FALSE(planRender(floorUnderLights(1000), {}, kLlvmpipe).lightBatches.splits());
+    EXPECT_FALSE(planRender(floorUnderLights(30000), {}, DeviceAbilities{"a GPU", true}).lightBatches.splits());
 }
 
-TEST(RenderPlan, OnLavapipeAPixelPastItsLoopLimitIsWarnedOf) {
-    const DeviceAbilities lavapipe{"llvmpipe (LLVM 15.0.6, 256 bits)", true};
-    const RenderPlan many = planRender(floorUnderLights(30000), {}, lavapipe);
-    EXPECT_TRUE(warnsOfTheLoopLimit(many));
-    EXPECT_FALSE(warnsOfTheLoopLimit(planRender(floorUnderLights(1000), {}, lavapipe)));
-    EXPECT_FALSE(warnsOfTheLoopLimit(planRender(floorUnderLights(30000), {}, DeviceAbilities{"a GPU", true})));
+// A generated kernel's loops are unrolled: no batches whatever the limit.
+TEST(RenderPlan, AGeneratedKernelIsNeverSplit) {
+    PlanRequest request;
+    request.loopPassLimit = 10;
+    const RenderPlan plan = planRender(floorUnderLights(3), request, kLlvmpipe);
+    EXPECT_EQ(plan.layout, SceneLayout::Uniform);
+    EXPECT_FALSE(plan.lightBatches.splits());
+}
+
+// One sample with one light past the limit: nothing to split, and the message says what to do.
+TEST(RenderPlan, AScenePastTheLimitForOneSampleAndOneLightIsRefused) {
+    PlanRequest request;
+    request.loopPassLimit = 12;  // a floor: 5 passes for a sample, 3 a light; 33 planes: 37 and 35
+    Scene planes = floorUnderLights(40);
+    EXPECT_NO_THROW(planRender(planes, request, kLlvmpipe));
+    for (int i = 1; i < 33; ++i) {
+        planes.nodes.push_back(Node{Plane{-double(i)}, 0});
+    }
+    try {
+        planRender(planes, request, kLlvmpipe);
+        FAIL() << "planned";
+    } catch (const VulkanError& error) {
+        EXPECT_EQ(error.failure(), VulkanFailure::Unsupported);
+        const std::string message = error.what();
+        EXPECT_NE(message.find("may need 72 loop passes"), std::string::npos) << message;
+        EXPECT_NE(message.find("after 12"), std::string::npos) << message;
+        EXPECT_NE(message.find("use --backend cpu"), std::string::npos) << message;
+    }
 }
 
 }  // namespace

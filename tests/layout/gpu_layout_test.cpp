@@ -54,7 +54,11 @@ std::vector<Member> outputMembers() {
     using Entry = GpuTraceEntry<Real>;
     return {
         MEMBER("BandBlock.", GpuBand, firstRow),          MEMBER("BandBlock.", GpuBand, rowCount),
-        MEMBER("BandBlock.", GpuBand, firstTile),         MEMBER("TraceBlock.header.", Header, request),
+        MEMBER("BandBlock.", GpuBand, firstTile),         MEMBER("BandBlock.", GpuBand, firstSample),
+        MEMBER("BandBlock.", GpuBand, endSample),         MEMBER("BandBlock.", GpuBand, firstLight),
+        MEMBER("BandBlock.", GpuBand, endLight),          MEMBER("carry[0].", GpuPixelCarry, sum),
+        MEMBER("carry[0].", GpuPixelCarry, flags),        MEMBER("carry[0].", GpuPixelCarry, irradiance),
+        MEMBER("TraceBlock.header.", Header, request),
         MEMBER("TraceBlock.header.", Header, result),     MEMBER("TraceBlock.header.", Header, rayOrigin),
         MEMBER("TraceBlock.header.", Header, rayDirection), MEMBER("TraceBlock.header.", Header, hitPosition),
         MEMBER("TraceBlock.header.", Header, hitNormal),  MEMBER("TraceBlock.header.", Header, shadowOrigin),
@@ -74,6 +78,7 @@ std::map<std::string, std::size_t> arrayStrides() {
     std::map<std::string, std::size_t> strides{{"NodeProbe", sizeof(GpuNode<Real>)},
                                                {"LightProbe", sizeof(GpuLight<Real>)}};
     strides.insert({{"TraceEntryProbe", sizeof(GpuTraceEntry<Real>)},
+                    {"PixelCarryProbe", sizeof(GpuPixelCarry)},
                     {"pixels", sizeof(GpuPixel)},
                     {"classes", sizeof(GpuPixelClass)},
                     {"encodedPixels", sizeof(GpuEncodedPixel)},
@@ -93,6 +98,7 @@ std::map<std::string, Reflected> reflectBlocks(const std::string& defines) {
                                "#include \"scene_data.glsl\"\n"
                                "#include \"render_outputs.glsl\"\n"
                                "#include \"inspect_hooks.glsl\"\n"
+                               "#include \"light_batches.glsl\"\n"
                                "#ifdef HEXRAY_UNIFORM_SCENE\n"
                                "#define PROBE(binding_) layout(std140, set = 1, binding = binding_) uniform\n"
                                "#else\n"
@@ -103,12 +109,15 @@ std::map<std::string, Reflected> reflectBlocks(const std::string& defines) {
                                "layout(std430, set = 1, binding = 2) readonly buffer TraceEntryProbe {\n"
                                "    TraceEntry traceEntryProbe[2];\n"
                                "};\n"
+                               "layout(std430, set = 1, binding = 3) readonly buffer PixelCarryProbe {\n"
+                               "    PixelCarry pixelCarryProbe[2];\n"
+                               "};\n"
                                "void main() {\n"
                                "    pixels[0] = vec4(frame.nodeCount + nodes[0].kinds.x + band.firstRow);\n"
                                "    classes[0] = uvec2(float(lights[0].power.x));\n"
                                "    encodedPixels[0] = trace.header.request.x + trace.entries[0].status.x;\n"
                                "    aovs[0] = vec4(nodeProbe[1].kinds.x + lightProbe[1].power.x + "
-                               "traceEntryProbe[1].color.x);\n"
+                               "traceEntryProbe[1].color.x + pixelCarryProbe[1].flags + carry[0].flags);\n"
                                "}\n";
     glslang::InitializeProcess();
     glslang::TShader shader(EShLangCompute);
