@@ -96,8 +96,10 @@ public:
     std::uint32_t partition(std::uint32_t first, std::uint32_t count, const Box& centres) {
         const glm::dvec3 extent = centres.max - centres.min;
         int axis = 0;
-        if (extent.y > extent[axis]) axis = 1;
-        if (extent.z > extent[axis]) axis = 2;
+        if (extent.y > extent[axis])
+            axis = 1;
+        if (extent.z > extent[axis])
+            axis = 2;
         const auto begin = items_.begin() + first;
         const auto end = begin + count;
         if (!(extent[axis] > 0.0)) {
@@ -145,7 +147,8 @@ public:
             }
         }
         // The centres span the axis, so the first and last bins are both occupied.
-        const auto middle = std::stable_partition(begin, end, [&](const Item& item) { return binOf(item) < bestSplit; });
+        const auto middle =
+            std::stable_partition(begin, end, [&](const Item& item) { return binOf(item) < bestSplit; });
         return static_cast<std::uint32_t>(middle - begin);
     }
 

@@ -30,8 +30,8 @@ struct BvhNode {
 };
 
 struct Bvh {
-    std::vector<BvhNode> nodes;               // nodes[0] is the root; empty when there are no spheres
-    std::vector<std::uint32_t> sphereNodes;   // indices into Scene::nodes, in leaf order
+    std::vector<BvhNode> nodes;              // nodes[0] is the root; empty when there are no spheres
+    std::vector<std::uint32_t> sphereNodes;  // indices into Scene::nodes, in leaf order
     // The planes, in scene order: with them listed, a ray's cost no longer includes a scan of
     // every node.
     std::vector<std::uint32_t> planeNodes;

@@ -44,8 +44,8 @@ Footprint footprintOf(std::uint32_t sphere, const TangentBox& box) {
             roundedUp(box.v1 + pad)};
 }
 
-void CandidateGrid::cellRange(const Footprint& f, std::uint32_t& column0, std::uint32_t& row0,
-                              std::uint32_t& column1, std::uint32_t& row1) const {
+void CandidateGrid::cellRange(const Footprint& f, std::uint32_t& column0, std::uint32_t& row0, std::uint32_t& column1,
+                              std::uint32_t& row1) const {
     const auto index = [](double position, std::uint32_t count) {
         return std::uint32_t(std::clamp(std::floor(position), 0.0, double(count - 1)));
     };
@@ -96,7 +96,8 @@ std::size_t CellBinner::bin(const CandidateGrid& grid, std::span<const std::span
     }
     runParts(unsigned(parts.size()), [&](unsigned part) {
         std::vector<std::uint32_t>& cursors = counts_[part];
-        forEachCell(grid, parts[part], [&](std::size_t cell, std::uint32_t sphere) { entries_[cursors[cell]++] = sphere; });
+        forEachCell(grid, parts[part],
+                    [&](std::size_t cell, std::uint32_t sphere) { entries_[cursors[cell]++] = sphere; });
     });
     return next;
 }

@@ -38,7 +38,7 @@ struct PlacedSphere {
 
 struct PlacedScene {
     glm::dvec3 eye{0.0};
-    double eyeSize = 0;  // |eye|
+    double eyeSize = 0;                 // |eye|
     std::vector<PlacedSphere> spheres;  // in record order (morton_order.h)
     std::vector<std::uint32_t> planes;
     std::vector<glm::dvec3> lights;
@@ -83,11 +83,12 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
         placed.lightSizes.push_back(glm::length(position));
         double farthest = 0;
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::dvec3 point(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z);
+            const glm::dvec3 point(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y,
+                                   corner & 4 ? high.z : low.z);
             farthest = std::max(farthest, glm::length(point - position));
         }
         placed.shadowReach.push_back(formulation == Formulation::Textbook ? kTextbookReachFactor * farthest
-                                                                           : std::numeric_limits<double>::infinity());
+                                                                          : std::numeric_limits<double>::infinity());
     }
     return placed;
 }
@@ -490,7 +491,8 @@ void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<co
 // The cells before the lights': the planes', the camera's, and the list of every sphere.
 class ListWriter {
 public:
-    ListWriter(CandidateLists& lists, std::size_t cells, std::size_t entries) : lists_(lists), binner_(lists.cellStarts, lists.entries) {
+    ListWriter(CandidateLists& lists, std::size_t cells, std::size_t entries)
+        : lists_(lists), binner_(lists.cellStarts, lists.entries) {
         lists_.cellStarts.resize(cells + 1);
         lists_.entries.resize(entries);
         lists_.cellStarts[cells] = std::uint32_t(entries);
@@ -579,13 +581,12 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     const LightBudget budget{(total.entries - entries) / lightShare,
                              std::min((total.cells - cells) / lightShare, kLightCellsPerSample * samples)};
     const std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
-    const bool listsEverySphere = lightCount > 0 && (formulation == Formulation::Textbook ||
-                                                     std::ranges::any_of(plans, [](const LightGridPlan& plan) {
-                                                         return plan.cellSide == 0;
-                                                     }));
+    const bool listsEverySphere =
+        lightCount > 0 && (formulation == Formulation::Textbook ||
+                           std::ranges::any_of(plans, [](const LightGridPlan& plan) { return plan.cellSide == 0; }));
     const bool unusedEverySphere = lightCount > 0 && !listsEverySphere;  // its cell and entries go unused
-    const LightOffsets offsets = lightOffsets(plans, cells - (unusedEverySphere ? 1 : 0),
-                                              entries - (unusedEverySphere ? everySphere : 0));
+    const LightOffsets offsets =
+        lightOffsets(plans, cells - (unusedEverySphere ? 1 : 0), entries - (unusedEverySphere ? everySphere : 0));
 
     CandidateLists lists;
     lists.grids.resize(1 + lightCount * gpu::CUBE_FACES);

@@ -52,11 +52,16 @@ std::string BenchBackends::embreeVersion() const {
 
 std::string BenchBackends::name(BenchBackend backend) const {
     switch (backend) {
-        case BenchBackend::Gpu: return gpuName_;
-        case BenchBackend::GpuHandWritten: return gpuName_ + " hand-written";
-        case BenchBackend::Cpu: return "cpu-reference";
-        case BenchBackend::EmbreeSingle: return "embree single rays";
-        case BenchBackend::EmbreePackets: return "embree 8-ray packets";
+        case BenchBackend::Gpu:
+            return gpuName_;
+        case BenchBackend::GpuHandWritten:
+            return gpuName_ + " hand-written";
+        case BenchBackend::Cpu:
+            return "cpu-reference";
+        case BenchBackend::EmbreeSingle:
+            return "embree single rays";
+        case BenchBackend::EmbreePackets:
+            return "embree 8-ray packets";
     }
     return "";
 }
@@ -64,10 +69,12 @@ std::string BenchBackends::name(BenchBackend backend) const {
 unsigned BenchBackends::threads(BenchBackend backend) const {
     switch (backend) {
         case BenchBackend::Gpu:
-        case BenchBackend::GpuHandWritten: return isLavapipe_ ? lavapipeThreads() : 0;
+        case BenchBackend::GpuHandWritten:
+            return isLavapipe_ ? lavapipeThreads() : 0;
         case BenchBackend::Cpu:
         case BenchBackend::EmbreeSingle:
-        case BenchBackend::EmbreePackets: return cpuThreadCount(0);
+        case BenchBackend::EmbreePackets:
+            return cpuThreadCount(0);
     }
     return 0;
 }
@@ -76,9 +83,9 @@ void BenchBackends::measureGpu(const Scene& scene, const BenchConfiguration& con
                                BenchMeasurement& measurement) {
     const auto start = std::chrono::steady_clock::now();
     const bool handWritten = configuration.backend == BenchBackend::GpuHandWritten;
-    const RenderPlan plan = handWritten ? lectureDemoCeilingPlan(gpu_, scene)
-                                        : gpu_.plan(scene, {configuration.precision, Acceleration::Auto,
-                                                            configuration.culling});
+    const RenderPlan plan =
+        handWritten ? lectureDemoCeilingPlan(gpu_, scene)
+                    : gpu_.plan(scene, {configuration.precision, Acceleration::Auto, configuration.culling});
     measurement.planMilliseconds.push_back(millisecondsSince(start));
     GpuRenderResult render = gpu_.render(scene, plan, GpuOutput::Encoded8);
     measurement.renderMilliseconds.push_back(render.timing.renderMilliseconds);
@@ -96,7 +103,9 @@ void BenchBackends::measure(const Scene& scene, const BenchConfiguration& config
     const auto start = std::chrono::steady_clock::now();
     switch (configuration.backend) {
         case BenchBackend::Gpu:
-        case BenchBackend::GpuHandWritten: measureGpu(scene, configuration, withClasses, measurement); return;
+        case BenchBackend::GpuHandWritten:
+            measureGpu(scene, configuration, withClasses, measurement);
+            return;
         case BenchBackend::Cpu: {
             CpuRender render = renderOnCpu(scene);
             measurement.renderMilliseconds.push_back(millisecondsSince(start));

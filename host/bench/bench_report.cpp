@@ -26,7 +26,8 @@ BenchRow rowFor(const BenchScene& bench, const BenchConfiguration& configuration
     row.configuration = configuration;
     const double pixels = double(bench.scene.image.width) * bench.scene.image.height;
     row.medianMs = median(measurement.renderMilliseconds);
-    const double bestMs = *std::min_element(measurement.renderMilliseconds.begin(), measurement.renderMilliseconds.end());
+    const double bestMs =
+        *std::min_element(measurement.renderMilliseconds.begin(), measurement.renderMilliseconds.end());
     row.medianMpix = pixels * 1e-3 / row.medianMs;
     row.bestMpix = pixels * 1e-3 / bestMs;
     row.frameMs = median(measurement.frameMilliseconds);
@@ -94,10 +95,13 @@ std::string precisionText(const BenchRow& row) {
     switch (row.configuration.backend) {
         case BenchBackend::Gpu:
             return std::string(precisionName(row.precision)) + (row.chosenByAuto ? " (auto)" : "");
-        case BenchBackend::GpuHandWritten: return "f32 textbook";
-        case BenchBackend::Cpu: return "f64 (double)";
+        case BenchBackend::GpuHandWritten:
+            return "f32 textbook";
+        case BenchBackend::Cpu:
+            return "f64 (double)";
         case BenchBackend::EmbreeSingle:
-        case BenchBackend::EmbreePackets: return "f32 (Embree)";
+        case BenchBackend::EmbreePackets:
+            return "f32 (Embree)";
     }
     return "";
 }
@@ -114,7 +118,8 @@ std::string mismatches(const BenchRow& row) {
 }
 
 // The rows of the file scenes or of the curve, grouped by scene and sample count.
-std::vector<const BenchRow*> rowsOf(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows, bool curve) {
+std::vector<const BenchRow*> rowsOf(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
+                                    bool curve) {
     std::vector<const BenchRow*> selected;
     for (const BenchRow& row : rows) {
         if (scenes[row.configuration.scene].spheres.has_value() == curve) {
@@ -130,46 +135,48 @@ std::vector<const BenchRow*> rowsOf(const std::vector<BenchScene>& scenes, const
 
 void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
                     const BenchBackends& backends) {
-    std::printf("| scene | resolution | backend | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
-                "| vs hand-written | primary tests/px | shadow rays/px | shadow tests/px | sampling error: RMSE vs "
-                "converged (levels) | precision error: RMSE vs CPU ref, same spp, unambiguous px (levels) | "
-                "> 1 level, same spp | topology mismatches |\n");
+    std::printf(
+        "| scene | resolution | backend | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
+        "| vs hand-written | primary tests/px | shadow rays/px | shadow tests/px | sampling error: RMSE vs "
+        "converged (levels) | precision error: RMSE vs CPU ref, same spp, unambiguous px (levels) | "
+        "> 1 level, same spp | topology mismatches |\n");
     std::printf("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, false)) {
         const BenchScene& bench = scenes[row->configuration.scene];
         const auto work = [&](double WorkPerPixel::*field) {
             return row->work ? format("%.2f", (*row->work).*field) : "–";
         };
-        std::printf("| %s | %ux%u | %s | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %s | %s | %s | %.3f | %.3f%% "
-                    "| %s |\n",
-                    bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
-                    backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
-                    cullingText(*row).c_str(), row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix,
-                    row->frameMs, optional(row->versusHandWritten, "%.2f").c_str(),
-                    work(&WorkPerPixel::primaryTests).c_str(), work(&WorkPerPixel::shadowRays).c_str(),
-                    work(&WorkPerPixel::shadowTests).c_str(),
-                    optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f")
-                        .c_str(),
-                    row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+        std::printf(
+            "| %s | %ux%u | %s | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %s | %s | %s | %.3f | %.3f%% "
+            "| %s |\n",
+            bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
+            backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(), cullingText(*row).c_str(),
+            row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix, row->frameMs,
+            optional(row->versusHandWritten, "%.2f").c_str(), work(&WorkPerPixel::primaryTests).c_str(),
+            work(&WorkPerPixel::shadowRays).c_str(), work(&WorkPerPixel::shadowTests).c_str(),
+            optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f").c_str(),
+            row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
     }
 }
 
 void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
                      const BenchBackends& backends) {
-    std::printf("| spheres | resolution | backend | precision | spp | Mpix/s median | Mpix/s best | frame ms | host plan "
-                "ms | upload ms | threads | core-ns per pixel | vs Embree (faster mode) | RMSE vs CPU ref, same spp, "
-                "unambiguous px (levels) | > 1 level | topology mismatches |\n");
+    std::printf(
+        "| spheres | resolution | backend | precision | spp | Mpix/s median | Mpix/s best | frame ms | host plan "
+        "ms | upload ms | threads | core-ns per pixel | vs Embree (faster mode) | RMSE vs CPU ref, same spp, "
+        "unambiguous px (levels) | > 1 level | topology mismatches |\n");
     std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, true)) {
         const BenchScene& bench = scenes[row->configuration.scene];
         const bool gpu = isGpu(row->configuration.backend);
-        std::printf("| %u | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
-                    *bench.spheres, bench.scene.image.width, bench.scene.image.height,
-                    backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
-                    row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix, row->frameMs,
-                    gpu ? format("%.1f", row->planMs).c_str() : "–", gpu ? format("%.1f", row->uploadMs).c_str() : "–",
-                    row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(),
-                    row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+        std::printf(
+            "| %u | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
+            *bench.spheres, bench.scene.image.width, bench.scene.image.height,
+            backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
+            row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix, row->frameMs,
+            gpu ? format("%.1f", row->planMs).c_str() : "–", gpu ? format("%.1f", row->uploadMs).c_str() : "–",
+            row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(), row->precisionError.rmse,
+            100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
     }
 }
 
@@ -182,8 +189,8 @@ std::vector<BenchRow> benchRows(const std::vector<BenchScene>& scenes,
     for (std::size_t i = 0; i < configurations.size(); ++i) {
         const BenchScene& bench = scenes[configurations[i].scene];
         BenchRow row = rowFor(bench, configurations[i], measurements[i], backends);
-        row.chosenByAuto = configurations[i].backend == BenchBackend::Gpu &&
-                           row.precision == backends.autoPrecision(bench.scene);
+        row.chosenByAuto =
+            configurations[i].backend == BenchBackend::Gpu && row.precision == backends.autoPrecision(bench.scene);
         rows.push_back(row);
     }
     addRatios(rows);
@@ -219,9 +226,9 @@ std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<Be
         const BenchScene& bench = scenes[row.configuration.scene];
         csv << bench.name << ',' << bench.scene.image.width << ',' << bench.scene.image.height << ','
             << backends.name(row.configuration.backend) << ',' << precisionText(row) << ',' << cullingText(row) << ','
-            << row.configuration.samplesPerPixel << ',' << row.medianMpix << ',' << row.bestMpix << ','
-            << row.medianMs << ',' << row.frameMs << ',' << row.planMs << ',' << row.uploadMs << ','
-            << value(row.versusHandWritten) << ',' << value(row.versusEmbree) << ','
+            << row.configuration.samplesPerPixel << ',' << row.medianMpix << ',' << row.bestMpix << ',' << row.medianMs
+            << ',' << row.frameMs << ',' << row.planMs << ',' << row.uploadMs << ',' << value(row.versusHandWritten)
+            << ',' << value(row.versusEmbree) << ','
             << value(row.work ? std::optional(row.work->primaryTests) : std::nullopt) << ','
             << value(row.work ? std::optional(row.work->shadowRays) : std::nullopt) << ','
             << value(row.work ? std::optional(row.work->shadowTests) : std::nullopt) << ','
@@ -229,8 +236,8 @@ std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<Be
             << row.precisionError.rmse << ',' << row.precisionError.maxAbs << ','
             << row.precisionError.pixelsOverOneLevel << ','
             << (row.topology ? std::to_string(row.topology->mismatches) : "") << ','
-            << (bench.spheres ? std::to_string(*bench.spheres) : "") << ',' << row.threads << ','
-            << row.coreNsPerPixel << '\n';
+            << (bench.spheres ? std::to_string(*bench.spheres) : "") << ',' << row.threads << ',' << row.coreNsPerPixel
+            << '\n';
     }
     return csv.str();
 }

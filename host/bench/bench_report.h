@@ -39,9 +39,9 @@ struct BenchRow {
     double planMs = 0, uploadMs = 0;  // GPU: host-side preparation, medians
     unsigned threads = 0;
     double coreNsPerPixel = 0;
-    std::optional<double> versusHandWritten;  // the hand-written kernel's row at the same scene and spp
-    std::optional<double> versusEmbree;       // the faster Embree row at the same scene and spp
-    std::optional<ErrorMetrics> samplingError;  // against the converged reference (file scenes)
+    std::optional<double> versusHandWritten;     // the hand-written kernel's row at the same scene and spp
+    std::optional<double> versusEmbree;          // the faster Embree row at the same scene and spp
+    std::optional<ErrorMetrics> samplingError;   // against the converged reference (file scenes)
     ErrorMetrics precisionError;                 // against the CPU reference at the same sample count
     std::optional<TopologyComparison> topology;  // none for a backend without pixel classes
     std::optional<WorkPerPixel> work;            // GPU kernels generated for the scene

@@ -39,8 +39,7 @@ bool isLectureDemoScene(const Scene& scene) {
     }
     const auto* plane = std::get_if<Plane>(&scene.nodes[0].geometry);
     const auto* sphere = std::get_if<Sphere>(&scene.nodes[1].geometry);
-    return plane && plane->height == 0 && sphere && sphere->center == glm::dvec3(-10, 60, 0) &&
-           sphere->radius == 10 &&
+    return plane && plane->height == 0 && sphere && sphere->center == glm::dvec3(-10, 60, 0) && sphere->radius == 10 &&
            isShader(scene, scene.nodes[0], CheckerShader{Color(0, 0, 0.8), Color(0.2, 0.3, 0.6), 20}) &&
            isShader(scene, scene.nodes[1], LambertShader{Color(0.8, 0, 0)});
 }

@@ -68,8 +68,8 @@ void addReferences(const BenchOptions& options, BenchScene& bench) {
 std::vector<BenchScene> fileScenes(const BenchOptions& options) {
     std::vector<BenchScene> scenes;
     for (const std::string& path : options.scenePaths) {
-        scenes.push_back({printable(std::filesystem::path(path).stem().string()), std::nullopt,
-                          loadScene(path, options.image), {}});
+        scenes.push_back(
+            {printable(std::filesystem::path(path).stem().string()), std::nullopt, loadScene(path, options.image), {}});
     }
     if (scenes.empty() && options.sphereCounts.empty()) {
         Scene demo = parseScene(std::string(kDemoSceneJson), "the shipped demo scene");
@@ -184,13 +184,15 @@ void addCurveReferences(const BenchOptions& options, Bench& bench) {
     for (std::size_t index = 0; index < bench.scenes.size(); ++index) {
         BenchScene& scene = bench.scenes[index];
         for (const std::uint32_t spp : options.samples) {
-            const bool measured = std::any_of(bench.configurations.begin(), bench.configurations.end(), [&](const auto& c) {
-                return c.scene == index && c.backend == BenchBackend::Cpu && c.samplesPerPixel == spp;
-            });
+            const bool measured =
+                std::any_of(bench.configurations.begin(), bench.configurations.end(), [&](const auto& c) {
+                    return c.scene == index && c.backend == BenchBackend::Cpu && c.samplesPerPixel == spp;
+                });
             if (!scene.spheres || measured) {
                 continue;
             }
-            std::fprintf(stderr, "bench: reference for %u random spheres (%u spp on the CPU)...\n", *scene.spheres, spp);
+            std::fprintf(stderr, "bench: reference for %u random spheres (%u spp on the CPU)...\n", *scene.spheres,
+                         spp);
             const auto start = std::chrono::steady_clock::now();
             scene.reference.bySamples[spp] = renderOnCpu(withSamples(scene.scene, spp));
             char text[160];

@@ -25,9 +25,12 @@ void printError(const std::string& message) {
 
 int exitCodeFor(VulkanFailure failure) {
     switch (failure) {
-        case VulkanFailure::DeviceLost: return kDeviceLost;
-        case VulkanFailure::OutOfMemory: return kOutOfDeviceMemory;
-        default: return kVulkanUnavailable;
+        case VulkanFailure::DeviceLost:
+            return kDeviceLost;
+        case VulkanFailure::OutOfMemory:
+            return kOutOfDeviceMemory;
+        default:
+            return kVulkanUnavailable;
     }
 }
 
@@ -64,8 +67,9 @@ int guarded(const std::function<int()>& command) {
         return kInternalError;
     } catch (const std::bad_alloc&) {
         // Everything that grows with the scene says so (OutOfMemory); what is left is the image.
-        printError("out of memory: make the image narrower (--width): hexray's memory grows with the image's width "
-                   "(and, with --aov, its number of lights), not with its height");
+        printError(
+            "out of memory: make the image narrower (--width): hexray's memory grows with the image's width "
+            "(and, with --aov, its number of lights), not with its height");
         return kInternalError;
     } catch (const std::exception& error) {
         printError(std::string("unexpected failure: ") + error.what());

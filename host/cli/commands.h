@@ -51,7 +51,7 @@ struct RenderOptions {
     // Empty: <scene name>.png in the current directory. One scene: the file, or a directory to
     // put <scene name>.png in; several: that directory.
     std::string outputPath;
-    unsigned threads = 0;    // CPU backend; 0 = all cores
+    unsigned threads = 0;      // CPU backend; 0 = all cores
     std::string aovDirectory;  // empty: no AOVs (see image/aov.h)
     std::optional<Tile> tile;  // only these rows, recorded in the file for `hexray merge`
 };

@@ -43,8 +43,8 @@ std::string psnrText(double psnr) {
 }
 
 void printMetrics(const char* label, const ErrorMetrics& m, int decimalsForMax) {
-    std::printf("  %-16s %10.*f %10.6f %10.6f %16s  %llu (%.4f%%)\n", label, decimalsForMax, m.maxAbs, m.meanAbs, m.rmse,
-                psnrText(m.psnr).c_str(), static_cast<unsigned long long>(m.pixelsOverOneLevel),
+    std::printf("  %-16s %10.*f %10.6f %10.6f %16s  %llu (%.4f%%)\n", label, decimalsForMax, m.maxAbs, m.meanAbs,
+                m.rmse, psnrText(m.psnr).c_str(), static_cast<unsigned long long>(m.pixelsOverOneLevel),
                 100.0 * m.shareOverOneLevel);
 }
 
@@ -64,22 +64,22 @@ void printDetailed(const std::string& path, const Scene& scene, const Row& row, 
                 static_cast<unsigned long long>(t.excused), 100.0 * t.excusedShare());
     std::printf("  topology mismatches in decisions not near-tied: %llu (node %llu, checker cell %llu, lights %llu)\n",
                 static_cast<unsigned long long>(t.mismatches), static_cast<unsigned long long>(t.nodeMismatches),
-                static_cast<unsigned long long>(t.checkerMismatches), static_cast<unsigned long long>(t.lightMismatches));
+                static_cast<unsigned long long>(t.checkerMismatches),
+                static_cast<unsigned long long>(t.lightMismatches));
     std::printf("  colours NaN, infinite or negative (either render, any pixel): %llu\n",
                 static_cast<unsigned long long>(row.comparison.invalidColours));
     std::printf("  %-16s %10s %10s %10s %16s  %s\n", "compared colours", "max abs", "mean abs", "RMSE", "PSNR dB",
                 "pixels > 1 level");
     printMetrics("linear [0,1]", row.comparison.linear, 6);
     printMetrics("8-bit [levels]", row.comparison.encoded, 0);
-    std::printf("  tolerance: invalid colours %llu <= 0 %s; topology mismatches %llu <= %llu %s; ambiguous pixels "
-                "%.4f%% <= %.4f%% %s; pixels > 1 level %.4f%% <= %.4f%% %s; 8-bit RMSE %.4f <= %.4f levels %s\n",
-                static_cast<unsigned long long>(row.comparison.invalidColours), okText(row.verdict.valuesOk),
-                static_cast<unsigned long long>(t.mismatches),
-                static_cast<unsigned long long>(tolerance.maxTopologyMismatches), okText(row.verdict.topologyOk),
-                100.0 * t.ambiguousShare(), tolerance.maxAmbiguousPercent, okText(row.verdict.ambiguousOk),
-                100.0 * row.comparison.encoded.shareOverOneLevel, tolerance.maxSharePercent,
-                okText(row.verdict.shareOk), row.comparison.encoded.rmse, tolerance.maxRmseLevels,
-                okText(row.verdict.rmseOk));
+    std::printf(
+        "  tolerance: invalid colours %llu <= 0 %s; topology mismatches %llu <= %llu %s; ambiguous pixels "
+        "%.4f%% <= %.4f%% %s; pixels > 1 level %.4f%% <= %.4f%% %s; 8-bit RMSE %.4f <= %.4f levels %s\n",
+        static_cast<unsigned long long>(row.comparison.invalidColours), okText(row.verdict.valuesOk),
+        static_cast<unsigned long long>(t.mismatches), static_cast<unsigned long long>(tolerance.maxTopologyMismatches),
+        okText(row.verdict.topologyOk), 100.0 * t.ambiguousShare(), tolerance.maxAmbiguousPercent,
+        okText(row.verdict.ambiguousOk), 100.0 * row.comparison.encoded.shareOverOneLevel, tolerance.maxSharePercent,
+        okText(row.verdict.shareOk), row.comparison.encoded.rmse, tolerance.maxRmseLevels, okText(row.verdict.rmseOk));
     std::printf("%s\n", row.verdict.passed() ? "PASS" : "FAIL");
 }
 
@@ -96,18 +96,19 @@ std::string verdictText(const Row& row) {
 }
 
 void printTableHeader() {
-    std::printf("| scene | precision | auto | topology mismatches | ambiguous | excused | max abs (levels) "
-                "| RMSE (levels) | > 1 level | GPU ms | verdict |\n");
+    std::printf(
+        "| scene | precision | auto | topology mismatches | ambiguous | excused | max abs (levels) "
+        "| RMSE (levels) | > 1 level | GPU ms | verdict |\n");
     std::printf("|---|---|:-:|---:|---:|---:|---:|---:|---:|---:|---|\n");
 }
 
 void printTableRow(const std::string& scene, const Row& row) {
     const RenderComparison& c = row.comparison;
     std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n",
-                printable(scene).c_str(), std::string(precisionName(row.precision)).c_str(), row.chosenByAuto ? "✓" : "",
-                static_cast<unsigned long long>(c.topology.mismatches), 100.0 * c.topology.ambiguousShare(),
-                100.0 * c.topology.excusedShare(), c.encoded.maxAbs, c.encoded.rmse,
-                100.0 * c.encoded.shareOverOneLevel, row.gpuMilliseconds, verdictText(row).c_str());
+                printable(scene).c_str(), std::string(precisionName(row.precision)).c_str(),
+                row.chosenByAuto ? "✓" : "", static_cast<unsigned long long>(c.topology.mismatches),
+                100.0 * c.topology.ambiguousShare(), 100.0 * c.topology.excusedShare(), c.encoded.maxAbs,
+                c.encoded.rmse, 100.0 * c.encoded.shareOverOneLevel, row.gpuMilliseconds, verdictText(row).c_str());
 }
 
 void printFailedRow(const std::string& scene) {
@@ -131,8 +132,7 @@ public:
         if (!options.aovDirectory.empty()) {
             const fs::path directory(options.aovDirectory);
             gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()});
-            cpuAovs_.emplace(directory / "cpu",
-                             AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin});
+            cpuAovs_.emplace(directory / "cpu", AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin});
         }
     }
 
@@ -163,9 +163,10 @@ public:
         }
         if (mask_) {
             mask_->finish();
-            std::printf("wrote mismatch mask %s (magenta invalid colour, red topology, blue excused, yellow "
-                        "colour > 1 level, navy near-tied but agreeing)\n",
-                        displayName(options_.maskPath).c_str());
+            std::printf(
+                "wrote mismatch mask %s (magenta invalid colour, red topology, blue excused, yellow "
+                "colour > 1 level, navy near-tied but agreeing)\n",
+                displayName(options_.maskPath).c_str());
         }
         if (gpuAovs_) {
             gpuAovs_->commit();
@@ -196,8 +197,8 @@ struct BandedComparison {
 // Renders `scene` on the GPU a band at a time, the CPU reference for the same rows as each band
 // arrives, and compares them; `outputs` (if any) get each band's rows. On a terminal, a progress
 // line names the scene by `path`.
-BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, const Scene& scene,
-                                Precision requested, unsigned threads, BandOutputs* outputs) {
+BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, const Scene& scene, Precision requested,
+                                unsigned threads, BandOutputs* outputs) {
     const bool aov = outputs && outputs->withAovs();
     Progress progress("comparing " + path, scene.image.height);
     const RenderPlan plan = renderer.plan(scene, {requested});
@@ -221,7 +222,8 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
             }
             progress.update(firstRow + band.image.height);
         });
-    return {comparator.result(), gpu.precision, gpu.timing.renderMilliseconds, cpuMilliseconds, reference.threadCount()};
+    return {comparator.result(), gpu.precision, gpu.timing.renderMilliseconds, cpuMilliseconds,
+            reference.threadCount()};
 }
 
 // Every path the comparison reads or writes, checked before any work.
@@ -324,8 +326,8 @@ void compareScene(GpuRenderer& renderer, const VulkanContext& context, const Sce
         if (!table) {
             outputs.emplace(options, scene);
         }
-        const BandedComparison compared = compareInBands(renderer, file.path, scene, requested, options.threads,
-                                                         outputs ? &*outputs : nullptr);
+        const BandedComparison compared =
+            compareInBands(renderer, file.path, scene, requested, options.threads, outputs ? &*outputs : nullptr);
         const Row row = rowFor(compared, automatic, options);
         verdicts.allPassed = verdicts.allPassed && (!row.judged || row.verdict.passed());
         if (table) {

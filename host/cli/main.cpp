@@ -128,8 +128,9 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
 
 void addMergeCommand(CLI::App& app, CommandLine& line) {
     CLI::App* command = app.add_subcommand(
-        "merge", "Assemble the pieces of `render --tile I/N` into the whole image; refuses missing, overlapping "
-                 "or mismatched pieces");
+        "merge",
+        "Assemble the pieces of `render --tile I/N` into the whole image; refuses missing, overlapping "
+        "or mismatched pieces");
     command->add_option("output", line.merge.outputPath, "The whole image (.png, .exr as the pieces, or -)")
         ->required()
         ->check(NotEmpty());
@@ -200,15 +201,17 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
         "tables and optionally writes CSV");
     command->add_option("scenes", bench.scenePaths,
                         "Scene files (none, and no --spheres: the shipped demo scene, lecture-demo)");
-    command->add_option("--spheres", bench.sphereCounts,
-                        "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
-                        "scene each, measured on every backend")
+    command
+        ->add_option("--spheres", bench.sphereCounts,
+                     "Sphere counts of the scaling curve (e.g. 1,10,100,1000,10000,100000): a random-sphere "
+                     "scene each, measured on every backend")
         ->check(IntegerBetween<std::uint32_t>(1, 1000000))
         ->allow_extra_args(false)  // one comma-separated list, so scene files may follow it
         ->delimiter(',');
-    command->add_option("--max-frame-seconds", bench.maxFrameSeconds,
-                        "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
-                        "not measured at that sphere count (its error columns still use a CPU reference render)")
+    command
+        ->add_option("--max-frame-seconds", bench.maxFrameSeconds,
+                     "Curve only: a backend whose frame a low-resolution probe predicts to take longer is "
+                     "not measured at that sphere count (its error columns still use a CPU reference render)")
         ->check(FiniteNumberAbove(0.0))
         ->capture_default_str();
     addImageOptions(*command, bench.image);
@@ -219,8 +222,8 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
     command->add_option("--samples", bench.samples, "Samples per pixel to measure (several allowed)")
         ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
         ->capture_default_str();
-    command->add_option("--reference-samples", bench.referenceSamples,
-                        "Samples per pixel of the converged CPU reference")
+    command
+        ->add_option("--reference-samples", bench.referenceSamples, "Samples per pixel of the converged CPU reference")
         ->check(IntegerBetween<std::uint32_t>(1, kMaxSamplesPerPixel))
         ->capture_default_str();
     command->add_option("--csv", bench.csvPath, "Also write the table as CSV (- for standard output)")
@@ -230,8 +233,9 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
 void addPixelCommand(CLI::App& app, CommandLine& line) {
     PixelOptions& pixel = line.pixel;
     CLI::App* command = app.add_subcommand(
-        "pixel", "Explain one pixel: its ray, every node's intersection, the hit, the shading terms and the colour, "
-                 "from the shader and from the CPU reference side by side");
+        "pixel",
+        "Explain one pixel: its ray, every node's intersection, the hit, the shading terms and the colour, "
+        "from the shader and from the CPU reference side by side");
     command->add_option("scene", pixel.scenePath, "Scene file (JSON)")->required();
     command->add_option("x", pixel.x, "Column, 0 at the left")->required()->check(AnInteger<std::int64_t>());
     command->add_option("y", pixel.y, "Row, 0 at the top")->required()->check(AnInteger<std::int64_t>());
@@ -251,8 +255,9 @@ void addDevicesCommand(CLI::App& app, CommandLine& line) {
 
 void addCacheCommand(CLI::App& app, CommandLine& line) {
     CLI::App* command = app.add_subcommand(
-        "cache", "Show where the kernel cache is (compiled kernels, $XDG_CACHE_HOME/hexray), its entries, size and "
-                 "bound (HEXRAY_KERNEL_CACHE_MAX_SIZE, e.g. 256M; default 128M)");
+        "cache",
+        "Show where the kernel cache is (compiled kernels, $XDG_CACHE_HOME/hexray), its entries, size and "
+        "bound (HEXRAY_KERNEL_CACHE_MAX_SIZE, e.g. 256M; default 128M)");
     command->add_flag("--clear", line.cache.clear, "Remove every entry");
 }
 
@@ -297,11 +302,10 @@ std::optional<std::string> unknownCommand(int argc, char** argv, const CLI::App&
 
 // What CLI11 cannot check on its own; throws CLI::ValidationError.
 void checkCombinations(const CLI::App& app, const CommandLine& line) {
-    const bool cpuOnlyWithPrecision =
-        (app.got_subcommand("render") && line.render.backend == Backend::Cpu &&
-         app.get_subcommand("render")->count("--precision") > 0) ||
-        (app.got_subcommand("pixel") && line.pixel.backend == PixelBackend::Cpu &&
-         app.get_subcommand("pixel")->count("--precision") > 0);
+    const bool cpuOnlyWithPrecision = (app.got_subcommand("render") && line.render.backend == Backend::Cpu &&
+                                       app.get_subcommand("render")->count("--precision") > 0) ||
+                                      (app.got_subcommand("pixel") && line.pixel.backend == PixelBackend::Cpu &&
+                                       app.get_subcommand("pixel")->count("--precision") > 0);
     if (cpuOnlyWithPrecision) {
         throw CLI::ValidationError("--precision", "applies to the GPU backend only");
     }
@@ -365,9 +369,10 @@ int runCommand(const CLI::App& app, CommandLine& line) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app("hexray: a raytracer whose renderer is a Vulkan compute shader, checked against an "
-                 "independent CPU reference.",
-                 "hexray");
+    CLI::App app(
+        "hexray: a raytracer whose renderer is a Vulkan compute shader, checked against an "
+        "independent CPU reference.",
+        "hexray");
     CommandLine line;
     defineCommandLine(app, line);
     if (const std::optional<std::string> word = unknownCommand(argc, argv, app)) {

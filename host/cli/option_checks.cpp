@@ -65,8 +65,7 @@ CLI::Validator FiniteNumberAbove(double min) {
 }
 
 CLI::Validator NotEmpty() {
-    return CLI::Validator([](std::string& text) { return text.empty() ? std::string("must not be empty") : ""; },
-                          "");
+    return CLI::Validator([](std::string& text) { return text.empty() ? std::string("must not be empty") : ""; }, "");
 }
 
 CLI::Validator AovDirectoryName() {
@@ -85,7 +84,8 @@ std::string tileProblem(const std::string& text) {
     std::uint64_t count = 0;
     const bool valid = slash != std::string::npos && parsesWhole(text.substr(0, slash), index) &&
                        parsesWhole(text.substr(slash + 1), count) && count >= 1 && count <= kMaxTiles && index < count;
-    return valid ? "" : "must be I/N, tile I of N, with 0 <= I < N <= " + std::to_string(kMaxTiles) + " (got " + text + ")";
+    return valid ? ""
+                 : "must be I/N, tile I of N, with 0 <= I < N <= " + std::to_string(kMaxTiles) + " (got " + text + ")";
 }
 
 CLI::Validator TileSpec() {

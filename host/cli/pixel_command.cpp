@@ -35,7 +35,8 @@ std::string distance(double t) {
 
 std::string levels(const glm::dvec3& linear, Encoding encoding) {
     return format("(%u, %u, %u)", unsigned(encodeChannel(float(linear.x), encoding)),
-                  unsigned(encodeChannel(float(linear.y), encoding)), unsigned(encodeChannel(float(linear.z), encoding)));
+                  unsigned(encodeChannel(float(linear.y), encoding)),
+                  unsigned(encodeChannel(float(linear.z), encoding)));
 }
 
 // Whether two values computed in different precisions disagree beyond float32 rounding noise.
@@ -61,20 +62,29 @@ bool levelsDiffer(const glm::dvec3& a, const glm::dvec3& b, Encoding encoding) {
 
 const char* lightStatus(std::uint32_t status) {
     switch (status) {
-        case gpu::TRACE_LIGHT_LIT: return "lit";
-        case gpu::TRACE_LIGHT_FACING_AWAY: return "facing away";
-        case gpu::TRACE_LIGHT_SHADOWED: return "shadowed";
-        case gpu::TRACE_LIGHT_AT_POINT: return "at the point";
-        default: return "not evaluated";
+        case gpu::TRACE_LIGHT_LIT:
+            return "lit";
+        case gpu::TRACE_LIGHT_FACING_AWAY:
+            return "facing away";
+        case gpu::TRACE_LIGHT_SHADOWED:
+            return "shadowed";
+        case gpu::TRACE_LIGHT_AT_POINT:
+            return "at the point";
+        default:
+            return "not evaluated";
     }
 }
 
 std::uint32_t statusOf(LightReach reach) {
     switch (reach) {
-        case LightReach::Lit: return gpu::TRACE_LIGHT_LIT;
-        case LightReach::FacingAway: return gpu::TRACE_LIGHT_FACING_AWAY;
-        case LightReach::Shadowed: return gpu::TRACE_LIGHT_SHADOWED;
-        case LightReach::AtPoint: return gpu::TRACE_LIGHT_AT_POINT;
+        case LightReach::Lit:
+            return gpu::TRACE_LIGHT_LIT;
+        case LightReach::FacingAway:
+            return gpu::TRACE_LIGHT_FACING_AWAY;
+        case LightReach::Shadowed:
+            return gpu::TRACE_LIGHT_SHADOWED;
+        case LightReach::AtPoint:
+            return gpu::TRACE_LIGHT_AT_POINT;
     }
     return gpu::TRACE_LIGHT_NOT_EVALUATED;
 }
@@ -84,9 +94,9 @@ const char* kindName(const Geometry& geometry) {
 }
 
 const char* shaderName(const Shader& shader) {
-    return std::holds_alternative<ConstantShader>(shader) ? "constant"
+    return std::holds_alternative<ConstantShader>(shader)  ? "constant"
            : std::holds_alternative<LambertShader>(shader) ? "lambert"
-                                                            : "checker";
+                                                           : "checker";
 }
 
 // Prints label | gpu | cpu rows, one column when only one backend ran, and "<- differs" where
@@ -141,13 +151,13 @@ GpuPixelTrace traceOnGpu(const PixelOptions& options, const Scene& scene, Valida
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
     GpuRenderer renderer(context);
     const GpuPixelTrace trace = renderer.tracePixel(scene, options.precision, x, y, sample);
-    std::printf("gpu: %s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(),
-                context.selected().name.c_str(),
-                trace.cameraRelative ? format("the shader works camera-relative, lengths divided by %g; printed here in "
-                                              "world units (eye added back, lengths multiplied by %g)",
-                                              trace.scale, trace.scale)
-                                           .c_str()
-                                     : "the shader works in world coordinates");
+    std::printf(
+        "gpu: %s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(), context.selected().name.c_str(),
+        trace.cameraRelative ? format("the shader works camera-relative, lengths divided by %g; printed here in "
+                                      "world units (eye added back, lengths multiplied by %g)",
+                                      trace.scale, trace.scale)
+                                   .c_str()
+                             : "the shader works in world coordinates");
     return trace;
 }
 
@@ -157,10 +167,15 @@ class PixelReport {
 public:
     PixelReport(const Scene& scene, bool useGpu, bool useCpu, const GpuPixelTrace& shader,
                 const CpuPixelExplanation& reference)
-        : scene_(scene), useGpu_(useGpu), useCpu_(useCpu), shader_(shader), reference_(reference),
+        : scene_(scene),
+          useGpu_(useGpu),
+          useCpu_(useCpu),
+          shader_(shader),
+          reference_(reference),
           table_(useGpu, useCpu),
           sceneScale_(glm::length(reference.ray.origin) + glm::length(shader.rayOrigin)),
-          shaderHit_(shader.node != PixelClass::kBackground), referenceHit_(reference.nearest.has_value()),
+          shaderHit_(shader.node != PixelClass::kBackground),
+          referenceHit_(reference.nearest.has_value()),
           referenceNode_(referenceHit_ ? std::uint32_t(reference.nearest->nodeIndex) : PixelClass::kBackground) {}
 
     void print() {
@@ -221,8 +236,9 @@ private:
             return hit ? format("node %u, %s", node, distance(t).c_str()) : std::string("background");
         };
         const double referenceT = referenceHit_ ? reference_.nearest->hit.t : 0.0;
-        table_.row("hit", hitText(shaderHit_, shader_.node, shader_.t), hitText(referenceHit_, referenceNode_, referenceT),
-                   shader_.node != referenceNode_ || (shaderHit_ && referenceHit_ && differs(shader_.t, referenceT, 0.0)));
+        table_.row(
+            "hit", hitText(shaderHit_, shader_.node, shader_.t), hitText(referenceHit_, referenceNode_, referenceT),
+            shader_.node != referenceNode_ || (shaderHit_ && referenceHit_ && differs(shader_.t, referenceT, 0.0)));
     }
 
     void printSurface() {

@@ -49,7 +49,7 @@ struct SceneRender {
         std::optional<DigestNote> digest;
         if (options.tile) {
             const TileStamp stamp{*options.tile, scene.image.width, scene.image.height, scene.image.samplesPerPixel,
-                                  renderer, sceneIdentity, buildVersion()};
+                                  renderer,      sceneIdentity,     buildVersion()};
             const std::string text = formatTileStamp(stamp);
             notes.push_back({kTileStampKey, text});
             digest = DigestNote{kTileDigestKey, text};
@@ -85,8 +85,8 @@ std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
         return plan.kernel.name + " (prebuilt)" + describeBatches(plan.lightBatches);
     }
     const std::size_t classes = plan.tileClasses.kernels.size();
-    const std::string name = classes ? "generated for each of " + std::to_string(classes) + " tile classes"
-                                     : plan.kernel.name;
+    const std::string name =
+        classes ? "generated for each of " + std::to_string(classes) + " tile classes" : plan.kernel.name;
     char text[160];
     std::snprintf(text, sizeof text, "%s, written in %.2f ms, ", name.c_str(), build.generateMilliseconds);
     std::string description = text;
@@ -148,13 +148,14 @@ std::string renderOnGpu(const SceneRender& job, GpuSession& gpu, std::optional<I
     const GpuRenderResult result = renderImageOnGpu(job, gpu, plan, *writer);
     job.stageAovs(aovs);
     if (aovs) {
-        gpu.linearRenderer().renderLinearRows(job.scene, plan, GpuOutput::LinearClassesAndAov,
-                                  [&](std::uint32_t, const GpuRenderResult& band) {
-                                      aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
-                                  });
+        gpu.linearRenderer().renderLinearRows(
+            job.scene, plan, GpuOutput::LinearClassesAndAov, [&](std::uint32_t, const GpuRenderResult& band) {
+                aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
+            });
     }
     char how[512];
-    std::snprintf(how, sizeof how, "gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's "
+    std::snprintf(how, sizeof how,
+                  "gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's "
                   "compile",
                   precision.c_str(), device.c_str(), result.timing.renderMilliseconds,
                   result.timing.fromTimestamps ? "" : " (wall clock)",
@@ -175,7 +176,8 @@ std::uint32_t cpuBandRows(const CpuBandRenderer& renderer, std::uint32_t rows) {
 
 std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& writer,
                         std::optional<StagedAovs>& aovs) {
-    const CpuBandRenderer renderer(job.scene, job.options.threads, Acceleration::Auto, !job.options.aovDirectory.empty());
+    const CpuBandRenderer renderer(job.scene, job.options.threads, Acceleration::Auto,
+                                   !job.options.aovDirectory.empty());
     job.open(writer, "cpu reference");
     job.stageAovs(aovs);
     Progress progress = job.progress();
@@ -295,8 +297,8 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
     plan.check();
     for (const RenderTarget* target : rendered) {
         if (!target->format) {
-            throw SceneError("-o " + printable(target->outputPath) + ": unknown image format (supported: " +
-                             kSupportedImageFormats + ")");
+            throw SceneError("-o " + printable(target->outputPath) +
+                             ": unknown image format (supported: " + kSupportedImageFormats + ")");
         }
     }
 }
@@ -316,7 +318,8 @@ int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& ta
     }
     if (targets.size() > 1) {
         std::string names;
-        for (const std::string& name : failed) names += (names.empty() ? "; failed: " : ", ") + printable(name);
+        for (const std::string& name : failed)
+            names += (names.empty() ? "; failed: " : ", ") + printable(name);
         std::printf("rendered %zu of %zu scenes%s\n", targets.size() - failed.size(), targets.size(), names.c_str());
     }
     return firstFailure;

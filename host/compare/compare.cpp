@@ -166,9 +166,9 @@ Verdict judge(const RenderComparison& comparison, const Tolerance& tolerance) {
 
 Rgb8Image diffHeatMap(const Rgb8Image& reference, const Rgb8Image& test) {
     requireSameSize(reference.width, reference.height, test.width, test.height);
-    static constexpr std::array<glm::dvec3, 5> kStops = {
-        glm::dvec3(0, 0, 96), glm::dvec3(160, 0, 160), glm::dvec3(255, 0, 0), glm::dvec3(255, 230, 0),
-        glm::dvec3(255, 255, 255)};
+    static constexpr std::array<glm::dvec3, 5> kStops = {glm::dvec3(0, 0, 96), glm::dvec3(160, 0, 160),
+                                                         glm::dvec3(255, 0, 0), glm::dvec3(255, 230, 0),
+                                                         glm::dvec3(255, 255, 255)};
     const std::size_t pixels = std::size_t(reference.width) * reference.height;
     Rgb8Image map{reference.width, reference.height, std::vector<std::uint8_t>(pixels * 3, 0)};
     for (std::size_t i = 0; i < pixels; ++i) {
@@ -199,18 +199,18 @@ Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const st
     }
     Rgb8Image mask{reference.width, reference.height, std::vector<std::uint8_t>(pixels * 3, 0)};
     for (std::size_t i = 0; i < pixels; ++i) {
-        const PixelJudgement judgement = judgePixel(referenceClasses[i], testClasses[i],
-                                                    ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]);
+        const PixelJudgement judgement =
+            judgePixel(referenceClasses[i], testClasses[i], ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]);
         const glm::dvec3 difference = glm::abs(levelDifference(reference, test, i));
         const bool colourOff = std::max({difference.x, difference.y, difference.z}) > 1.0;
         const bool invalid = (referenceLinear && !isValidColour(referenceLinear->pixels.at(i))) ||
                              (testLinear && !isValidColour(testLinear->pixels.at(i)));
-        const std::uint8_t* colour = invalid                                               ? mask_colour::kInvalid
+        const std::uint8_t* colour = invalid                                                ? mask_colour::kInvalid
                                      : judgement.mismatch != PixelJudgement::Mismatch::None ? mask_colour::kTopology
-                                     : judgement.excused                                   ? mask_colour::kExcused
-                                     : judgement.colourCompared && colourOff               ? mask_colour::kColour
-                                     : judgement.ambiguous                                 ? mask_colour::kNearTied
-                                                                                           : nullptr;
+                                     : judgement.excused                                    ? mask_colour::kExcused
+                                     : judgement.colourCompared && colourOff                ? mask_colour::kColour
+                                     : judgement.ambiguous                                  ? mask_colour::kNearTied
+                                                                                            : nullptr;
         if (colour) {
             std::copy(colour, colour + 3, mask.bytes.begin() + std::ptrdiff_t(3 * i));
         }

@@ -21,7 +21,7 @@ struct ErrorMetrics {
     double maxAbs = 0;
     double meanAbs = 0;
     double rmse = 0;
-    double psnr = 0;  // dB against the unit's peak; infinite when the images are identical
+    double psnr = 0;                       // dB against the unit's peak; infinite when the images are identical
     std::uint64_t pixelsOverOneLevel = 0;  // pixels with a channel off by more than 1/255 (one 8-bit level)
     double shareOverOneLevel = 0;          // that count over the pixels compared
 };
@@ -105,8 +105,8 @@ RenderComparison compareRenders(const Image& referenceImage, const std::vector<P
 // that to mean something (a mostly ambiguous comparison proves little, whatever it finds).
 struct Tolerance {
     std::uint64_t maxTopologyMismatches = 0;
-    double maxSharePercent = 0.1;     // of compared pixels whose 8-bit value differs by more than one level
-    double maxRmseLevels = 1.0;       // RMSE of the 8-bit output over compared pixels, in levels
+    double maxSharePercent = 0.1;      // of compared pixels whose 8-bit value differs by more than one level
+    double maxRmseLevels = 1.0;        // RMSE of the 8-bit output over compared pixels, in levels
     double maxAmbiguousPercent = 5.0;  // of pixels with a near-tied decision
 };
 

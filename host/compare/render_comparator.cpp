@@ -12,8 +12,8 @@ void RenderComparator::add(const RenderBand& reference, const RenderBand& test, 
         throw std::invalid_argument("RenderComparator: bands of different sizes");
     }
     for (std::size_t i = 0; i < pixels; ++i) {
-        const PixelJudgement judgement = judgePixel(reference.classes[i], test.classes[i],
-                                                    ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]);
+        const PixelJudgement judgement =
+            judgePixel(reference.classes[i], test.classes[i], ambiguity.empty() ? PixelAmbiguity{} : ambiguity[i]);
         topology_.add(judgement);
         invalidColours_ += !isValidColour(reference.image.pixels[i]) || !isValidColour(test.image.pixels[i]);
         if (judgement.colourCompared) {

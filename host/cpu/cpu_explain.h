@@ -17,17 +17,17 @@
 namespace hexray {
 
 struct CpuPixelExplanation {
-    Ray ray;                                    // of the explained sample
+    Ray ray;                                     // of the explained sample
     std::vector<std::optional<Hit>> candidates;  // per node
     std::optional<SceneHit> nearest;
     bool constantShaded = false;
-    Color albedo{0.0};                   // the shader's colour at the hit
-    glm::dvec2 uv{0.0};                  // texture coordinates (checker only)
+    Color albedo{0.0};                      // the shader's colour at the hit
+    glm::dvec2 uv{0.0};                     // texture coordinates (checker only)
     std::optional<glm::dvec2> checkerCell;  // floor(u/size), floor(v/size) (checker only)
-    std::vector<LightTerm> lights;       // empty for constant shaders and the background
+    std::vector<LightTerm> lights;          // empty for constant shaders and the background
     Color sampleColor{0.0};
-    Color pixelColor{0.0};               // average over the pixel's samples, as renderOnCpu
-    PixelClass pixelClass;               // of the explained sample (renderOnCpu uses sample 0)
+    Color pixelColor{0.0};  // average over the pixel's samples, as renderOnCpu
+    PixelClass pixelClass;  // of the explained sample (renderOnCpu uses sample 0)
 };
 
 // Sample `sample` of pixel (x, y); the caller checks the ranges.

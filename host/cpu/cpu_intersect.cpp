@@ -186,11 +186,14 @@ void forEachSphereAlongRay(const Ray& ray, const Bvh& bvh, Visit&& visit) {
         const bool secondIsNearer = secondEntry && (!firstEntry || *secondEntry < *firstEntry);
         // Pushed far child first, so that the near one is popped first.
         if (secondIsNearer) {
-            if (firstEntry) stack.push_back({first, *firstEntry});
+            if (firstEntry)
+                stack.push_back({first, *firstEntry});
             stack.push_back({second, *secondEntry});
         } else {
-            if (secondEntry) stack.push_back({second, *secondEntry});
-            if (firstEntry) stack.push_back({first, *firstEntry});
+            if (secondEntry)
+                stack.push_back({second, *secondEntry});
+            if (firstEntry)
+                stack.push_back({first, *firstEntry});
         }
     }
 }

@@ -21,10 +21,10 @@ struct Ray {
 
 // Where a ray meets a surface.
 struct Hit {
-    double t = 0.0;                     // distance along the ray
-    glm::dvec3 point{0.0};              // exactly on the surface as far as double allows
-    glm::dvec3 geometricNormal{0.0};    // sphere: outward; plane: +Y
-    glm::dvec3 facingNormal{0.0};       // the geometric normal turned toward the ray's origin side
+    double t = 0.0;                   // distance along the ray
+    glm::dvec3 point{0.0};            // exactly on the surface as far as double allows
+    glm::dvec3 geometricNormal{0.0};  // sphere: outward; plane: +Y
+    glm::dvec3 facingNormal{0.0};     // the geometric normal turned toward the ray's origin side
 };
 
 // The plane y = plane.height. Misses rays parallel to it and rays leaving it behind.

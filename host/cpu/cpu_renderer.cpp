@@ -77,8 +77,7 @@ void forEachSphereThatMayMatter(const Bvh& bvh, const Ray& ray, const glm::dvec3
     const auto marginBound = [&](const BvhNode& node) {
         const glm::dvec3 centre = 0.5 * (node.boundsMin + node.boundsMax);
         // The ball's radius from the rounded centre, so that it contains the box regardless.
-        const double radius =
-            glm::length(glm::max(node.boundsMax - centre, centre - node.boundsMin)) * (1.0 + 1e-12);
+        const double radius = glm::length(glm::max(node.boundsMax - centre, centre - node.boundsMin)) * (1.0 + 1e-12);
         const glm::dvec3 f = ray.origin - centre;
         const double lengthL = glm::length(f - glm::dot(f, ray.direction) * ray.direction);
         // intersectSphere reports hits up to a few units of roundoff of |o - c| outside a sphere.
@@ -297,7 +296,8 @@ void addShadingMargins(const RenderContext& context, const DecisionBounds& bound
             margins.add(facingMargin(cosTheta, normalRoundoff, directionRoundoff));
             if (cosTheta > 0.0) {
                 addShadowMargins(context, nearest.nodeIndex, hit, hitScale, eye, light, margins);
-                decisions.add(lightTermMargin(normalRoundoff, directionRoundoff, context.roundoff.general), kColourPart);
+                decisions.add(lightTermMargin(normalRoundoff, directionRoundoff, context.roundoff.general),
+                              kColourPart);
             }
         }
         decisions.add(margins.smallest / bounds.general, lightPart(index));
@@ -391,9 +391,9 @@ std::optional<Bvh> bvhFor(const Scene& scene, Acceleration acceleration) {
 void checkShaderIndices(const Scene& scene) {
     for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
         if (scene.nodes[index].shaderIndex >= scene.shaders.size()) {
-            throw std::out_of_range("renderOnCpu: nodes[" + std::to_string(index) +
-                                    "] names shader " + std::to_string(scene.nodes[index].shaderIndex) +
-                                    " but the scene has " + std::to_string(scene.shaders.size()));
+            throw std::out_of_range("renderOnCpu: nodes[" + std::to_string(index) + "] names shader " +
+                                    std::to_string(scene.nodes[index].shaderIndex) + " but the scene has " +
+                                    std::to_string(scene.shaders.size()));
         }
     }
 }

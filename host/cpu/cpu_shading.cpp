@@ -107,8 +107,8 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
     return !hasSphereHitBefore(shadowRay, scene, maxDistance, bvh);
 }
 
-bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                    const glm::dvec3& lightPosition, const Bvh* bvh) {
+bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit, const glm::dvec3& lightPosition,
+                    const Bvh* bvh) {
     if (isBlockedByOwnSphere(geometry, hit, lightPosition)) {
         return false;
     }

@@ -29,7 +29,8 @@ glm::dvec2 sphereTextureCoordinates(const glm::dvec3& outwardNormal);
 
 // `frameOrigin`: the world position of the coordinates' origin (EyeFrameScene::eye), which a plane's
 // cells, fixed in the world, add back.
-glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit, const glm::dvec3& frameOrigin = glm::dvec3(0.0));
+glm::dvec2 textureCoordinates(const Geometry& geometry, const Hit& hit,
+                              const glm::dvec3& frameOrigin = glm::dvec3(0.0));
 
 // How far a shadow ray's origin is pushed off the surface along the facing normal:
 // 0 for planes (the snapped hit point cannot re-hit its plane), an error bound of a few
@@ -46,14 +47,14 @@ bool isSegmentClear(const Scene& scene, const glm::dvec3& from, const glm::dvec3
 // Whether the light at `lightPosition` can see the hit point (the shadow ray, offset as above).
 // A point of a sphere seen from inside that faces a light outside the sphere never can: decided
 // exactly, without the shadow ray.
-bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit,
-                    const glm::dvec3& lightPosition, const Bvh* bvh = nullptr);
+bool isLightVisible(const Scene& scene, const Geometry& geometry, const Hit& hit, const glm::dvec3& lightPosition,
+                    const Bvh* bvh = nullptr);
 
 // Why a light does or does not reach a hit point, with the terms that decided it.
 enum class LightReach { Lit, AtPoint, FacingAway, Shadowed };
 struct LightDecision {
     LightReach reach = LightReach::AtPoint;
-    double cosTheta = 0.0;         // 0 when AtPoint
+    double cosTheta = 0.0;  // 0 when AtPoint
     double distanceSquared = 0.0;
 };
 // Lit unless the light lies on the point itself, the surface faces away from it (cos <= 0),
@@ -78,9 +79,9 @@ Color incidentLight(const Scene& scene, const Geometry& geometry, const Hit& hit
 // a bit per light that contributes) come from the very decisions that made the colour.
 struct ShadedHit {
     Color color{0.0};
-    Color albedo{0.0};                   // the shader's colour at the hit
+    Color albedo{0.0};                    // the shader's colour at the hit
     std::optional<glm::dvec2> checkerUv;  // texture coordinates, checker shaders only
-    std::uint32_t flags = 0;             // PixelClass flags
+    std::uint32_t flags = 0;              // PixelClass flags
 };
 // The colour the node's shader gives this hit. `lightTerms` (when given) receives every light's
 // term for a lit shader; a constant shader evaluates no light. `frameOrigin`: as for

@@ -50,7 +50,7 @@ public:
     }
 
     const Scene& scene;
-    glm::dvec3 eye;                          // world position of the camera: Embree's origin
+    glm::dvec3 eye;  // world position of the camera: Embree's origin
     // Every sphere, camera-relative, as float.
     const std::unique_ptr<RTCSceneTy, decltype(&rtcReleaseScene)> spheres;
     std::vector<std::uint32_t> sphereNodes;  // Embree primID -> index into scene.nodes
@@ -79,9 +79,9 @@ private:
 
 struct Surface {
     std::uint32_t node;
-    glm::dvec3 point;           // world, on the surface (plane: snapped; sphere: reprojected)
-    glm::dvec3 outwardNormal;   // plane: +Y
-    glm::dvec3 facingNormal;    // turned toward the ray's side
+    glm::dvec3 point;          // world, on the surface (plane: snapped; sphere: reprojected)
+    glm::dvec3 outwardNormal;  // plane: +Y
+    glm::dvec3 facingNormal;   // turned toward the ray's side
 };
 
 RTCIntersectContext intersectContext(RTCIntersectContextFlags flags) {
@@ -117,8 +117,8 @@ std::optional<Surface> nearestSurface(const Prepared& prepared, const glm::dvec3
     const glm::dvec3 approximate = prepared.eye + double(nearestT) * direction;
     if (const auto* plane = std::get_if<Plane>(&scene.nodes[node].geometry)) {
         const glm::dvec3 up(0.0, 1.0, 0.0);
-        return Surface{node, {approximate.x, plane->height, approximate.z}, up,
-                       prepared.eye.y > plane->height ? up : -up};
+        return Surface{
+            node, {approximate.x, plane->height, approximate.z}, up, prepared.eye.y > plane->height ? up : -up};
     }
     const Sphere& sphere = std::get<Sphere>(scene.nodes[node].geometry);
     const glm::dvec3 normal = glm::normalize(approximate - sphere.center);
@@ -162,8 +162,8 @@ LightReach segmentToLight(const Prepared& prepared, const glm::dvec3& from, cons
     const glm::dvec3 toTarget = to - from;
     const double distance = glm::length(toTarget);
     if (distance - shortenBy > 0.0) {
-        reach.shadowRay = ShadowRay{glm::vec3(from - prepared.eye), glm::vec3(toTarget / distance),
-                                    float(distance - shortenBy)};
+        reach.shadowRay =
+            ShadowRay{glm::vec3(from - prepared.eye), glm::vec3(toTarget / distance), float(distance - shortenBy)};
     }
     return reach;
 }

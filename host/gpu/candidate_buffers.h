@@ -16,9 +16,9 @@ namespace hexray {
 
 class CandidateBuffers {
 public:
-    static constexpr std::array<std::uint32_t, 4> kBindings = {
-        gpu::CANDIDATE_GRID_BINDING, gpu::CANDIDATE_CELL_BINDING, gpu::CANDIDATE_ENTRY_BINDING,
-        gpu::CANDIDATE_SPHERE_BINDING};
+    static constexpr std::array<std::uint32_t, 4> kBindings = {gpu::CANDIDATE_GRID_BINDING, gpu::CANDIDATE_CELL_BINDING,
+                                                               gpu::CANDIDATE_ENTRY_BINDING,
+                                                               gpu::CANDIDATE_SPHERE_BINDING};
     static bool isCandidateBinding(std::uint32_t binding);
 
     // Uploads `lists` (may be null) and the spheres' records (gpu_scene.h's packCandidateSpheres).

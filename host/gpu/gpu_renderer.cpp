@@ -37,7 +37,8 @@ vk::DescriptorType descriptorType(std::uint32_t binding, bool uniformScene) {
     if (CandidateBuffers::isCandidateBinding(binding)) {
         return vk::DescriptorType::eUniformTexelBuffer;
     }
-    const bool sceneData = binding == gpu::FRAME_BINDING || binding == gpu::NODE_BINDING || binding == gpu::LIGHT_BINDING;
+    const bool sceneData =
+        binding == gpu::FRAME_BINDING || binding == gpu::NODE_BINDING || binding == gpu::LIGHT_BINDING;
     return uniformScene && sceneData ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer;
 }
 
@@ -212,8 +213,8 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
       uniformScene_{createSetLayout(context.device(), true), nullptr},
       storageScene_{createSetLayout(context.device(), false), nullptr},
       pipelines_(kKeptPipelines),
-      commandPool_(context.device(),
-                   vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, context.queueFamily())),
+      commandPool_(context.device(), vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                               context.queueFamily())),
       timestamps_(nullptr) {
     uniformScene_.pipelineLayout = createPipelineLayout(context.device(), uniformScene_.setLayout);
     storageScene_.pipelineLayout = createPipelineLayout(context.device(), storageScene_.setLayout);
@@ -262,7 +263,10 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> s
                                                 std::span<const std::byte> sceneValues,
                                                 std::span<const std::uint32_t> sceneSizes) {
     const bool uniform = layout == SceneLayout::Uniform;
-    PipelineKey key{generatedId ? nullptr : spirv.data(), generatedId, uniform, specialization,
+    PipelineKey key{generatedId ? nullptr : spirv.data(),
+                    generatedId,
+                    uniform,
+                    specialization,
                     {sceneValues.begin(), sceneValues.end()}};
     if (const vk::raii::Pipeline* found = pipelines_.find(key)) {
         return *found;
@@ -338,26 +342,31 @@ GpuRenderResult GpuRenderer::renderLinearRows(const Scene& scene, const RenderPl
     const std::uint32_t width = scene.image.width;
     const bool aov = output == GpuOutput::LinearClassesAndAov;
     const double scale = plan.placement.scale;  // the shader's t is in the placement's units
-    GpuRenderResult rows;  // reused from band to band
-    renderBands(scene, plan, output, result, [&](const Band& band) {
-        const std::size_t count = std::size_t(band.rows) * width;
-        rows.image.width = width;
-        rows.image.height = band.rows;
-        rows.image.pixels.resize(count);
-        std::transform(band.pixels, band.pixels + count, rows.image.pixels.begin(),
-                       [](const GpuPixel& p) { return glm::vec3(p); });
-        rows.classes.resize(count);
-        std::transform(band.classes, band.classes + count, rows.classes.begin(),
-                       [](const GpuPixelClass& c) { return PixelClass{c.x, c.y}; });
-        rows.depth.resize(aov ? count : 0);
-        rows.normals.resize(aov ? count : 0);
-        for (std::size_t i = 0; aov && i < count; ++i) {
-            const bool background = band.classes[i].x == PixelClass::kBackground;
-            rows.depth[i] = background ? std::numeric_limits<float>::infinity() : float(double(band.aovs[i].w) * scale);
-            rows.normals[i] = glm::vec3(band.aovs[i]);
-        }
-        consume(band.firstRow, rows);
-    }, rowRange);
+    GpuRenderResult rows;                       // reused from band to band
+    renderBands(
+        scene, plan, output, result,
+        [&](const Band& band) {
+            const std::size_t count = std::size_t(band.rows) * width;
+            rows.image.width = width;
+            rows.image.height = band.rows;
+            rows.image.pixels.resize(count);
+            std::transform(band.pixels, band.pixels + count, rows.image.pixels.begin(),
+                           [](const GpuPixel& p) { return glm::vec3(p); });
+            rows.classes.resize(count);
+            std::transform(band.classes, band.classes + count, rows.classes.begin(), [](const GpuPixelClass& c) {
+                return PixelClass{c.x, c.y};
+            });
+            rows.depth.resize(aov ? count : 0);
+            rows.normals.resize(aov ? count : 0);
+            for (std::size_t i = 0; aov && i < count; ++i) {
+                const bool background = band.classes[i].x == PixelClass::kBackground;
+                rows.depth[i] =
+                    background ? std::numeric_limits<float>::infinity() : float(double(band.aovs[i].w) * scale);
+                rows.normals[i] = glm::vec3(band.aovs[i]);
+            }
+            consume(band.firstRow, rows);
+        },
+        rowRange);
     return result;
 }
 
@@ -365,14 +374,17 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderP
                                                RowRange rows) {
     GpuRenderResult result;
     std::vector<std::uint8_t> rgb;
-    renderBands(scene, plan, GpuOutput::Encoded8, result, [&](const Band& band) {
-        const std::size_t count = std::size_t(band.rows) * scene.image.width;
-        rgb.resize(count * 3);
-        for (std::size_t i = 0; i < count; ++i) {
-            std::memcpy(&rgb[3 * i], &band.encoded[i], 3);  // RGBA8, R in the lowest byte: drop A
-        }
-        consume(band.firstRow, rgb);
-    }, rows);
+    renderBands(
+        scene, plan, GpuOutput::Encoded8, result,
+        [&](const Band& band) {
+            const std::size_t count = std::size_t(band.rows) * scene.image.width;
+            rgb.resize(count * 3);
+            for (std::size_t i = 0; i < count; ++i) {
+                std::memcpy(&rgb[3 * i], &band.encoded[i], 3);  // RGBA8, R in the lowest byte: drop A
+            }
+            consume(band.firstRow, rgb);
+        },
+        rows);
     return result;
 }
 
@@ -444,11 +456,15 @@ void requireTraceWithinLoopLimit(const RenderPlan& plan, const std::string& devi
 }
 
 std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) {
-    if (tracing) return gpu::OUTPUT_TRACE;
+    if (tracing)
+        return gpu::OUTPUT_TRACE;
     switch (output) {
-        case GpuOutput::LinearAndClasses: return gpu::OUTPUT_LINEAR_AND_CLASSES;
-        case GpuOutput::LinearClassesAndAov: return gpu::OUTPUT_LINEAR_CLASSES_AND_AOV;
-        case GpuOutput::Encoded8: break;
+        case GpuOutput::LinearAndClasses:
+            return gpu::OUTPUT_LINEAR_AND_CLASSES;
+        case GpuOutput::LinearClassesAndAov:
+            return gpu::OUTPUT_LINEAR_CLASSES_AND_AOV;
+        case GpuOutput::Encoded8:
+            break;
     }
     return scene.image.encoding == Encoding::Srgb ? gpu::OUTPUT_8BIT_SRGB : gpu::OUTPUT_8BIT_LINEAR;
 }
@@ -527,8 +543,8 @@ std::vector<Dispatch> bandDispatches(const BandWork& work, std::uint32_t firstRo
     std::vector<Dispatch> dispatches;
     if (!work.classification) {
         for (const PixelWork& share : work.shares) {
-            const GpuBand band{firstRow, rows, 0, share.firstSample, share.endSample, share.firstLight,
-                               share.endLight, 0};
+            const GpuBand band{firstRow,         rows,           0, share.firstSample, share.endSample,
+                               share.firstLight, share.endLight, 0};
             dispatches.push_back({work.pipelines[0], band, groupsFor(work.width), groupsFor(rows)});
         }
         return dispatches;
@@ -566,12 +582,12 @@ const Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
 
 // What one render writes and how large its bands are.
 struct BandShape {
-    bool linear;          // pixels and classes (else the encoded image)
-    bool aov;             // and the AOVs
-    bool batched;         // light batches: the carry buffer
-    std::uint32_t rows;   // per band
-    std::size_t pixels;   // per band
-    std::size_t tiles;    // per band, when tile classes list their tiles
+    bool linear;         // pixels and classes (else the encoded image)
+    bool aov;            // and the AOVs
+    bool batched;        // light batches: the carry buffer
+    std::uint32_t rows;  // per band
+    std::size_t pixels;  // per band
+    std::size_t tiles;   // per band, when tile classes list their tiles
 };
 
 // Large images render in bands of rows so the pixel buffer (and the light batches' carry) stays
@@ -586,8 +602,12 @@ BandShape bandShape(const Scene& scene, GpuOutput output, bool tracing, bool lig
     const std::uint32_t fitting = std::uint32_t(std::clamp<vk::DeviceSize>(limit / rowBytes, 1, height));
     const std::uint32_t rows =
         fitting >= height ? height : std::max(WORKGROUP_SIZE, fitting / WORKGROUP_SIZE * WORKGROUP_SIZE);
-    return {output != GpuOutput::Encoded8 && !tracing, output == GpuOutput::LinearClassesAndAov && !tracing, batched,
-            rows, std::size_t(rows) * width, tiled ? std::size_t(groupsFor(width)) * groupsFor(rows) : 0};
+    return {output != GpuOutput::Encoded8 && !tracing,
+            output == GpuOutput::LinearClassesAndAov && !tracing,
+            batched,
+            rows,
+            std::size_t(rows) * width,
+            tiled ? std::size_t(groupsFor(width)) * groupsFor(rows) : 0};
 }
 
 // A render's buffers with its descriptor set, command buffer and fence: created together,
@@ -602,8 +622,8 @@ struct BandBuffers {
 
     // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
     std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> byBinding() {
-        return {&frame, &nodes,  &lights, &pixels, &classes, &encoded, nullptr,
-                nullptr, &aov,  &trace,  &tiles,  nullptr,  nullptr,  &carry};
+        return {&frame,  &nodes, &lights, &pixels, &classes, &encoded, nullptr,
+                nullptr, &aov,   &trace,  &tiles,  nullptr,  nullptr,  &carry};
     }
     void abandon() {
         for (HostVisibleBuffer* buffer : byBinding()) {
@@ -674,7 +694,8 @@ std::uint64_t recordDispatches(const vk::raii::CommandBuffer& commands, const vk
 // the request of a traced pixel, bound to a descriptor set of `setLayout`.
 BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::CommandPool& commandPool,
                             const vk::raii::DescriptorSetLayout& setLayout, const Scene& scene, const RenderPlan& plan,
-                            const PackedScene& packed, const BandShape& shape, std::span<const std::byte> traceRequest) {
+                            const PackedScene& packed, const BandShape& shape,
+                            std::span<const std::byte> traceRequest) {
     const vk::raii::Device& device = context.device();
     const vk::raii::PhysicalDevice& physicalDevice = context.physicalDevice();
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
@@ -688,16 +709,20 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
         return HostVisibleBuffer(device, physicalDevice, used ? shape.pixels * bytesPerPixel : 0, storage);
     };
     const bool encoded = !shape.linear && traceRequest.empty();
-    BandBuffers buffers{
-        HostVisibleBuffer(device, physicalDevice, packed.frame.size(), sceneUsage), sceneBuffer(packed.nodes.size()),
-        sceneBuffer(packed.lights.size()), output(shape.linear, sizeof(GpuPixel)),
-        output(shape.linear, sizeof(GpuPixelClass)), output(encoded, sizeof(gpu::GpuEncodedPixel)),
-        output(shape.aov, sizeof(gpu::GpuAovPixel)),
-        HostVisibleBuffer(device, physicalDevice, traceRequest.size(), storage),
-        HostVisibleBuffer(device, physicalDevice, shape.tiles * sizeof(glm::uvec2), storage),
-        output(shape.batched, sizeof(gpu::GpuPixelCarry)), holdingScene(scene, plan, [&] {
-            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
-        })};
+    BandBuffers buffers{HostVisibleBuffer(device, physicalDevice, packed.frame.size(), sceneUsage),
+                        sceneBuffer(packed.nodes.size()),
+                        sceneBuffer(packed.lights.size()),
+                        output(shape.linear, sizeof(GpuPixel)),
+                        output(shape.linear, sizeof(GpuPixelClass)),
+                        output(encoded, sizeof(gpu::GpuEncodedPixel)),
+                        output(shape.aov, sizeof(gpu::GpuAovPixel)),
+                        HostVisibleBuffer(device, physicalDevice, traceRequest.size(), storage),
+                        HostVisibleBuffer(device, physicalDevice, shape.tiles * sizeof(glm::uvec2), storage),
+                        output(shape.batched, sizeof(gpu::GpuPixelCarry)),
+                        holdingScene(scene, plan, [&] {
+                            return CandidateBuffers(device, physicalDevice, plan.candidates.get(),
+                                                    packed.candidateSpheres);
+                        })};
     buffers.trace.upload(traceRequest);
     buffers.frame.upload(std::span(packed.frame));
     buffers.nodes.upload(std::span(packed.nodes));
@@ -745,20 +770,17 @@ double submitBand(const VulkanContext& context, const Timestamps& timestamps, Ba
     if (!useTimestamps) {
         return wallMilliseconds;
     }
-    const auto [status, ticks] = timestamps_.getResults<std::uint64_t>(
-        0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
-        vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+    const auto [status, ticks] =
+        timestamps_.getResults<std::uint64_t>(0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
+                                              vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
     return double((ticks[1] - ticks[0]) & timestamps.mask) * timestamps.nanosecondsPerTick * 1e-6;
 }
 
 }  // namespace
 
-std::vector<const vk::raii::Pipeline*> GpuRenderer::pipelinesFor(std::span<const Kernel> kernels,
-                                                                 const RenderPlan& plan,
-                                                                 const gpu::Specialization& specialization,
-                                                                 std::span<const std::byte> sceneValues,
-                                                                 std::span<const std::uint32_t> sceneSizes,
-                                                                 KernelBuild& timing) {
+std::vector<const vk::raii::Pipeline*> GpuRenderer::pipelinesFor(
+    std::span<const Kernel> kernels, const RenderPlan& plan, const gpu::Specialization& specialization,
+    std::span<const std::byte> sceneValues, std::span<const std::uint32_t> sceneSizes, KernelBuild& timing) {
     std::vector<const vk::raii::Pipeline*> pipelines;
     for (const Kernel& kernel : kernels) {
         KernelBuild build;
@@ -782,15 +804,14 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     result.usedCandidateLists = plan.layout == SceneLayout::StorageCandidates;
     // The kernels: the plan's, or (culling, not for a traced pixel) one per tile class.
     const TileClassification* classification = tracing ? nullptr : plan.tileClasses.classification.get();
-    const std::span<const Kernel> kernels = classification ? std::span<const Kernel>(plan.tileClasses.kernels)
-                                                           : std::span<const Kernel>(&plan.kernel, 1);
+    const std::span<const Kernel> kernels =
+        classification ? std::span<const Kernel>(plan.tileClasses.kernels) : std::span<const Kernel>(&plan.kernel, 1);
     const std::uint32_t lightCount = std::uint32_t(scene.lights.size());
-    const BandWork work{pipelinesFor(kernels, plan, specialization, packed.constants, packed.constantSizes,
-                                     result.timing.kernel),
-                        classification, plan.lightBatches.work(scene.image.samplesPerPixel, lightCount),
-                        scene.image.width};
-    const vk::DeviceSize bandBytes = std::min<vk::DeviceSize>(
-        context_.physicalDevice().getProperties().limits.maxStorageBufferRange, maxBandBytes_);
+    const BandWork work{
+        pipelinesFor(kernels, plan, specialization, packed.constants, packed.constantSizes, result.timing.kernel),
+        classification, plan.lightBatches.work(scene.image.samplesPerPixel, lightCount), scene.image.width};
+    const vk::DeviceSize bandBytes =
+        std::min<vk::DeviceSize>(context_.physicalDevice().getProperties().limits.maxStorageBufferRange, maxBandBytes_);
     const BandShape shape =
         bandShape(scene, output, tracing, plan.lightBatches.splits(), classification != nullptr, bandBytes);
     const SceneBindings& sceneBindings = bindings(plan.layout);
@@ -808,7 +829,8 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     timing.fromTimestamps = static_cast<bool>(*timestamps_);
     if (tracing) {
         // One invocation does the work; the pixel is in the request, not in the dispatch.
-        const Dispatch trace{work.pipelines[0], GpuBand{0, 1, 0, 0, scene.image.samplesPerPixel, 0, lightCount, 0}, 1, 1};
+        const Dispatch trace{work.pipelines[0], GpuBand{0, 1, 0, 0, scene.image.samplesPerPixel, 0, lightCount, 0}, 1,
+                             1};
         timing.renderMilliseconds = run(std::span(&trace, 1), false);
         consume(Band{0, 0, nullptr, nullptr, nullptr, nullptr, buffers.trace.data()});
         return;

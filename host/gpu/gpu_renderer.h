@@ -51,19 +51,19 @@ struct GpuTraceLight {
 struct GpuPixelTrace {
     Precision precision = Precision::F32;
     bool cameraRelative = true;
-    double scale = 1.0;              // the placement's power of two (1 for world placement)
+    double scale = 1.0;  // the placement's power of two (1 for world placement)
     glm::dvec3 rayOrigin{0};
     glm::dvec3 rayDirection{0};
     std::vector<double> candidates;  // per node: t in world units, +inf for a miss
     std::uint32_t node = PixelClass::kBackground;
-    std::uint32_t flags = 0;         // as PixelClass::flags
+    std::uint32_t flags = 0;  // as PixelClass::flags
     double t = 0;
     glm::dvec3 position{0};
-    glm::dvec3 normal{0};            // shading normal
+    glm::dvec3 normal{0};  // shading normal
     glm::dvec3 shadowOrigin{0};
     glm::vec3 albedo{0};
-    glm::vec3 sampleColor{0};        // the traced sample's linear colour
-    glm::vec3 pixelColor{0};         // the pixel's (average of its samples)
+    glm::vec3 sampleColor{0};  // the traced sample's linear colour
+    glm::vec3 pixelColor{0};   // the pixel's (average of its samples)
     std::vector<GpuTraceLight> lights;
     bool usedCandidateLists = false;  // the trace followed the candidate lists, as the scene's render does
 };
@@ -177,9 +177,10 @@ private:
     // included).
     using PipelineKey =
         std::tuple<const std::uint32_t*, std::uint64_t, bool, gpu::Specialization, std::vector<std::byte>>;
-    const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, std::uint64_t generatedId, SceneLayout layout,
-                                       const gpu::Specialization& specialization,
-                                       std::span<const std::byte> sceneValues, std::span<const std::uint32_t> sceneSizes);
+    const vk::raii::Pipeline& pipeline(std::span<const std::uint32_t> spirv, std::uint64_t generatedId,
+                                       SceneLayout layout, const gpu::Specialization& specialization,
+                                       std::span<const std::byte> sceneValues,
+                                       std::span<const std::uint32_t> sceneSizes);
     // The pipelines of `kernels` for `plan`, their build times added to `timing`.
     std::vector<const vk::raii::Pipeline*> pipelinesFor(std::span<const Kernel> kernels, const RenderPlan& plan,
                                                         const gpu::Specialization& specialization,

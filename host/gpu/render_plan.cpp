@@ -94,8 +94,10 @@ std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& lig
 }
 
 std::uint32_t shaderKind(const Shader& shader) {
-    if (std::holds_alternative<ConstantShader>(shader)) return gpu::SHADER_CONSTANT;
-    if (std::holds_alternative<LambertShader>(shader)) return gpu::SHADER_LAMBERT;
+    if (std::holds_alternative<ConstantShader>(shader))
+        return gpu::SHADER_CONSTANT;
+    if (std::holds_alternative<LambertShader>(shader))
+        return gpu::SHADER_LAMBERT;
     return gpu::SHADER_CHECKER;
 }
 
@@ -135,12 +137,12 @@ bool wantsCandidates(const Scene& scene, const PlanRequest& request) {
 
 // Whether the device holds each of the lists' texel buffers (candidate_buffers.h).
 bool fitsDevice(const CandidateLists& lists, FloatWidth width, const DeviceAbilities& device) {
-    const std::size_t record = width == FloatWidth::F64 ? sizeof(gpu::GpuCandidateSphere<double>)
-                                                        : sizeof(gpu::GpuCandidateSphere<float>);
+    const std::size_t record =
+        width == FloatWidth::F64 ? sizeof(gpu::GpuCandidateSphere<double>) : sizeof(gpu::GpuCandidateSphere<float>);
     constexpr std::size_t kTexelBytes = 16;  // RGBA32UI
-    const std::size_t largest = std::max({lists.entries.size(), lists.cellStarts.size(),
-                                          lists.sphereNodes.size() * record / kTexelBytes,
-                                          lists.gridByteCount() / kTexelBytes});
+    const std::size_t largest =
+        std::max({lists.entries.size(), lists.cellStarts.size(), lists.sphereNodes.size() * record / kTexelBytes,
+                  lists.gridByteCount() / kTexelBytes});
     return largest <= device.maxTexelBufferElements;
 }
 
@@ -149,8 +151,7 @@ bool cullingPays(const Scene& scene, const RenderPlan& plan, Culling culling) {
     if (culling == Culling::Off || plan.formulation == Formulation::Textbook) {
         return false;
     }
-    const std::uint64_t samples =
-        std::uint64_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
+    const std::uint64_t samples = std::uint64_t(scene.image.width) * scene.image.height * scene.image.samplesPerPixel;
     return culling == Culling::On || samples >= kCullingMinSamples;
 }
 
@@ -158,9 +159,9 @@ bool cullingPays(const Scene& scene, const RenderPlan& plan, Culling culling) {
 TileClasses tileClassesFor(const Scene& scene, const SceneCode& code) {
     auto classification = std::make_shared<TileClassification>(classifyTiles(scene, code, kMaxTileClasses));
     TileClasses classes;
-    const bool culls = std::any_of(classification->classes.begin(), classification->classes.end(),
-                                   [&](const TileWork& work) { return workPerPixel(codeForClass(code, work)) !=
-                                                                      workPerPixel(code); });
+    const bool culls =
+        std::any_of(classification->classes.begin(), classification->classes.end(),
+                    [&](const TileWork& work) { return workPerPixel(codeForClass(code, work)) != workPerPixel(code); });
     if (!culls) {
         return classes;
     }
@@ -169,7 +170,8 @@ TileClasses tileClassesFor(const Scene& scene, const SceneCode& code) {
         classCode.tileList = true;
         classes.kernels.push_back(Kernel{"generated for tile class " + std::to_string(c + 1) + " of " +
                                              std::to_string(classification->classes.size()),
-                                         std::make_shared<const SceneCode>(std::move(classCode)), {}});
+                                         std::make_shared<const SceneCode>(std::move(classCode)),
+                                         {}});
     }
     classes.classification = std::move(classification);
     return classes;
@@ -200,8 +202,9 @@ void planLoops(const Scene& scene, const PlanRequest& request, const DeviceAbili
                       "a pixel of this scene (" + sceneContents(scene) + ") may need " +
                           std::to_string(smallestDispatchPasses(passes)) +
                           " loop passes for a single sample and light (its camera ray and its longest shadow test), "
-                          "and " + device.name + " ends a shader's loops after " +
-                          std::to_string(plan.loopPassLimit) + " in all: it cannot render it right",
+                          "and " +
+                          device.name + " ends a shader's loops after " + std::to_string(plan.loopPassLimit) +
+                          " in all: it cannot render it right",
                       "use --backend cpu");
 }
 

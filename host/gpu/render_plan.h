@@ -25,14 +25,14 @@ struct CandidateLists;  // accel/candidate_lists.h
 
 // How the scene's data reaches the kernel.
 enum class SceneLayout {
-    Uniform,     // small scenes: uniform buffers, read at constant indices by a generated kernel
+    Uniform,            // small scenes: uniform buffers, read at constant indices by a generated kernel
     Storage,            // storage buffers, every node for every ray (the data-driven kernel)
     StorageCandidates,  // storage buffers, and per direction the spheres a ray can meet (candidate_lists.h)
 };
 
 struct DeviceAbilities {
-    std::string name;            // for messages
-    bool float64 = false;        // shaderFloat64
+    std::string name;                                   // for messages
+    bool float64 = false;                               // shaderFloat64
     std::uint32_t maxTexelBufferElements = UINT32_MAX;  // candidate lists: their largest texel buffer
 };
 

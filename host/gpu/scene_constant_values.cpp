@@ -29,24 +29,43 @@ double lightNodePower(const gpu::GpuLight<Real>& light, const gpu::GpuNode<Real>
 }  // namespace
 
 template <typename Real>
-std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& constants, const gpu::GpuScene<Real>& scene) {
+std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& constants,
+                                           const gpu::GpuScene<Real>& scene) {
     std::vector<std::byte> bytes;
     for (const SceneConstant& constant : constants) {
         const std::uint32_t i = constant.index;
         for (std::uint32_t c = 0; c < constant.components; ++c) {
             switch (constant.field) {
-                case Field::Geometry: append<Real>(bytes, scene.nodes[i].geometry[c]); break;
-                case Field::EyePower: append<Real>(bytes, scene.nodes[i].eyePower); break;
-                case Field::Color1: append<float>(bytes, scene.nodes[i].color1[c]); break;
-                case Field::Color2: append<float>(bytes, scene.nodes[i].color2[c]); break;
-                case Field::Checker: append<Real>(bytes, scene.nodes[i].checker[c]); break;
-                case Field::LightPosition: append<Real>(bytes, scene.lights[i].position[c]); break;
-                case Field::LightPower: append<Real>(bytes, scene.lights[i].power[c]); break;
+                case Field::Geometry:
+                    append<Real>(bytes, scene.nodes[i].geometry[c]);
+                    break;
+                case Field::EyePower:
+                    append<Real>(bytes, scene.nodes[i].eyePower);
+                    break;
+                case Field::Color1:
+                    append<float>(bytes, scene.nodes[i].color1[c]);
+                    break;
+                case Field::Color2:
+                    append<float>(bytes, scene.nodes[i].color2[c]);
+                    break;
+                case Field::Checker:
+                    append<Real>(bytes, scene.nodes[i].checker[c]);
+                    break;
+                case Field::LightPosition:
+                    append<Real>(bytes, scene.lights[i].position[c]);
+                    break;
+                case Field::LightPower:
+                    append<Real>(bytes, scene.lights[i].power[c]);
+                    break;
                 case Field::LightNodePower:
                     append<Real>(bytes, Real(lightNodePower(scene.lights[i], scene.nodes[constant.node])));
                     break;
-                case Field::Ambient: append<float>(bytes, scene.frame.ambient[c]); break;
-                case Field::Background: append<float>(bytes, scene.frame.background[c]); break;
+                case Field::Ambient:
+                    append<float>(bytes, scene.frame.ambient[c]);
+                    break;
+                case Field::Background:
+                    append<float>(bytes, scene.frame.background[c]);
+                    break;
             }
         }
     }

@@ -13,6 +13,7 @@ namespace hexray {
 // The constants' values as the driver takes them: each component a Real (the scene's packed
 // width) or a float, in order, no padding.
 template <typename Real>
-std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& constants, const gpu::GpuScene<Real>& scene);
+std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& constants,
+                                           const gpu::GpuScene<Real>& scene);
 
 }  // namespace hexray

@@ -262,8 +262,8 @@ SceneCode codeForClass(const SceneCode& code, const TileWork& work) {
 
 WorkPerPixel workPerPixel(const SceneCode& code) {
     WorkPerPixel work;
-    work.primaryTests = double(std::count_if(code.nodes.begin(), code.nodes.end(),
-                                             [](const NodeCode& node) { return node.cameraTested; }));
+    work.primaryTests = double(
+        std::count_if(code.nodes.begin(), code.nodes.end(), [](const NodeCode& node) { return node.cameraTested; }));
     for (const std::vector<ShadowTest>& tests : code.shadowTests) {
         const auto tested = std::count_if(tests.begin(), tests.end(), [](const ShadowTest& t) { return t.tested; });
         work.shadowRays += tested > 0 ? 1.0 : 0.0;
@@ -281,7 +281,8 @@ WorkPerPixel workPerPixel(const SceneCode& code, const TileClassification& class
     for (std::uint32_t tile = 0; tile < classification.classOfTile.size(); ++tile) {
         const std::uint32_t x = tile % classification.tilesX;
         const std::uint32_t y = tile / classification.tilesX;
-        const double pixels = double(std::min(kTile, image.width - x * kTile)) * std::min(kTile, image.height - y * kTile);
+        const double pixels =
+            double(std::min(kTile, image.width - x * kTile)) * std::min(kTile, image.height - y * kTile);
         const WorkPerPixel& work = perClass[classification.classOfTile[tile]];
         total.primaryTests += work.primaryTests * pixels;
         total.shadowRays += work.shadowRays * pixels;

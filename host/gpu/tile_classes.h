@@ -28,8 +28,8 @@ struct TileWork {
 struct TileClassification {
     std::uint32_t tilesX = 0;
     std::uint32_t tilesY = 0;
-    std::vector<TileWork> classes;             // at most the maximum asked for
-    std::vector<std::uint32_t> classOfTile;    // tilesX * tilesY entries
+    std::vector<TileWork> classes;           // at most the maximum asked for
+    std::vector<std::uint32_t> classOfTile;  // tilesX * tilesY entries
 };
 
 // The classification for a generated kernel's scene (`code` is its unculled work), with at most

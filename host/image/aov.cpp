@@ -50,8 +50,8 @@ StagedAovs::StagedAovs(const fs::path& directory, const AovLayout& layout) : dir
         createDirectory();
         removeStaleTemporaries(directory_);
         // Inside the target directory, so that commit() renames within one file system.
-        RegisteredTemporary staging = createTemporary(
-            (directory_ / std::string(kAovStagingPrefix)).string() + "XXXXXX", RemovedOnSignal::Kind::Directory);
+        RegisteredTemporary staging = createTemporary((directory_ / std::string(kAovStagingPrefix)).string() + "XXXXXX",
+                                                      RemovedOnSignal::Kind::Directory);
         if (staging.descriptor < 0) {
             fail(directory_, "cannot create a staging directory", std::generic_category().message(errno));
         }

@@ -40,12 +40,24 @@ Rgb idColour(std::uint32_t id) {
     const double x = 1.0 - std::abs(std::fmod(hue, 2.0) - 1.0);
     std::array<double, 3> rgb{};
     switch (int(hue)) {
-        case 0: rgb = {1, x, 0}; break;
-        case 1: rgb = {x, 1, 0}; break;
-        case 2: rgb = {0, 1, x}; break;
-        case 3: rgb = {0, x, 1}; break;
-        case 4: rgb = {x, 0, 1}; break;
-        default: rgb = {1, 0, x}; break;
+        case 0:
+            rgb = {1, x, 0};
+            break;
+        case 1:
+            rgb = {x, 1, 0};
+            break;
+        case 2:
+            rgb = {0, 1, x};
+            break;
+        case 3:
+            rgb = {0, x, 1};
+            break;
+        case 4:
+            rgb = {x, 0, 1};
+            break;
+        default:
+            rgb = {1, 0, x};
+            break;
     }
     return {std::uint8_t(55 + 200 * rgb[0]), std::uint8_t(55 + 200 * rgb[1]), std::uint8_t(55 + 200 * rgb[2])};
 }
@@ -73,7 +85,8 @@ AovSetWriter::AovSetWriter(const std::filesystem::path& directory, const AovLayo
     open("depth", {"Y"}, false);
     open("normal", {"R", "G", "B"});
     open("object-id", {"Y"});
-    for (std::size_t light = 0; light < std::min<std::size_t>(layout.lightCount, PixelClass::kClassifiedLights); ++light) {
+    for (std::size_t light = 0; light < std::min<std::size_t>(layout.lightCount, PixelClass::kClassifiedLights);
+         ++light) {
         open("light-" + std::to_string(light), {"Y"});
     }
     if (layout.withMargins) {
@@ -84,7 +97,8 @@ AovSetWriter::AovSetWriter(const std::filesystem::path& directory, const AovLayo
 AovSetWriter::~AovSetWriter() = default;
 
 void AovSetWriter::open(const std::string& name, const std::vector<std::string>& channels, bool withPreview) {
-    File file{name, std::make_unique<ExrRowWriter>(directory_ / (name + ".exr"), layout_.width, layout_.height, channels),
+    File file{name,
+              std::make_unique<ExrRowWriter>(directory_ / (name + ".exr"), layout_.width, layout_.height, channels),
               nullptr};
     if (withPreview) {
         file.preview = std::make_unique<PngRowWriter>(directory_ / (name + ".png"), layout_.width, layout_.height);
@@ -129,8 +143,9 @@ void AovSetWriter::writeNormals(const AovBand& band) {
     files_[kNormal].preview->writeRows(previewRows(band.normals.size(), [&](std::size_t i) {
         Rgb rgb{};
         for (int c = 0; c < 3; ++c) {
-            rgb[c] = isBackground(band.classes[i]) ? 0
-                                                   : std::uint8_t(std::lround(127.5 * (double(band.normals[i][c]) + 1.0)));
+            rgb[c] = isBackground(band.classes[i])
+                         ? 0
+                         : std::uint8_t(std::lround(127.5 * (double(band.normals[i][c]) + 1.0)));
         }
         return rgb;
     }));

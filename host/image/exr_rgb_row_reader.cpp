@@ -17,8 +17,8 @@ namespace {
 constexpr std::array<const char*, 3> kChannels = {"R", "G", "B"};
 
 const char* compressionName(exr_compression_t compression) {
-    static constexpr std::array<const char*, 10> kNames = {"none", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24",
-                                                           "B44", "B44A", "DWAA", "DWAB"};
+    static constexpr std::array<const char*, 10> kNames = {"none",  "RLE", "ZIPS", "ZIP",  "PIZ",
+                                                           "PXR24", "B44", "B44A", "DWAA", "DWAB"};
     return std::size_t(compression) < kNames.size() ? kNames[std::size_t(compression)] : "an unknown method";
 }
 
@@ -77,9 +77,7 @@ struct ExrRgbRowReader::Decoder {
         }
     }
 
-    [[noreturn]] void fail(const std::string& why) const {
-        throw ImageIoError(file.name() + ": " + why);
-    }
+    [[noreturn]] void fail(const std::string& why) const { throw ImageIoError(file.name() + ": " + why); }
     void check(exr_result_t result) const {
         if (result == EXR_ERR_OUT_OF_MEMORY) {
             throw std::bad_alloc();

@@ -139,8 +139,8 @@ struct ExrRowWriter::Encoder {
 
     // Overwrites the text of the note `replacement.key` in the header written.
     void replaceText(const ImageNote& replacement) {
-        const auto note = std::find_if(notes.begin(), notes.end(),
-                                       [&](const ImageNote& n) { return n.key == replacement.key; });
+        const auto note =
+            std::find_if(notes.begin(), notes.end(), [&](const ImageNote& n) { return n.key == replacement.key; });
         if (note == notes.end() || note->text.size() != replacement.text.size()) {
             throw std::invalid_argument("ExrRowWriter::finish: no note " + replacement.key + " of that length");
         }
@@ -172,9 +172,8 @@ ExrRowWriter::ExrRowWriter(const std::filesystem::path& path, std::uint32_t widt
     : encoder_(std::make_unique<Encoder>(path, width, height, channelNames, notes)) {
     Encoder& e = *encoder_;
     e.stream.capturing = true;  // OpenEXR writes the header as the file is created
-    e.guard([&] {
-        e.exr = std::make_unique<Imf::OutputFile>(e.stream, headerFor(width, height, channelNames, notes));
-    });
+    e.guard(
+        [&] { e.exr = std::make_unique<Imf::OutputFile>(e.stream, headerFor(width, height, channelNames, notes)); });
     e.stream.capturing = false;
 }
 
@@ -188,10 +187,11 @@ void ExrRowWriter::writeRows(std::uint32_t rows, const std::vector<std::span<con
     Imf::FrameBuffer frame;
     for (std::size_t c = 0; c < channels.size(); ++c) {
         if (channels[c].size() != std::size_t(rows) * e.width) {
-            throw std::invalid_argument("ExrRowWriter::writeRows: channel " + e.channelNames[c] + " has the wrong size");
+            throw std::invalid_argument("ExrRowWriter::writeRows: channel " + e.channelNames[c] +
+                                        " has the wrong size");
         }
-        frame.insert(e.channelNames[c], Imf::Slice::Make(Imf::FLOAT, channels[c].data(), Imath::V2i(0, int(e.rowsWritten)),
-                                                         e.width, rows));
+        frame.insert(e.channelNames[c], Imf::Slice::Make(Imf::FLOAT, channels[c].data(),
+                                                         Imath::V2i(0, int(e.rowsWritten)), e.width, rows));
     }
     e.guard([&] {
         e.exr->setFrameBuffer(frame);

@@ -134,7 +134,7 @@ void PngRowWriter::finish(const std::vector<ImageNote>& closingNotes) {
         e.check(spng_set_unknown_chunks(e.context.get(), chunks.data(), std::uint32_t(chunks.size())));
     }
     e.check(spng_encode_chunks(e.context.get()));  // the closing notes and IEND
-    e.context.reset();  // release before closing the file
+    e.context.reset();                             // release before closing the file
     e.file.commit();
 }
 

@@ -11,13 +11,11 @@ namespace hexray {
 
 struct PixelClass {
     static constexpr std::uint32_t kBackground = gpu::BACKGROUND;
-    static constexpr std::uint32_t kOddCheckerBit = gpu::ODD_CHECKER_BIT;  // checker-shaded, in a color2 cell
+    static constexpr std::uint32_t kOddCheckerBit = gpu::ODD_CHECKER_BIT;       // checker-shaded, in a color2 cell
     static constexpr std::uint32_t kClassifiedLights = gpu::CLASSIFIED_LIGHTS;  // lights 0..30 have a bit each
 
     // Bit for "light `index` contributes to this pixel" (faces it and is not shadowed).
-    static constexpr std::uint32_t litBit(std::uint32_t index) {
-        return index < kClassifiedLights ? 2u << index : 0u;
-    }
+    static constexpr std::uint32_t litBit(std::uint32_t index) { return index < kClassifiedLights ? 2u << index : 0u; }
 
     std::uint32_t node = kBackground;  // index into Scene::nodes of the visible node
     std::uint32_t flags = 0;

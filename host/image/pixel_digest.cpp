@@ -15,8 +15,7 @@ void PixelDigest::addRgb8Rows(std::span<const std::uint8_t> rgbRows) {
     hash_.add(std::string_view(reinterpret_cast<const char*>(rgbRows.data()), rgbRows.size()));
 }
 
-void PixelDigest::addFloatRows(std::span<const float> red, std::span<const float> green,
-                               std::span<const float> blue) {
+void PixelDigest::addFloatRows(std::span<const float> red, std::span<const float> green, std::span<const float> blue) {
     if (green.size() != red.size() || blue.size() != red.size()) {
         throw std::invalid_argument("PixelDigest::addFloatRows: channels of different sizes");
     }

@@ -26,8 +26,8 @@ struct TextChunk {
 
 struct PngRowReader::Decoder {
     const ReadOnlyFile& file;
-    std::uint64_t offset = 0;       // the next byte libspng reads
-    std::string readFailure;        // why the file could not be read, if it could not
+    std::uint64_t offset = 0;  // the next byte libspng reads
+    std::string readFailure;   // why the file could not be read, if it could not
     std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> context{nullptr, spng_ctx_free};
     std::vector<TextChunk> textsBefore;
     std::vector<TextChunk> textsAfter;
@@ -85,7 +85,8 @@ struct PngRowReader::Decoder {
                                     const char* where) const {
         std::optional<std::string> text;
         for (const TextChunk& chunk : chunks) {
-            if (chunk.keyword != key) continue;
+            if (chunk.keyword != key)
+                continue;
             if (text) {
                 throw ImageIoError(file.name() + ": two " + key + " text chunks " + where + " the pixels");
             }
@@ -106,9 +107,10 @@ PngRowReader::PngRowReader(const ReadOnlyFile& file) : decoder_(std::make_unique
     spng_ihdr header{};
     d.check(spng_get_ihdr(d.context.get(), &header));
     if (header.interlace_method != SPNG_INTERLACE_NONE) {
-        throw ImageIoError(file.name() + ": an interlaced PNG, which merge does not read (it reads a band of rows at "
-                                         "a time, and interlaced rows come in seven passes): save it without "
-                                         "interlacing, as hexray wrote it");
+        throw ImageIoError(file.name() +
+                           ": an interlaced PNG, which merge does not read (it reads a band of rows at "
+                           "a time, and interlaced rows come in seven passes): save it without "
+                           "interlacing, as hexray wrote it");
     }
     width_ = header.width;
     height_ = header.height;

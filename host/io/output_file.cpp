@@ -39,14 +39,19 @@ void keepAttributes(int descriptor, const struct stat& existing) {
 
 }  // namespace
 
-OutputFile::OutputFile(const std::string& path)
-    : name_(displayName(path)), target_(resolveOutputTarget(path)) {
+OutputFile::OutputFile(const std::string& path) : name_(displayName(path)), target_(resolveOutputTarget(path)) {
     int descriptor = -1;
     switch (target_.kind) {
-        case OutputKind::StandardOutput: descriptor = ::fcntl(standardOutputDescriptor(), F_DUPFD_CLOEXEC, 3); break;
-        case OutputKind::Direct: descriptor = ::open(target_.path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC); break;
+        case OutputKind::StandardOutput:
+            descriptor = ::fcntl(standardOutputDescriptor(), F_DUPFD_CLOEXEC, 3);
+            break;
+        case OutputKind::Direct:
+            descriptor = ::open(target_.path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+            break;
         case OutputKind::Replace:
-        case OutputKind::Create: openTemporary(); return;
+        case OutputKind::Create:
+            openTemporary();
+            return;
     }
     if (descriptor < 0 || !(file_ = ::fdopen(descriptor, "wb"))) {
         const std::string why = systemError();

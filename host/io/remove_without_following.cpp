@@ -19,7 +19,8 @@ std::vector<std::string> namesIn(int descriptor) {
     const int copy = ::dup(descriptor);
     DIR* directory = copy >= 0 ? ::fdopendir(copy) : nullptr;
     if (!directory) {
-        if (copy >= 0) ::close(copy);
+        if (copy >= 0)
+            ::close(copy);
         return names;
     }
     while (const dirent* entry = ::readdir(directory)) {

@@ -39,8 +39,8 @@ std::mutex slotsMutex;  // serialises registration, never taken by the handler
 
 // Every catchable signal whose default action ends the process, but the faults (see the header);
 // the real-time signals (SIGRTMIN..SIGRTMAX, not constants) are added where handlers are installed.
-constexpr std::array kSignals = {SIGHUP,  SIGINT,    SIGQUIT, SIGPIPE, SIGALRM, SIGTERM, SIGUSR1, SIGUSR2,
-                                 SIGSTKFLT, SIGIO, SIGPROF, SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR};
+constexpr std::array kSignals = {SIGHUP,    SIGINT, SIGQUIT, SIGPIPE,   SIGALRM, SIGTERM, SIGUSR1, SIGUSR2,
+                                 SIGSTKFLT, SIGIO,  SIGPROF, SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR};
 
 // Empties a directory of hexray's flat staging layout and removes it, with system calls only
 // (opendir and readdir may allocate).
@@ -174,9 +174,12 @@ std::optional<RemovedOnSignal::Kind> stopAtTemporaryKind() {
     static const std::optional<RemovedOnSignal::Kind> kind = []() -> std::optional<RemovedOnSignal::Kind> {
         const char* value = std::getenv("HEXRAY_TEST_STOP_AT_TEMPORARY");
         const std::string text = value ? value : "";
-        if (text.empty()) return std::nullopt;
-        if (text == "file") return RemovedOnSignal::Kind::File;
-        if (text == "directory") return RemovedOnSignal::Kind::Directory;
+        if (text.empty())
+            return std::nullopt;
+        if (text == "file")
+            return RemovedOnSignal::Kind::File;
+        if (text == "directory")
+            return RemovedOnSignal::Kind::Directory;
         throw std::invalid_argument("HEXRAY_TEST_STOP_AT_TEMPORARY: \"" + text + "\" is neither file nor directory");
     }();
     return kind;

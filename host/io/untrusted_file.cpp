@@ -11,11 +11,16 @@ namespace hexray {
 namespace {
 
 std::string kindOf(mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
+    if (S_ISDIR(mode))
+        return "a directory";
+    if (S_ISFIFO(mode))
+        return "a FIFO";
+    if (S_ISCHR(mode))
+        return "a character device";
+    if (S_ISBLK(mode))
+        return "a block device";
+    if (S_ISSOCK(mode))
+        return "a socket";
     return "not a file";
 }
 
@@ -30,9 +35,9 @@ UntrustedFile::UntrustedFile(const std::filesystem::path& path, std::uint64_t ma
     if (descriptor_ < 0) {
         const int error = errno;
         absent_ = error == ENOENT || error == ENOTDIR;
-        problem_ = absent_            ? "nothing is there"
-                   : error == ELOOP   ? "it is a symbolic link"
-                                      : std::string("it cannot be opened: ") + std::strerror(error);
+        problem_ = absent_          ? "nothing is there"
+                   : error == ELOOP ? "it is a symbolic link"
+                                    : std::string("it cannot be opened: ") + std::strerror(error);
         return;
     }
     if (::fstat(descriptor_, &status_) != 0) {

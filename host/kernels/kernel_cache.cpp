@@ -35,7 +35,8 @@ std::uint64_t parseSize(std::string_view text) {
         value > (std::numeric_limits<std::uint64_t>::max() >> shift)) {
         throw KernelCacheSettingError(std::string(kMaxSizeVariable) +
                                       ": must be a size in bytes, or with a suffix K, M or G (e.g. 128M; 0 turns "
-                                      "the kernel cache off) (got '" + std::string(text) + "')");
+                                      "the kernel cache off) (got '" +
+                                      std::string(text) + "')");
     }
     return value << shift;
 }

@@ -11,8 +11,8 @@ namespace hexray {
 
 struct KernelCacheFile {
     std::string name;
-    bool regular = false;        // a regular file (not a link, directory, FIFO, ...)
-    std::uint64_t bytes = 0;     // regular files only
+    bool regular = false;                      // a regular file (not a link, directory, FIFO, ...)
+    std::uint64_t bytes = 0;                   // regular files only
     std::filesystem::file_time_type lastUsed;  // its modification time
 };
 

@@ -10,8 +10,7 @@
 namespace hexray {
 
 std::string kernelCacheKey(const std::string& source) {
-    return "hexray " + buildVersion() + "\n" +
-           shaderCompilerFingerprint() + "\n" + source;
+    return "hexray " + buildVersion() + "\n" + shaderCompilerFingerprint() + "\n" + source;
 }
 
 KernelCompiler::KernelCompiler(KernelCache cache, std::size_t keptKernels)
@@ -28,7 +27,8 @@ std::vector<std::uint32_t> KernelCompiler::compileAndStore(const std::string& so
 std::span<const std::uint32_t> KernelCompiler::spirv(const Kernel& kernel, KernelBuild* build) {
     KernelBuild record;
     if (!kernel.code) {
-        if (build) *build = record;
+        if (build)
+            *build = record;
         return kernel.spirv;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -45,7 +45,8 @@ std::span<const std::uint32_t> KernelCompiler::spirv(const Kernel& kernel, Kerne
         found = &compiled_.insert(source, std::move(compiled));
     }
     record.generatedId = found->id;
-    if (build) *build = record;
+    if (build)
+        *build = record;
     return found->spirv;
 }
 
@@ -61,7 +62,8 @@ std::span<const std::uint32_t> KernelCompiler::recompile(const Kernel& kernel, c
     Compiled* held = compiled_.find(source);
     held = held ? &(*held = std::move(compiled)) : &compiled_.insert(source, std::move(compiled));
     record.generatedId = held->id;
-    if (build) *build = record;
+    if (build)
+        *build = record;
     return held->spirv;
 }
 
@@ -73,9 +75,8 @@ bool KernelCompiler::holds(const std::uint32_t* spirv) const {
 
 bool KernelCompiler::fromDiskCache(const std::uint32_t* spirv) const {
     bool found = false;
-    compiled_.forEach([&](const Compiled& compiled) {
-        found = found || (compiled.spirv.data() == spirv && compiled.fromDiskCache);
-    });
+    compiled_.forEach(
+        [&](const Compiled& compiled) { found = found || (compiled.spirv.data() == spirv && compiled.fromDiskCache); });
     return found;
 }
 

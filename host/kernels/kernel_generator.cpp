@@ -80,15 +80,18 @@ private:
         return set;
     }
     // The nodes camera rays test: every node, but in a kernel for a tile class.
-    NodeSet all() const { return where([](const NodeCode& n) { return n.cameraTested; }); }
-    NodeSet lit() const { return all() & where([](const NodeCode& n) { return n.shader != gpu::SHADER_CONSTANT; }); }
+    NodeSet all() const {
+        return where([](const NodeCode& n) { return n.cameraTested; });
+    }
+    NodeSet lit() const {
+        return all() & where([](const NodeCode& n) { return n.shader != gpu::SHADER_CONSTANT; });
+    }
     NodeSet planes(NodeSet within) const {
         return within & where([](const NodeCode& n) { return n.geometry == gpu::GEOMETRY_PLANE; });
     }
     NodeSet spheres(NodeSet within, SphereTest test) const {
-        return within & where([test](const NodeCode& n) {
-                   return n.geometry == gpu::GEOMETRY_SPHERE && n.sphereTest == test;
-               });
+        return within &
+               where([test](const NodeCode& n) { return n.geometry == gpu::GEOMETRY_SPHERE && n.sphereTest == test; });
     }
     NodeSet shaded(std::uint32_t shader) const {
         return all() & where([shader](const NodeCode& n) { return n.shader == shader; });
@@ -107,7 +110,8 @@ private:
                 out_ << "    " << type << " " << name << " = " << value(i, what) << ";\n";
                 first = false;
             } else {
-                out_ << "    " << name << " = hit.node == " << u(i) << " ? " << value(i, what) << " : " << name << ";\n";
+                out_ << "    " << name << " = hit.node == " << u(i) << " ? " << value(i, what) << " : " << name
+                     << ";\n";
             }
         }
     }
@@ -149,7 +153,8 @@ private:
             std::string parts;
             for (std::uint32_t c = 0; c < constant.components; ++c) {
                 const std::string part = constant.name + "_" + std::to_string(c);
-                out_ << "layout(constant_id = " << id++ << ") const " << scalar << " " << part << " = " << zero << ";\n";
+                out_ << "layout(constant_id = " << id++ << ") const " << scalar << " " << part << " = " << zero
+                     << ";\n";
                 parts += (c ? ", " : "") + part;
             }
             // A macro: glslang takes no constant vector of double specialization constants.
@@ -169,9 +174,12 @@ private:
         const std::string center = g + ".xyz";
         const std::string radius = g + ".w";
         switch (n.sphereTest) {
-            case SphereTest::Fast: return call("sphereDistanceFast", "ray", center, radius);
-            case SphereTest::Textbook: return call("sphereDistanceTextbook", "ray", center, radius);
-            case SphereTest::Robust: break;
+            case SphereTest::Fast:
+                return call("sphereDistanceFast", "ray", center, radius);
+            case SphereTest::Textbook:
+                return call("sphereDistanceTextbook", "ray", center, radius);
+            case SphereTest::Robust:
+                break;
         }
         return call("sphereDistance", "ray", center, radius, value(i, "EYE_POWER"));
     }
@@ -243,9 +251,8 @@ private:
         }
         // Shadow rays leave out a sphere the camera sees from outside (convexity), not one it sees
         // from inside: from there they start off the sphere.
-        const NodeSet inside = set & where([](const NodeCode& n) {
-                                   return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside;
-                               });
+        const NodeSet inside =
+            set & where([](const NodeCode& n) { return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside; });
         if (inside && !textbook()) {
             select("vec4r", "insideSphere", inside, "GEOMETRY");
             out_ << "    s.shadowOrigin = " << contains(inside)
@@ -287,8 +294,8 @@ private:
     // nor in the textbook formulation, which pushes them off by a fixed epsilon.
     bool shadowsFromThePoint() const {
         return !textbook() && std::none_of(code_.nodes.begin(), code_.nodes.end(), [](const NodeCode& n) {
-                   return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside;
-               });
+            return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside;
+        });
     }
 
     void lightBlock(std::uint32_t light) {

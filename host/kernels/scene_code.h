@@ -18,8 +18,8 @@ enum class SphereTest {
 
 // What a generated kernel does for one node.
 struct NodeCode {
-    std::uint32_t geometry = 0;  // gpu::GEOMETRY_*
-    std::uint32_t shader = 0;    // gpu::SHADER_*
+    std::uint32_t geometry = 0;                  // gpu::GEOMETRY_*
+    std::uint32_t shader = 0;                    // gpu::SHADER_*
     SphereTest sphereTest = SphereTest::Robust;  // spheres only
     // Spheres: the eye is outside, so a point the camera sees on it faces away from the sphere
     // and the sphere cannot shadow it (convexity); its shadow rays skip it.

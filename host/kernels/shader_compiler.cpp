@@ -72,8 +72,8 @@ const std::string& shaderCompilerFingerprint() {
                        std::to_string(file.text.size()) + ":" + std::string(file.text);
         }
         return "glslang " + std::to_string(version.major) + "." + std::to_string(version.minor) + "." +
-               std::to_string(version.patch) + (version.flavor ? std::string("-") + version.flavor : "") +
-               ", " + kShaderTarget + ", library " + sha256Hex(library);
+               std::to_string(version.patch) + (version.flavor ? std::string("-") + version.flavor : "") + ", " +
+               kShaderTarget + ", library " + sha256Hex(library);
     }();
     return fingerprint;
 }

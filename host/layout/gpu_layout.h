@@ -49,8 +49,8 @@ struct GpuNode {
     // camera ray needs and float cannot form when the eye is close to a large sphere; planes: 0.
     Real eyePower;
     Real unused[3];
-    glm::vec4 color1;         // .rgb: constant / lambert colour, checker's first colour
-    glm::vec4 color2;         // .rgb: checker's second colour
+    glm::vec4 color1;  // .rgb: constant / lambert colour, checker's first colour
+    glm::vec4 color2;  // .rgb: checker's second colour
     // Checker: .x = square size; .yz = the eye's fractional cell position (x, z) / size on a
     // plane (the integer part is folded into .w), .w = parity (0 or 1) of the eye's whole cells.
     RealVec4<Real> checker;
@@ -123,7 +123,7 @@ using GpuEncodedPixel = std::uint32_t;
 // The specialization constants every kernel takes (shaders/render_outputs.glsl), in id order.
 struct Specialization {
     std::uint32_t outputMode = OUTPUT_LINEAR_AND_CLASSES;  // OUTPUT_MODE_ID
-    std::uint32_t samplesPerPixel = 1;                      // SAMPLES_PER_PIXEL_ID
+    std::uint32_t samplesPerPixel = 1;                     // SAMPLES_PER_PIXEL_ID
 
     auto operator<=>(const Specialization&) const = default;
 };
@@ -153,16 +153,16 @@ using GpuAovPixel = glm::vec4;
 // pixel and sample, in its own units (see GpuAovPixel).
 template <typename Real>
 struct GpuTraceHeader {
-    glm::uvec4 request;             // .x, .y pixel; .z the sample to trace
-    glm::uvec4 result;              // .x 1 once written, .y hit node (0xffffffff: none), .z class flags
-    RealVec4<Real> rayOrigin;       // .xyz
-    RealVec4<Real> rayDirection;    // .xyz, unit length
-    RealVec4<Real> hitPosition;     // .xyz, .w = t
-    RealVec4<Real> hitNormal;       // .xyz shading normal (lit shaders only)
-    RealVec4<Real> shadowOrigin;    // .xyz where shadow rays start (lit shaders only)
-    glm::vec4 albedo;               // .rgb (lit shaders only)
-    glm::vec4 sampleColor;          // .rgb the traced sample's linear colour
-    glm::vec4 pixelColor;           // .rgb the pixel's linear colour (average of its samples)
+    glm::uvec4 request;           // .x, .y pixel; .z the sample to trace
+    glm::uvec4 result;            // .x 1 once written, .y hit node (0xffffffff: none), .z class flags
+    RealVec4<Real> rayOrigin;     // .xyz
+    RealVec4<Real> rayDirection;  // .xyz, unit length
+    RealVec4<Real> hitPosition;   // .xyz, .w = t
+    RealVec4<Real> hitNormal;     // .xyz shading normal (lit shaders only)
+    RealVec4<Real> shadowOrigin;  // .xyz where shadow rays start (lit shaders only)
+    glm::vec4 albedo;             // .rgb (lit shaders only)
+    glm::vec4 sampleColor;        // .rgb the traced sample's linear colour
+    glm::vec4 pixelColor;         // .rgb the pixel's linear colour (average of its samples)
 };
 
 // Then one entry per node (the candidates: values.x = t, or REAL_MAX for a miss) and one per

@@ -23,12 +23,14 @@ std::string quotedForMessage(const std::string& text) {
     using Json = nlohmann::json;
     const std::string shown = text.size() > kMaxShown ? text.substr(0, kMaxShown) : text;
     std::string result = Json(shown).dump(-1, ' ', false, Json::error_handler_t::replace);
-    if (shown.size() < text.size()) result += "...";
+    if (shown.size() < text.size())
+        result += "...";
     return printable(result);  // JSON leaves DEL and C1 controls as they are
 }
 
 std::string childPath(const std::string& parent, const std::string& key) {
-    if (!isIdentifier(key) || key.size() > kMaxShown) return parent + "[" + quotedForMessage(key) + "]";
+    if (!isIdentifier(key) || key.size() > kMaxShown)
+        return parent + "[" + quotedForMessage(key) + "]";
     return parent.empty() ? key : parent + "." + key;
 }
 
@@ -36,6 +38,8 @@ std::string elementPath(const std::string& parent, std::size_t index) {
     return parent + "[" + std::to_string(index) + "]";
 }
 
-std::string displayPath(const std::string& path) { return path.empty() ? "(root)" : path; }
+std::string displayPath(const std::string& path) {
+    return path.empty() ? "(root)" : path;
+}
 
 }  // namespace hexray

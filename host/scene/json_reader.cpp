@@ -5,8 +5,10 @@
 namespace hexray {
 
 std::string formatNumber(double value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "infinity" : "-infinity";
+    if (std::isnan(value))
+        return "nan";
+    if (std::isinf(value))
+        return value > 0 ? "infinity" : "-infinity";
     const double magnitude = std::fabs(value);
     const bool everyday = magnitude == 0.0 || (magnitude >= 1e-4 && magnitude < 1e15);
     char buffer[64];
@@ -16,10 +18,12 @@ std::string formatNumber(double value) {
 }
 
 std::string joined(std::vector<std::string> items, bool sorted) {
-    if (sorted) std::sort(items.begin(), items.end());
+    if (sorted)
+        std::sort(items.begin(), items.end());
     std::string result;
     for (const std::string& item : items) {
-        if (!result.empty()) result += ", ";
+        if (!result.empty())
+            result += ", ";
         result += item;
     }
     return result;
@@ -27,16 +31,24 @@ std::string joined(std::vector<std::string> items, bool sorted) {
 
 std::string describe(const Json& value) {
     switch (value.type()) {
-        case Json::value_t::null: return "null";
-        case Json::value_t::boolean: return value.get<bool>() ? "boolean true" : "boolean false";
-        case Json::value_t::string: return "string " + quotedForMessage(value.get<std::string>());
-        case Json::value_t::number_integer: return "number " + std::to_string(value.get<std::int64_t>());
-        case Json::value_t::number_unsigned: return "number " + std::to_string(value.get<std::uint64_t>());
-        case Json::value_t::number_float: return "number " + formatNumber(value.get<double>());
+        case Json::value_t::null:
+            return "null";
+        case Json::value_t::boolean:
+            return value.get<bool>() ? "boolean true" : "boolean false";
+        case Json::value_t::string:
+            return "string " + quotedForMessage(value.get<std::string>());
+        case Json::value_t::number_integer:
+            return "number " + std::to_string(value.get<std::int64_t>());
+        case Json::value_t::number_unsigned:
+            return "number " + std::to_string(value.get<std::uint64_t>());
+        case Json::value_t::number_float:
+            return "number " + formatNumber(value.get<double>());
         case Json::value_t::array:
             return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements");
-        case Json::value_t::object: return "an object";
-        default: return "an unsupported value";
+        case Json::value_t::object:
+            return "an object";
+        default:
+            return "an unsupported value";
     }
 }
 

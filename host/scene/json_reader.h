@@ -59,14 +59,16 @@ public:
     }
 
     std::string path() const {
-        if (!parent_) return path_;
+        if (!parent_)
+            return path_;
         return key_ ? childPath(parent_->path(), *key_) : elementPath(parent_->path(), index_);
     }
 
     // ---- objects
 
     void expectObject() const {
-        if (!value_.is_object()) failType("an object");
+        if (!value_.is_object())
+            failType("an object");
     }
 
     // A typo must not be silently ignored: every key must be one the format knows here.
@@ -80,14 +82,16 @@ public:
     }
 
     JsonReader at(std::string_view key) const {
-        if (auto found = find(key)) return *found;
+        if (auto found = find(key))
+            return *found;
         JsonReader(Json(), source_, childPath(path(), std::string(key))).fail("missing required field");
     }
 
     std::optional<JsonReader> find(std::string_view key) const {
         expectObject();
         const auto found = value_.find(key);
-        if (found == value_.end()) return std::nullopt;
+        if (found == value_.end())
+            return std::nullopt;
         return child(found.key(), *found);
     }
 
@@ -95,14 +99,16 @@ public:
     std::vector<std::pair<std::string, JsonReader>> members() const {
         expectObject();
         std::vector<std::pair<std::string, JsonReader>> result;
-        for (const auto& [key, value] : value_.items()) result.emplace_back(key, child(key, value));
+        for (const auto& [key, value] : value_.items())
+            result.emplace_back(key, child(key, value));
         return result;
     }
 
     // ---- arrays
 
     void expectArray() const {
-        if (!value_.is_array()) failType("an array");
+        if (!value_.is_array())
+            failType("an array");
     }
 
     std::vector<JsonReader> elements() const {
@@ -117,19 +123,25 @@ public:
     // ---- scalars
 
     double number(const Bounds& bounds = {}) const {
-        if (!value_.is_number()) failType("a number");
+        if (!value_.is_number())
+            failType("a number");
         const double value = value_.get<double>();
-        if (!std::isfinite(value)) fail("must be a finite number (got " + formatNumber(value) + ")");
-        const bool tooLow = (bounds.above && !(value > *bounds.above)) ||
-                            (bounds.atLeast && !(value >= *bounds.atLeast));
+        if (!std::isfinite(value))
+            fail("must be a finite number (got " + formatNumber(value) + ")");
+        const bool tooLow =
+            (bounds.above && !(value > *bounds.above)) || (bounds.atLeast && !(value >= *bounds.atLeast));
         const bool tooHigh = bounds.below && !(value < *bounds.below);
         if (tooLow || tooHigh) {
             std::vector<std::string> rules;
-            if (bounds.above) rules.push_back("> " + formatNumber(*bounds.above));
-            if (bounds.atLeast) rules.push_back(">= " + formatNumber(*bounds.atLeast));
-            if (bounds.below) rules.push_back("< " + formatNumber(*bounds.below));
+            if (bounds.above)
+                rules.push_back("> " + formatNumber(*bounds.above));
+            if (bounds.atLeast)
+                rules.push_back(">= " + formatNumber(*bounds.atLeast));
+            if (bounds.below)
+                rules.push_back("< " + formatNumber(*bounds.below));
             std::string rule;
-            for (const std::string& part : rules) rule += (rule.empty() ? "" : " and ") + part;
+            for (const std::string& part : rules)
+                rule += (rule.empty() ? "" : " and ") + part;
             fail("must be " + rule + " (got " + formatNumber(value) + ")");
         }
         return value;
@@ -137,21 +149,27 @@ public:
 
     // JSON has one number type, so 800.0 counts as an integer but 800.5 does not.
     std::int64_t integer(std::int64_t min, std::int64_t max) const {
-        if (!value_.is_number()) failType("an integer");
+        if (!value_.is_number())
+            failType("an integer");
         if (value_.is_number_unsigned()) {
             const std::uint64_t value = value_.get<std::uint64_t>();
-            if (value > std::uint64_t(max)) fail(rangeProblem(min, max, std::to_string(value)));
+            if (value > std::uint64_t(max))
+                fail(rangeProblem(min, max, std::to_string(value)));
             return checkRange(std::int64_t(value), min, max);
         }
-        if (value_.is_number_integer()) return checkRange(value_.get<std::int64_t>(), min, max);
+        if (value_.is_number_integer())
+            return checkRange(value_.get<std::int64_t>(), min, max);
         const double value = number();
-        if (value != std::floor(value)) fail("must be an integer (got " + formatNumber(value) + ")");
-        if (value < double(min) || value > double(max)) fail(rangeProblem(min, max, formatNumber(value)));
+        if (value != std::floor(value))
+            fail("must be an integer (got " + formatNumber(value) + ")");
+        if (value < double(min) || value > double(max))
+            fail(rangeProblem(min, max, formatNumber(value)));
         return std::int64_t(value);
     }
 
     std::string text() const {
-        if (!value_.is_string()) failType("a string");
+        if (!value_.is_string())
+            failType("a string");
         return value_.get<std::string>();
     }
 
@@ -160,15 +178,18 @@ public:
     Enum choice(const std::pair<const char*, Enum> (&options)[N]) const {
         const std::string name = text();
         for (const auto& [optionName, option] : options) {
-            if (name == optionName) return option;
+            if (name == optionName)
+                return option;
         }
         std::vector<std::string> names;
-        for (const auto& [optionName, option] : options) names.emplace_back(optionName);
+        for (const auto& [optionName, option] : options)
+            names.emplace_back(optionName);
         fail("unknown value " + quotedForMessage(name) + " (allowed: " + joined(names) + ")");
     }
 
     glm::dvec3 vec3() const {
-        if (!value_.is_array() || value_.size() != 3) failType("an array of 3 numbers [x, y, z]");
+        if (!value_.is_array() || value_.size() != 3)
+            failType("an array of 3 numbers [x, y, z]");
         const std::vector<JsonReader> xyz = elements();
         return {xyz[0].number(), xyz[1].number(), xyz[2].number()};
     }
@@ -176,14 +197,16 @@ public:
     // A length (a coordinate, height, radius or size) within the supported range (scene.h).
     double length(bool mayBeZero = true) const {
         const double value = number(mayBeZero ? Bounds{} : kPositive);
-        if (isSupportedLength(value, mayBeZero)) return value;
+        if (isSupportedLength(value, mayBeZero))
+            return value;
         failUnsupported(value, mayBeZero, kMinSceneLength, kMaxSceneLength, "lengths");
     }
 
     // A light's intensity: an irradiance at distance 1, so the square of a length.
     double intensity() const {
         const double value = number(kNonNegative);
-        if (value == 0.0 || (value >= kMinIntensity && value <= kMaxIntensity)) return value;
+        if (value == 0.0 || (value >= kMinIntensity && value <= kMaxIntensity))
+            return value;
         failUnsupported(value, true, kMinIntensity, kMaxIntensity, "intensities");
     }
 
@@ -198,13 +221,14 @@ public:
     Color colour() const {
         static const std::string kForms = "[r, g, b] with finite components >= 0, or \"#rrggbb\"";
         if (value_.is_string()) {
-            if (auto parsed = parseHexColour(value_.get<std::string>())) return *parsed;
+            if (auto parsed = parseHexColour(value_.get<std::string>()))
+                return *parsed;
         } else if (value_.is_array() && value_.size() == 3) {
             Color result;
             for (std::size_t i = 0; i < 3; ++i) {
                 const Json& component = value_[i];
-                const bool valid = component.is_number() && std::isfinite(component.get<double>()) &&
-                                   component.get<double>() >= 0.0;
+                const bool valid =
+                    component.is_number() && std::isfinite(component.get<double>()) && component.get<double>() >= 0.0;
                 if (!valid) {
                     JsonReader(component, *this, i)
                         .fail("colour component must be a finite number >= 0 (got " + describe(component) +
@@ -260,18 +284,21 @@ private:
     }
 
     std::int64_t checkRange(std::int64_t value, std::int64_t min, std::int64_t max) const {
-        if (value < min || value > max) fail(rangeProblem(min, max, std::to_string(value)));
+        if (value < min || value > max)
+            fail(rangeProblem(min, max, std::to_string(value)));
         return value;
     }
 
     static std::optional<Color> parseHexColour(const std::string& text) {
-        if (text.size() != 7 || text[0] != '#') return std::nullopt;
+        if (text.size() != 7 || text[0] != '#')
+            return std::nullopt;
         Color result;
         for (int channel = 0; channel < 3; ++channel) {
             unsigned byte = 0;
             const char* first = text.data() + 1 + 2 * channel;
             const auto parsed = std::from_chars(first, first + 2, byte, 16);  // accepts either case
-            if (parsed.ec != std::errc() || parsed.ptr != first + 2) return std::nullopt;
+            if (parsed.ec != std::errc() || parsed.ptr != first + 2)
+                return std::nullopt;
             result[channel] = double(byte) / 255.0;
         }
         return result;
@@ -279,10 +306,10 @@ private:
 
     const Json& value_;
     const std::string& source_;
-    std::string path_;                     // without a parent: the whole path
-    const JsonReader* parent_ = nullptr;   // with one: the path is the parent's, then
-    const std::string* key_ = nullptr;     // this key in an object,
-    std::size_t index_ = 0;                // or else this index in an array
+    std::string path_;                    // without a parent: the whole path
+    const JsonReader* parent_ = nullptr;  // with one: the path is the parent's, then
+    const std::string* key_ = nullptr;    // this key in an object,
+    std::size_t index_ = 0;               // or else this index in an array
 };
 
 }  // namespace hexray

@@ -14,7 +14,8 @@ PointLight readLight(const JsonReader& light) {
 }
 
 void LightReader::read(const Json& element, std::size_t index) {
-    if (firstProblem_) return;
+    if (firstProblem_)
+        return;
     try {
         lights_.push_back(readLight(JsonReader(element, list_, index)));
     } catch (const SceneError& problem) {
@@ -23,7 +24,8 @@ void LightReader::read(const Json& element, std::size_t index) {
 }
 
 std::vector<PointLight> LightReader::take() && {
-    if (firstProblem_) throw *firstProblem_;
+    if (firstProblem_)
+        throw *firstProblem_;
     return std::move(lights_).take();
 }
 

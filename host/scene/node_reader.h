@@ -82,7 +82,7 @@ private:
 
     NodeReader* nodes_;
     // What the parser has reported of the element so far.
-    int depth_ = 0;  // 0: between elements, 1: in the node, 2: in its geometry, 3: in the centre
+    int depth_ = 0;                 // 0: between elements, 1: in the node, 2: in its geometry, 3: in the centre
     Field expected_ = Field::None;  // the field whose value comes next
     std::array<bool, std::size_t(Field::Count)> seen_{};
     std::string shader_;

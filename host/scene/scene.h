@@ -53,10 +53,10 @@ inline bool isSupportedLength(double value, bool mayBeZero = true) {
 
 struct CameraSettings {
     glm::dvec3 position{0.0};
-    double yawDegrees = 0.0;    // + turns the view toward -X
-    double pitchDegrees = 0.0;  // + looks up (+Y)
-    double rollDegrees = 0.0;   // + tips the up vector toward +X
-    double fovDegrees = 90.0;   // across the frame's diagonal, in (0, 180)
+    double yawDegrees = 0.0;       // + turns the view toward -X
+    double pitchDegrees = 0.0;     // + looks up (+Y)
+    double rollDegrees = 0.0;      // + tips the up vector toward +X
+    double fovDegrees = 90.0;      // across the frame's diagonal, in (0, 180)
     std::optional<double> aspect;  // width / height of the sheet; default: the image's
 };
 

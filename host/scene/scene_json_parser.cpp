@@ -40,19 +40,23 @@ std::string lineAndColumn(const std::string& text, std::size_t byte) {
 // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..." -> "syntax error ...".
 std::string parseErrorDetail(const std::string& what) {
     const std::size_t errorAt = what.find("parse error");
-    if (errorAt == std::string::npos) return what;
+    if (errorAt == std::string::npos)
+        return what;
     const std::size_t colon = what.find(": ", errorAt);
     std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
     // nlohmann quotes the whole token it stopped in ("last read: '...'"), which may be a huge string.
     const std::string kLastRead = "last read: '";
     const std::size_t tokenStart = detail.find(kLastRead);
-    if (tokenStart == std::string::npos) return detail;
+    if (tokenStart == std::string::npos)
+        return detail;
     const std::size_t first = tokenStart + kLastRead.size();
     const std::size_t expected = detail.rfind("'; expected");
     const std::size_t last = expected != std::string::npos && expected >= first ? expected : detail.rfind('\'');
-    if (last == std::string::npos || last < first || last - first <= kMaxShown) return detail;
+    if (last == std::string::npos || last < first || last - first <= kMaxShown)
+        return detail;
     std::size_t cut = first + kMaxShown;
-    while (cut > first && (static_cast<unsigned char>(detail[cut]) & 0xC0) == 0x80) --cut;  // whole UTF-8 characters
+    while (cut > first && (static_cast<unsigned char>(detail[cut]) & 0xC0) == 0x80)
+        --cut;  // whole UTF-8 characters
     return detail.substr(0, cut) + "..." + detail.substr(last);
 }
 
@@ -60,7 +64,8 @@ std::string parseErrorDetail(const std::string& what) {
 std::string overflowingLiteral(const std::string& what) {
     const std::size_t open = what.find('\'');
     const std::size_t close = what.rfind('\'');
-    if (open == std::string::npos || close <= open) return "a number too large for a double";
+    if (open == std::string::npos || close <= open)
+        return "a number too large for a double";
     return what.substr(open + 1, close - open - 1);
 }
 
@@ -106,12 +111,12 @@ public:
                         [&](NodeShortcut& shortcut) { return shortcut.binary(value); });
     }
     bool start_object(std::size_t size) {
-        return open(false, [] { return Json::object(); },
-                    [&](NodeShortcut& shortcut) { return shortcut.start_object(size); });
+        return open(
+            false, [] { return Json::object(); }, [&](NodeShortcut& shortcut) { return shortcut.start_object(size); });
     }
     bool start_array(std::size_t size) {
-        return open(true, [] { return Json::array(); },
-                    [&](NodeShortcut& shortcut) { return shortcut.start_array(size); });
+        return open(
+            true, [] { return Json::array(); }, [&](NodeShortcut& shortcut) { return shortcut.start_array(size); });
     }
     bool end_object() {
         return close([](NodeShortcut& shortcut) { return shortcut.end_object(); });
@@ -128,7 +133,8 @@ public:
         }
         const auto [slot, added] = object.container->get_ref<Json::object_t&>().try_emplace(key);
         // A document keeps one value per key; the earlier one would silently vanish.
-        if (!added) throw SceneError(source_ + ": " + pendingPath() + ": duplicate key");
+        if (!added)
+            throw SceneError(source_ + ": " + pendingPath() + ": duplicate key");
         object.slot = &slot->second;
         return true;
     }
@@ -179,7 +185,8 @@ private:
 
     // The pending value has begun: an array's next one gets the next index.
     void startValue() {
-        if (!frames_.empty() && frames_.back().isArray) ++frames_.back().nextIndex;
+        if (!frames_.empty() && frames_.back().isArray)
+            ++frames_.back().nextIndex;
     }
 
     // Puts a value where the innermost open container expects its next one.
@@ -221,7 +228,7 @@ private:
             return forward(*shortcut_);
         }
         const bool rootArray = isArray && frames_.size() == 1 && !frames_[0].isArray;
-        const Streamed streamed = !rootArray                               ? Streamed::No
+        const Streamed streamed = !rootArray                          ? Streamed::No
                                   : frames_[0].currentKey == "nodes"  ? Streamed::Nodes
                                   : frames_[0].currentKey == "lights" ? Streamed::Lights
                                                                       : Streamed::No;
@@ -244,7 +251,8 @@ private:
     // Called when a value is complete: if it is an element of the root's "nodes" or "lights", its
     // sink takes it and the document drops it.
     void handOverCompleteElement() {
-        if (frames_.size() != 2 || frames_[1].streamed == Streamed::No) return;
+        if (frames_.size() != 2 || frames_[1].streamed == Streamed::No)
+            return;
         Json& elements = *frames_[1].container;
         const ElementSink& take = frames_[1].streamed == Streamed::Nodes ? *takeNode_ : takeLight_;
         take(elements.back(), frames_[1].nextIndex - 1);
@@ -310,7 +318,8 @@ bool saxParse(const std::string& text, DocumentBuilder& builder, const ParseProg
     // Comments (// and /* */) are read as whitespace: people annotate their scenes.
     constexpr bool kStrict = true;
     constexpr bool kIgnoreComments = true;
-    if (!progress) return Json::sax_parse(text, &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
+    if (!progress)
+        return Json::sax_parse(text, &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
     return Json::sax_parse(ProgressIterator(text, 0, &progress), ProgressIterator(text, text.size(), &progress),
                            &builder, Json::input_format_t::json, kStrict, kIgnoreComments);
 }
@@ -327,7 +336,8 @@ Json parseSceneJson(const std::string& text, const std::string& sourceName, cons
 std::optional<Json> parseSceneJson(const std::string& text, const std::string& sourceName, NodeShortcut& shortcut,
                                    const ElementSink& takeLight, const ParseProgress& progress) {
     DocumentBuilder builder(text, sourceName, nullptr, &shortcut, takeLight);
-    if (!saxParse(text, builder, progress)) return std::nullopt;
+    if (!saxParse(text, builder, progress))
+        return std::nullopt;
     return builder.takeDocument();
 }
 

@@ -35,7 +35,8 @@ constexpr std::size_t kMaxSceneFileBytes = std::size_t{256} << 20;
 
 std::optional<std::string> sampleCountProblem(std::uint64_t width, std::uint64_t height, std::uint64_t spp) {
     const std::uint64_t samples = width * height * spp;  // <= 16384^2 * 1024: no overflow
-    if (samples <= kMaxImageSamples) return std::nullopt;
+    if (samples <= kMaxImageSamples)
+        return std::nullopt;
     return std::to_string(width) + " x " + std::to_string(height) + " pixels x " + std::to_string(spp) +
            " samples = " + std::to_string(samples) + " exceeds the limit of " + std::to_string(kMaxImageSamples) +
            " samples per image (lower spp or the image size)";
@@ -45,8 +46,7 @@ std::optional<std::string> sampleCountProblem(std::uint64_t width, std::uint64_t
 
 constexpr std::pair<const char*, Sampling> kSamplingNames[] = {{"center", Sampling::Center},
                                                                {"corner", Sampling::Corner}};
-constexpr std::pair<const char*, Encoding> kEncodingNames[] = {{"srgb", Encoding::Srgb},
-                                                               {"linear", Encoding::Linear}};
+constexpr std::pair<const char*, Encoding> kEncodingNames[] = {{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}};
 
 enum class ShaderType { Constant, Lambert, Checker };
 constexpr std::pair<const char*, ShaderType> kShaderTypes[] = {
@@ -100,11 +100,13 @@ CameraAngles readLookAt(const JsonReader& camera, const glm::dvec3& position) {
     const glm::dvec3 unitUp = unitVector(up);
     if (glm::length(glm::cross(unitVector(target - position), unitUp)) < kMinUpSine) {
         if (const auto given = camera.find("up")) {
-            given->fail("must not be parallel to the view direction lookAt - position (which way is up in the image "
-                        "would be undefined)");
+            given->fail(
+                "must not be parallel to the view direction lookAt - position (which way is up in the image "
+                "would be undefined)");
         }
-        lookAt.fail("the camera looks straight up or down, along the default up [0, 1, 0]: give camera.up across "
-                    "the view");
+        lookAt.fail(
+            "the camera looks straight up or down, along the default up [0, 1, 0]: give camera.up across "
+            "the view");
     }
     return lookAtAngles(position, target, unitUp);
 }
@@ -126,7 +128,8 @@ CameraSettings readCamera(const JsonReader& camera) {
         settings.rollDegrees = camera.numberOr("roll", settings.rollDegrees);
     }
     settings.fovDegrees = camera.numberOr("fov", settings.fovDegrees, Bounds{.above = 0.0, .below = 180.0});
-    if (auto aspect = camera.find("aspect")) settings.aspect = aspect->number(kPositive);
+    if (auto aspect = camera.find("aspect"))
+        settings.aspect = aspect->number(kPositive);
     return settings;
 }
 
@@ -139,7 +142,8 @@ Shader readShader(const JsonReader& shader) {
     }
     shader.rejectUnknownKeys({"type", "color"});
     const Color color = shader.at("color").colour();
-    if (type == ShaderType::Constant) return ConstantShader{color};
+    if (type == ShaderType::Constant)
+        return ConstantShader{color};
     return LambertShader{color};
 }
 
@@ -205,30 +209,36 @@ Scene loadSceneFile(const std::filesystem::path& path) {
 
 std::string readSceneFile(const std::filesystem::path& path) {
     std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) failToRead(path, EISDIR);  // fopen would accept it
+    if (std::filesystem::is_directory(path, ignored))
+        failToRead(path, EISDIR);  // fopen would accept it
 
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file) failToRead(path, errno);
+    if (!file)
+        failToRead(path, errno);
     std::string text;
     // A regular file's size is known: a huge one is refused unread, and the text never regrows.
     std::error_code noSize;
     if (const std::uintmax_t size = std::filesystem::file_size(path, noSize); !noSize) {
-        if (size > kMaxSceneFileBytes) failTooLarge(path);
+        if (size > kMaxSceneFileBytes)
+            failTooLarge(path);
         text.reserve(size);
     }
     char buffer[1 << 16];
     while (const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get())) {
         text.append(buffer, count);
-        if (text.size() > kMaxSceneFileBytes) failTooLarge(path);
+        if (text.size() > kMaxSceneFileBytes)
+            failTooLarge(path);
     }
-    if (std::ferror(file.get())) failToRead(path, errno);
+    if (std::ferror(file.get()))
+        failToRead(path, errno);
     return text;
 }
 
 void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, const std::string& source) {
     // `source` may already name the dimension (e.g. "--width"); otherwise the message must.
     const auto checkDimension = [&](std::int64_t value, const std::string& dimension, const std::string& other) {
-        if (value >= 1 && value <= std::int64_t{kMaxImageDimension}) return;
+        if (value >= 1 && value <= std::int64_t{kMaxImageDimension})
+            return;
         const bool sourceNamesIt =
             source.find(dimension) != std::string::npos && source.find(other) == std::string::npos;
         throw SceneError(source + ": " + (sourceNamesIt ? "" : dimension + " ") +

@@ -23,8 +23,10 @@ Json imageJson(const ImageSettings& image) {
 }
 
 Json cameraJson(const CameraSettings& camera) {
-    Json json = {{"position", triple(camera.position)}, {"yaw", camera.yawDegrees},
-                 {"pitch", camera.pitchDegrees},        {"roll", camera.rollDegrees},
+    Json json = {{"position", triple(camera.position)},
+                 {"yaw", camera.yawDegrees},
+                 {"pitch", camera.pitchDegrees},
+                 {"roll", camera.rollDegrees},
                  {"fov", camera.fovDegrees}};
     if (camera.aspect) {
         json["aspect"] = *camera.aspect;
@@ -80,8 +82,8 @@ std::string sceneToJson(const Scene& scene) {
         return Json{{"geometry", geometryJson(n.geometry)}, {"shader", scene.shaderNames.at(n.shaderIndex)}};
     };
     return "{\n  \"image\": " + imageJson(scene.image).dump() + ",\n  \"camera\": " + cameraJson(scene.camera).dump() +
-           ",\n  \"background\": " + triple(scene.background).dump() + ",\n  \"ambient\": " +
-           triple(scene.ambient).dump() + ",\n  \"lights\": " + arrayLines(scene.lights, light) +
+           ",\n  \"background\": " + triple(scene.background).dump() +
+           ",\n  \"ambient\": " + triple(scene.ambient).dump() + ",\n  \"lights\": " + arrayLines(scene.lights, light) +
            ",\n  \"shaders\": " + shaders + ",\n  \"nodes\": " + arrayLines(scene.nodes, node) + "\n}\n";
 }
 

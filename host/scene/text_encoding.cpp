@@ -19,16 +19,24 @@ std::optional<WideEncoding> wideEncoding(std::string_view text) {
     constexpr WideEncoding kUtf16Le{"UTF-16 (little-endian)", "UTF-16LE"};
     constexpr WideEncoding kUtf16Be{"UTF-16 (big-endian)", "UTF-16BE"};
     // Byte order marks, UTF-32's first: FF FE 00 00 also begins like UTF-16's.
-    if (startsWith(text, "\xFF\xFE\0\0"sv)) return kUtf32Le;
-    if (startsWith(text, "\0\0\xFE\xFF"sv)) return kUtf32Be;
-    if (startsWith(text, "\xFF\xFE"sv)) return kUtf16Le;
-    if (startsWith(text, "\xFE\xFF"sv)) return kUtf16Be;
+    if (startsWith(text, "\xFF\xFE\0\0"sv))
+        return kUtf32Le;
+    if (startsWith(text, "\0\0\xFE\xFF"sv))
+        return kUtf32Be;
+    if (startsWith(text, "\xFF\xFE"sv))
+        return kUtf16Le;
+    if (startsWith(text, "\xFE\xFF"sv))
+        return kUtf16Be;
     // An ASCII first character, with the NUL bytes a wider encoding gives it.
     const auto isNul = [&](std::size_t i) { return text[i] == '\0'; };
-    if (text.size() >= 4 && isNul(0) && isNul(1) && isNul(2) && !isNul(3)) return kUtf32Be;
-    if (text.size() >= 4 && !isNul(0) && isNul(1) && isNul(2) && isNul(3)) return kUtf32Le;
-    if (text.size() >= 2 && isNul(0) && !isNul(1)) return kUtf16Be;
-    if (text.size() >= 2 && !isNul(0) && isNul(1)) return kUtf16Le;
+    if (text.size() >= 4 && isNul(0) && isNul(1) && isNul(2) && !isNul(3))
+        return kUtf32Be;
+    if (text.size() >= 4 && !isNul(0) && isNul(1) && isNul(2) && isNul(3))
+        return kUtf32Le;
+    if (text.size() >= 2 && isNul(0) && !isNul(1))
+        return kUtf16Be;
+    if (text.size() >= 2 && !isNul(0) && isNul(1))
+        return kUtf16Le;
     return std::nullopt;
 }
 

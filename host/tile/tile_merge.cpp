@@ -34,7 +34,8 @@ std::string tileText(const TileStamp& stamp) {
 std::string differences(const TileStamp& piece, const TileStamp& first) {
     std::vector<std::string> parts;
     const auto compare = [&](bool same, const std::string& what, const std::string& mine, const std::string& theirs) {
-        if (!same) parts.push_back(what + " " + mine + " (not " + theirs + ")");
+        if (!same)
+            parts.push_back(what + " " + mine + " (not " + theirs + ")");
     };
     const auto size = [](const TileStamp& s) { return std::to_string(s.width) + "x" + std::to_string(s.height); };
     compare(piece.tile.count == first.tile.count, "tile count", std::to_string(piece.tile.count),
@@ -46,7 +47,8 @@ std::string differences(const TileStamp& piece, const TileStamp& first) {
     compare(piece.scene == first.scene, "scene file", piece.scene, first.scene);
     compare(piece.version == first.version, "hexray", piece.version, first.version);
     std::string text;
-    for (const std::string& part : parts) text += (text.empty() ? "" : ", ") + part;
+    for (const std::string& part : parts)
+        text += (text.empty() ? "" : ", ") + part;
     return text;
 }
 
@@ -129,7 +131,8 @@ std::vector<TilePiece> openPieces(const std::vector<std::string>& paths, ImageFo
             throw TileError(printable(path) + ": given twice");
         }
         if (slot) {
-            throw TileError(printable(path) + ": overlaps " + printable(slot->name()) + " (both are " + tileText(piece.stamp()) + ")");
+            throw TileError(printable(path) + ": overlaps " + printable(slot->name()) + " (both are " +
+                            tileText(piece.stamp()) + ")");
         }
         slot = std::move(piece);
     }

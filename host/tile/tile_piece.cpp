@@ -97,8 +97,7 @@ TilePiece& TilePiece::operator=(TilePiece&&) noexcept = default;
 
 TilePiece::Reading& TilePiece::reading() {
     if (!reading_) {
-        reading_ = refusingBadInput(
-            [&] { return std::make_unique<Reading>(file_, format_, stampText_, rowCount()); });
+        reading_ = refusingBadInput([&] { return std::make_unique<Reading>(file_, format_, stampText_, rowCount()); });
         const PieceHeader header = refusingBadInput([&] { return reading_->header(); });
         if (header.stamp != stampText_ || header.width != stamp_.width || header.height != rowCount()) {
             throw TileError(printable(name()) + ": changed while being merged (its header is not the one checked)");
@@ -118,8 +117,7 @@ void TilePiece::readRgb8Rows(std::span<std::uint8_t> rgbRows) {
     r.rowsLeft -= std::uint32_t(rgbRows.size() / rowBytes);
 }
 
-void TilePiece::readFloatRows(std::uint32_t rows, std::span<float> red, std::span<float> green,
-                              std::span<float> blue) {
+void TilePiece::readFloatRows(std::uint32_t rows, std::span<float> red, std::span<float> green, std::span<float> blue) {
     Reading& r = reading();
     if (!r.exr || rows > r.rowsLeft) {
         throw std::logic_error("TilePiece::readFloatRows: not an OpenEXR piece, or more rows than it has left");
@@ -142,7 +140,8 @@ void TilePiece::verify() {
                         " (a piece of an older hexray, or cut short): render it again");
     }
     if (*recorded != r.digest.hex()) {
-        throw TileError(printable(name()) + ": its pixels are not the ones it was rendered with (their SHA-256 is not the " +
+        throw TileError(printable(name()) +
+                        ": its pixels are not the ones it was rendered with (their SHA-256 is not the " +
                         kTileDigestKey + " it records): it was changed or damaged; render it again");
     }
     reading_.reset();

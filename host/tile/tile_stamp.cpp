@@ -48,9 +48,9 @@ std::optional<TileStamp> parseTileStamp(const std::string& text) {
     unsigned first = 0;
     unsigned last = 0;
     int rendererStart = -1;
-    const int read = std::sscanf(text.c_str(), "%u/%u rows %u-%u of %ux%u; spp %u; %n", &stamp.tile.index,
-                                 &stamp.tile.count, &first, &last, &stamp.width, &stamp.height,
-                                 &stamp.samplesPerPixel, &rendererStart);
+    const int read =
+        std::sscanf(text.c_str(), "%u/%u rows %u-%u of %ux%u; spp %u; %n", &stamp.tile.index, &stamp.tile.count, &first,
+                    &last, &stamp.width, &stamp.height, &stamp.samplesPerPixel, &rendererStart);
     const std::size_t versionAt = text.rfind("; hexray ");
     const std::size_t sceneAt = versionAt == std::string::npos ? versionAt : text.rfind("; scene ", versionAt);
     if (read != 7 || rendererStart < 0 || sceneAt == std::string::npos || sceneAt < std::size_t(rendererStart) ||
@@ -71,8 +71,7 @@ std::optional<TileStamp> parseTileStamp(const std::string& text) {
 }
 
 std::optional<std::string> beyondRendererLimits(const TileStamp& stamp) {
-    if (stamp.width < 1 || stamp.height < 1 || stamp.width > kMaxImageDimension ||
-        stamp.height > kMaxImageDimension) {
+    if (stamp.width < 1 || stamp.height < 1 || stamp.width > kMaxImageDimension || stamp.height > kMaxImageDimension) {
         return "its stamp declares a " + imageSize(stamp.width, stamp.height) + " image, " +
                (stamp.width < 1 || stamp.height < 1 ? "which has no pixels" : "larger than hexray renders") +
                " (at most " + imageSize(kMaxImageDimension, kMaxImageDimension) + ")";

@@ -36,9 +36,7 @@ std::uint32_t hostMemoryType(const vk::raii::PhysicalDevice& physicalDevice, std
 
 HostVisibleBuffer::HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                                      vk::DeviceSize size, vk::BufferUsageFlags usage)
-    : size_(std::max<vk::DeviceSize>(size, 16)),
-      memory_(nullptr),
-      buffer_(nullptr) {
+    : size_(std::max<vk::DeviceSize>(size, 16)), memory_(nullptr), buffer_(nullptr) {
     try {
         buffer_ = vk::raii::Buffer(device, vk::BufferCreateInfo({}, size_, usage, vk::SharingMode::eExclusive));
         const vk::MemoryRequirements requirements = buffer_.getMemoryRequirements();

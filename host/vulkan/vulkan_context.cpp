@@ -20,8 +20,7 @@ constexpr const char* kNoDeviceAdvice =
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                   void* userData) {
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData) {
     const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
     // General messages come from the loader ("Found no drivers!" when there is none): that
     // fault has its own message and exit code, so they are shown but do not fail validation.
@@ -37,9 +36,9 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFl
 vk::DebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log) {
     using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
     using Type = vk::DebugUtilsMessageTypeFlagBitsEXT;
-    return vk::DebugUtilsMessengerCreateInfoEXT(
-        {}, Severity::eWarning | Severity::eError,
-        Type::eGeneral | Type::eValidation | Type::ePerformance, &onValidationMessage, log);
+    return vk::DebugUtilsMessengerCreateInfoEXT({}, Severity::eWarning | Severity::eError,
+                                                Type::eGeneral | Type::eValidation | Type::ePerformance,
+                                                &onValidationMessage, log);
 }
 
 bool hasLayer(const vk::raii::Context& context, std::string_view name) {
@@ -85,11 +84,16 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, ValidationLo
 // Real GPUs first; lavapipe (a CPU device) is the fallback that always works.
 int preference(vk::PhysicalDeviceType type) {
     switch (type) {
-        case vk::PhysicalDeviceType::eDiscreteGpu: return 4;
-        case vk::PhysicalDeviceType::eIntegratedGpu: return 3;
-        case vk::PhysicalDeviceType::eVirtualGpu: return 2;
-        case vk::PhysicalDeviceType::eCpu: return 1;
-        default: return 0;
+        case vk::PhysicalDeviceType::eDiscreteGpu:
+            return 4;
+        case vk::PhysicalDeviceType::eIntegratedGpu:
+            return 3;
+        case vk::PhysicalDeviceType::eVirtualGpu:
+            return 2;
+        case vk::PhysicalDeviceType::eCpu:
+            return 1;
+        default:
+            return 0;
     }
 }
 
@@ -185,8 +189,8 @@ VulkanError classify(const vk::SystemError& error, const std::string& during) {
     const std::string what = error.code().message();  // e.g. "ErrorDeviceLost"
     switch (vk::Result(error.code().value())) {
         case vk::Result::eErrorDeviceLost:
-            return VulkanError(VulkanFailure::DeviceLost, "the Vulkan device was lost while " + during +
-                                                              " (" + what + ": a driver crash or a GPU reset)");
+            return VulkanError(VulkanFailure::DeviceLost, "the Vulkan device was lost while " + during + " (" + what +
+                                                              ": a driver crash or a GPU reset)");
         case vk::Result::eErrorOutOfDeviceMemory:
         case vk::Result::eErrorOutOfHostMemory:
             return VulkanError(VulkanFailure::OutOfMemory, "out of memory while " + during + " (" + what + ")",
@@ -200,11 +204,16 @@ VulkanError classify(const vk::SystemError& error, const std::string& during) {
 
 std::string deviceTypeName(vk::PhysicalDeviceType type) {
     switch (type) {
-        case vk::PhysicalDeviceType::eDiscreteGpu: return "discrete GPU";
-        case vk::PhysicalDeviceType::eIntegratedGpu: return "integrated GPU";
-        case vk::PhysicalDeviceType::eVirtualGpu: return "virtual GPU";
-        case vk::PhysicalDeviceType::eCpu: return "CPU";
-        default: return "other";
+        case vk::PhysicalDeviceType::eDiscreteGpu:
+            return "discrete GPU";
+        case vk::PhysicalDeviceType::eIntegratedGpu:
+            return "integrated GPU";
+        case vk::PhysicalDeviceType::eVirtualGpu:
+            return "virtual GPU";
+        case vk::PhysicalDeviceType::eCpu:
+            return "CPU";
+        default:
+            return "other";
     }
 }
 
@@ -267,9 +276,9 @@ void VulkanContext::submitAndWait(const vk::raii::CommandBuffer& commands, const
     if (result == vk::Result::eTimeout) {
         abandoned_ = true;
         const auto seconds = std::chrono::duration_cast<std::chrono::seconds>(timeout).count();
-        throw VulkanError(VulkanFailure::DeviceLost,
-                          "the Vulkan device timed out: a render did not finish within " + std::to_string(seconds) +
-                              " s on " + selected_.name + ", which is treated as hung");
+        throw VulkanError(VulkanFailure::DeviceLost, "the Vulkan device timed out: a render did not finish within " +
+                                                         std::to_string(seconds) + " s on " + selected_.name +
+                                                         ", which is treated as hung");
     }
 }
 

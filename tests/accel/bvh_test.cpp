@@ -73,8 +73,7 @@ std::uint32_t checkSubtree(const Scene& scene, const Bvh& bvh, std::uint32_t ind
     return checkSubtree(scene, bvh, second, seen);
 }
 
-void expectSameHit(const std::optional<SceneHit>& expected, const std::optional<SceneHit>& actual,
-                   const Ray& ray) {
+void expectSameHit(const std::optional<SceneHit>& expected, const std::optional<SceneHit>& actual, const Ray& ray) {
     ASSERT_EQ(expected.has_value(), actual.has_value())
         << "ray from (" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ")";
     if (expected) {
@@ -100,15 +99,23 @@ void expectBvhAgrees(const Scene& scene, std::uint32_t rayCount, std::uint64_t s
     for (std::uint32_t i = 0; i < rayCount; ++i) {
         glm::dvec3 origin;
         switch (i % 3) {
-            case 0: origin = scene.camera.position; break;
-            case 1: origin = {uniform(engine, low.x, high.x), uniform(engine, 0.01, high.y), uniform(engine, low.z, high.z)}; break;
-            default: origin = spheres[engine() % spheres.size()]->center; break;  // inside a sphere
+            case 0:
+                origin = scene.camera.position;
+                break;
+            case 1:
+                origin = {uniform(engine, low.x, high.x), uniform(engine, 0.01, high.y),
+                          uniform(engine, low.z, high.z)};
+                break;
+            default:
+                origin = spheres[engine() % spheres.size()]->center;
+                break;  // inside a sphere
         }
         glm::dvec3 direction;
         if (i % 2 == 0) {
             // At a sphere: its centre, or a point on it (grazing and tangent rays).
             const Sphere& target = *spheres[engine() % spheres.size()];
-            const glm::dvec3 aim = (i % 4 == 0) ? target.center : target.center + target.radius * randomUnitVector(engine);
+            const glm::dvec3 aim =
+                (i % 4 == 0) ? target.center : target.center + target.radius * randomUnitVector(engine);
             direction = aim - origin;
             if (glm::length(direction) == 0.0) {
                 direction = randomUnitVector(engine);
@@ -302,7 +309,8 @@ TEST(Bvh, MarginsAreBitIdenticalWhereNearMissesDecideThem) {
     ASSERT_EQ(plain.margins.size(), accelerated.margins.size());
     std::size_t different = 0;
     for (std::size_t pixel = 0; pixel < plain.margins.size(); ++pixel) {
-        different += std::bit_cast<std::uint32_t>(plain.margins[pixel]) != std::bit_cast<std::uint32_t>(accelerated.margins[pixel]);
+        different += std::bit_cast<std::uint32_t>(plain.margins[pixel]) !=
+                     std::bit_cast<std::uint32_t>(accelerated.margins[pixel]);
     }
     EXPECT_EQ(different, 0u);
     EXPECT_EQ(plain.ambiguity, accelerated.ambiguity);

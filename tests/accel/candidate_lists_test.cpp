@@ -57,10 +57,12 @@ std::set<std::uint32_t> lightList(const CandidateLists& lists, std::uint32_t lig
 
 // Directions from `origin` that graze the sphere: `count` of them around its outline, a
 // millionth of its angular radius inside.
-std::vector<glm::dvec3> grazingDirections(const glm::dvec3& origin, const glm::dvec3& center, double radius, int count) {
+std::vector<glm::dvec3> grazingDirections(const glm::dvec3& origin, const glm::dvec3& center, double radius,
+                                          int count) {
     const glm::dvec3 axis = glm::normalize(center - origin);
     const double halfAngle = std::asin(radius / glm::distance(center, origin)) * (1.0 - 1e-6);
-    const glm::dvec3 side = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 side =
+        glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
     const glm::dvec3 up = glm::cross(axis, side);
     std::vector<glm::dvec3> directions;
     for (int k = 0; k < count; ++k) {
@@ -90,7 +92,8 @@ TEST(CandidateLists, HoldEverySphereACameraRayGrazes) {
     for (std::uint32_t node = 1; node < scene.nodes.size(); ++node) {
         const auto& sphere = std::get<Sphere>(scene.nodes[node].geometry);
         const glm::dvec3 center = placement.position(sphere.center);
-        for (const glm::dvec3& direction : grazingDirections(glm::dvec3(0.0), center, placement.length(sphere.radius), 16)) {
+        for (const glm::dvec3& direction :
+             grazingDirections(glm::dvec3(0.0), center, placement.length(sphere.radius), 16)) {
             if (glm::dot(direction, forward) < corner) {
                 continue;  // out of the image
             }
@@ -112,9 +115,11 @@ TEST(CandidateLists, HoldEverySphereAShadowRayGrazes) {
         for (std::uint32_t node = 1; node < scene.nodes.size(); ++node) {
             const auto& sphere = std::get<Sphere>(scene.nodes[node].geometry);
             const glm::dvec3 center = placement.position(sphere.center);
-            for (const glm::dvec3& direction : grazingDirections(position, center, placement.length(sphere.radius), 16)) {
+            for (const glm::dvec3& direction :
+                 grazingDirections(position, center, placement.length(sphere.radius), 16)) {
                 ++checked;
-                ASSERT_TRUE(lightList(*lists, light, glm::vec3(direction)).count(node)) << "light " << light << ", node " << node;
+                ASSERT_TRUE(lightList(*lists, light, glm::vec3(direction)).count(node))
+                    << "light " << light << ", node " << node;
             }
         }
     }
@@ -123,8 +128,8 @@ TEST(CandidateLists, HoldEverySphereAShadowRayGrazes) {
 
 TEST(CandidateLists, ListThePlanesFirstThenRecordsInAscendingOrder) {
     const Scene scene = testScene(500);
-    const auto lists = buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F64,
-                                           Formulation::Robust);
+    const auto lists =
+        buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F64, Formulation::Robust);
     ASSERT_TRUE(lists);
     ASSERT_EQ(lists->cellStarts.at(gpu::PLANE_CELL + 1), 1u);
     EXPECT_EQ(lists->entries.at(0), 0u);  // the floor, node 0
@@ -147,7 +152,8 @@ TEST(CandidateLists, ListThePlanesFirstThenRecordsInAscendingOrder) {
 Scene withLights(Scene scene, std::size_t count) {
     scene.lights.clear();
     for (std::size_t i = 0; i < count; ++i) {
-        scene.lights.push_back(PointLight{{double(i % 37) - 18.0, 40.0 + double(i % 7), double(i / 37)}, Color(1.0), 10.0});
+        scene.lights.push_back(
+            PointLight{{double(i % 37) - 18.0, 40.0 + double(i % 7), double(i / 37)}, Color(1.0), 10.0});
     }
     return scene;
 }
@@ -209,14 +215,14 @@ TEST(CandidateLists, ALightWhoseListsDoNotFitItsShareTakesTheListOfEverySphere) 
 
 TEST(CandidateLists, ListEverySphereForTextbookShadowRaysPastTheirReach) {
     const Scene scene = testScene(200);
-    const auto lists = buildCandidateLists(scene, placementFor(scene, Formulation::Textbook), FloatWidth::F32,
-                                           Formulation::Textbook);
+    const auto lists =
+        buildCandidateLists(scene, placementFor(scene, Formulation::Textbook), FloatWidth::F32, Formulation::Textbook);
     ASSERT_TRUE(lists);
     const gpu::GpuCandidateGrid& face = lists->grids.at(1);
     ASSERT_TRUE(std::isfinite(face.reach.x));
     EXPECT_EQ(lists->cellStarts.at(face.cells.w + 1) - lists->cellStarts.at(face.cells.w), 200u);
-    const auto robust = buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F32,
-                                            Formulation::Robust);
+    const auto robust =
+        buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F32, Formulation::Robust);
     ASSERT_TRUE(robust);
     EXPECT_TRUE(std::isinf(robust->grids.at(1).reach.x));  // robust shadow rays start at the light
 }
@@ -242,7 +248,8 @@ std::size_t cellCount(const CandidateLists& lists, std::uint32_t grid) {
 Scene handMadeScene() {
     Scene scene = test::floorSeenFrom({0.0, 2.0, -10.0}, 0.0, 70.0, 320, 180);
     scene.lights = {PointLight{{0.0, 30.0, 20.0}, Color(1.0), 900.0}};
-    for (const glm::dvec3& center : {glm::dvec3(-8.0, 2.0, 20.0), glm::dvec3(8.0, 2.0, 20.0), glm::dvec3(0.0, 2.0, -30.0)}) {
+    for (const glm::dvec3& center :
+         {glm::dvec3(-8.0, 2.0, 20.0), glm::dvec3(8.0, 2.0, 20.0), glm::dvec3(0.0, 2.0, -30.0)}) {
         scene.nodes.push_back(Node{Sphere{center, 1.0}, 1});
     }
     return scene;
@@ -272,8 +279,8 @@ TEST(CandidateLists, ListASphereAroundTheEyeOrALightOrFillingTheViewInEveryCell)
     Scene scene = handMadeScene();
     const glm::dvec3 light = scene.lights.at(0).position;
     scene.nodes.push_back(Node{Sphere{scene.camera.position + glm::dvec3(1.0, 0.0, 0.0), 3.0}, 1});  // 4: the eye's
-    scene.nodes.push_back(Node{Sphere{light + glm::dvec3(0.0, 0.5, 0.0), 1.0}, 1});                   // 5: the light's
-    scene.nodes.push_back(Node{Sphere{{0.0, 2.0, 1e6 + 60.0}, 1e6}, 1});                              // 6: a wall ahead
+    scene.nodes.push_back(Node{Sphere{light + glm::dvec3(0.0, 0.5, 0.0), 1.0}, 1});                  // 5: the light's
+    scene.nodes.push_back(Node{Sphere{{0.0, 2.0, 1e6 + 60.0}, 1e6}, 1});                             // 6: a wall ahead
     for (const Formulation formulation : {Formulation::Robust, Formulation::Textbook}) {
         for (const FloatWidth width : {FloatWidth::F32, FloatWidth::F64}) {
             const auto lists = buildCandidateLists(scene, placementFor(scene, formulation), width, formulation);

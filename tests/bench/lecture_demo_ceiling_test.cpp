@@ -55,7 +55,8 @@ TEST_F(LectureDemoCeilingTest, RendersTheDemoAsTheRendererDoes) {
     scene.image.width = 400;
     scene.image.height = 300;
     GpuRenderer renderer(context());
-    const GpuRenderResult ceiling = renderer.render(scene, lectureDemoCeilingPlan(renderer, scene), GpuOutput::Encoded8);
+    const GpuRenderResult ceiling =
+        renderer.render(scene, lectureDemoCeilingPlan(renderer, scene), GpuOutput::Encoded8);
     const GpuRenderResult rendered = renderer.render(scene, Precision::F32, GpuOutput::Encoded8);
     ASSERT_EQ(ceiling.encoded.bytes.size(), rendered.encoded.bytes.size());
     const ErrorMetrics error = compareEncoded(rendered.encoded, ceiling.encoded);

@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
         const auto loadStart = std::chrono::steady_clock::now();
         scene = loadSceneFile(file);
         loadMs.push_back(millisecondsSince(loadStart));
-        if (round == 0) loadedPeak = peakResidentMiB();
+        if (round == 0)
+            loadedPeak = peakResidentMiB();
         for (std::size_t i = 0; i < threadCounts.size(); ++i) {
             const auto buildStart = std::chrono::steady_clock::now();
             const Bvh bvh = buildBvh(scene, threadCounts[i]);

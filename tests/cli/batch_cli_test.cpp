@@ -60,7 +60,8 @@ std::string sceneOfStructure(unsigned structure) {
                "shaders": {"matte": {"type": "lambert", "color": [0.7, 0.4, 0.2]},
                            "squares": {"type": "checker", "color1": [0.9, 0.9, 0.9], "color2": [0.1, 0.1, 0.1],
                                        "size": 1}},
-               "nodes": [)" + nodes + "]}";
+               "nodes": [)" +
+           nodes + "]}";
 }
 
 TEST_F(CliTest, ABatchOfMoreScenesThanTheRendererKeepsKernelsForGivesEachTheImageItGetsAlone) {
@@ -200,9 +201,9 @@ TEST_F(CliTest, WithoutAUsableGpuEveryScenesFallsBackToTheCpuAfterOneNote) {
 }
 
 TEST_F(CliTest, WithBackendGpuAndNoUsableGpuEverySceneFailsWithTheVulkanExitCode) {
-    const RunResult run = hexray("render " + scene("lecture-demo.json") + " " + scene("constant-debug.json") +
-                                     " --backend gpu" + kSize,
-                                 "HEXRAY_INJECT_VULKAN_FAULT=no-compute-queue");
+    const RunResult run =
+        hexray("render " + scene("lecture-demo.json") + " " + scene("constant-debug.json") + " --backend gpu" + kSize,
+               "HEXRAY_INJECT_VULKAN_FAULT=no-compute-queue");
     EXPECT_EQ(run.exitCode, 3) << run.err;
     EXPECT_NE(run.out.find("rendered 0 of 2 scenes"), std::string::npos) << run.out;
     EXPECT_EQ(createdFiles(), std::vector<std::string>{});

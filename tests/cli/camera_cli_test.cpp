@@ -28,7 +28,8 @@ std::string vec(const glm::dvec3& v) {
 std::string sceneWithCamera(const std::string& camera) {
     return R"({
   "image": {"width": 120, "height": 68, "spp": 2},
-  "camera": )" + camera + R"(,
+  "camera": )" +
+           camera + R"(,
   "background": "#10141c",
   "ambient": [0.05, 0.05, 0.06],
   "lights": [{"position": [-40, 90, -60], "color": [1, 0.85, 0.7], "intensity": 9000},
@@ -55,8 +56,8 @@ protected:
         const glm::dvec3 target = angles.position + 150.0 * cameraForward(angles);
         const glm::dvec3 up = cameraRotation(angles) * glm::dvec3(0, 1, 0);
         char anglesText[160];
-        std::snprintf(anglesText, sizeof anglesText, R"({"position": [-70, 45, -110], "yaw": %g, "pitch": %g, "roll": %g})",
-                      yaw, pitch, roll);
+        std::snprintf(anglesText, sizeof anglesText,
+                      R"({"position": [-70, 45, -110], "yaw": %g, "pitch": %g, "roll": %g})", yaw, pitch, roll);
         writeScene("angles.json", sceneWithCamera(anglesText));
         writeScene("look-at.json", sceneWithCamera(R"({"position": [-70, 45, -110], "lookAt": )" + vec(target) +
                                                    R"(, "up": )" + vec(up) + "}"));
@@ -95,7 +96,8 @@ TEST_F(CameraCliTest, MixedOrDegenerateLookAtCamerasAreRefusedNamingThePlace) {
     } cases[] = {
         {R"({"position": [0, 1, 0], "lookAt": [0, 1, 5], "yaw": 10})",
          "camera.yaw: cannot be used with camera.lookAt (a look-at camera's direction comes from lookAt and up)"},
-        {R"({"position": [0, 1, 0], "lookAt": [0, 1, 5], "roll": 0})", "camera.roll: cannot be used with camera.lookAt"},
+        {R"({"position": [0, 1, 0], "lookAt": [0, 1, 5], "roll": 0})",
+         "camera.roll: cannot be used with camera.lookAt"},
         {R"({"position": [0, 1, 0], "lookAt": [0, 1, 0]})",
          "camera.lookAt: must differ from camera.position (the camera would look nowhere)"},
         {R"({"position": [0, 1, 0], "lookAt": [0, 1, 5], "up": [0, 0, -2]})",

@@ -40,7 +40,6 @@ inline std::string readFile(const fs::path& path) {
 
 class CliTest : public TemporaryDirectoryTest {
 protected:
-
     // Runs `hexray ARGS` in the test's directory; `environment` is prefixed to the command.
     RunResult hexray(const std::string& arguments, const std::string& environment = "") const {
         return shell(environment + " \"$HEXRAY\" " + arguments);
@@ -135,7 +134,9 @@ protected:
         return names;
     }
 
-    static std::string scene(const std::string& name) { return "'" + test::sourcePath("scenes/" + name).string() + "'"; }
+    static std::string scene(const std::string& name) {
+        return "'" + test::sourcePath("scenes/" + name).string() + "'";
+    }
 };
 
 }  // namespace hexray::test

@@ -57,7 +57,8 @@ TEST_F(CliTest, RenderDefaultsToTheSceneNameInTheCurrentDirectory) {
 }
 
 TEST_F(CliTest, RenderUnderTheValidationLayerIsClean) {
-    const RunResult run = hexray("--validate render " + scene("spheres-and-lights.json") + " -o v.png --width 96 --height 54");
+    const RunResult run =
+        hexray("--validate render " + scene("spheres-and-lights.json") + " -o v.png --width 96 --height 54");
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.err.find("validation"), std::string::npos) << run.err;
 }
@@ -65,9 +66,9 @@ TEST_F(CliTest, RenderUnderTheValidationLayerIsClean) {
 TEST_F(CliTest, ComparePrintsMetricsAndPassesOnTheDemoScene) {
     const RunResult run = hexray("compare " + scene("lecture-demo.json") + " --diff diff.png");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    for (const char* expected : {"ambiguous pixels", "topology mismatches in decisions not near-tied: 0", "max abs",
-                                 "mean abs", "RMSE", "PSNR", "pixels > 1 level", "linear [0,1]", "8-bit [levels]",
-                                 "gpu f32, chosen by auto", "PASS"}) {
+    for (const char* expected :
+         {"ambiguous pixels", "topology mismatches in decisions not near-tied: 0", "max abs", "mean abs", "RMSE",
+          "PSNR", "pixels > 1 level", "linear [0,1]", "8-bit [levels]", "gpu f32, chosen by auto", "PASS"}) {
         EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " missing from:\n" << run.out;
     }
     const Rgb8Image diff = readPng(dir_ / "diff.png");
@@ -76,8 +77,7 @@ TEST_F(CliTest, ComparePrintsMetricsAndPassesOnTheDemoScene) {
 
 TEST_F(CliTest, CompareFailsWithExitCode1WhenTopologyDiffers) {
     // The textbook formulas in world coordinates cannot place a checker edge at 1e7.
-    const RunResult run =
-        hexray("compare " + scene("hard/checker-far-1e7.json") + " --precision f32-naive");
+    const RunResult run = hexray("compare " + scene("hard/checker-far-1e7.json") + " --precision f32-naive");
     EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
     EXPECT_NE(run.out.find("EXCEEDED"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("FAIL"), std::string::npos);
@@ -146,7 +146,8 @@ TEST_F(CliTest, CompareDirectoryComparesEveryLoadableSceneAndFailsForTheOthers) 
 }
 
 TEST_F(CliTest, RenderInDoublePrecisionSaysSo) {
-    const RunResult run = hexray("render " + scene("lecture-demo.json") + " -o d.png --precision f64 --width 64 --height 48");
+    const RunResult run =
+        hexray("render " + scene("lecture-demo.json") + " -o d.png --precision f64 --width 64 --height 48");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.out.find("gpu f64"), std::string::npos) << run.out;
 }
@@ -160,7 +161,8 @@ TEST_F(CliTest, RenderWarnsAndUsesF64WhenFloat32CannotHoldTheScene) {
     const RunResult run = hexray("render wide.json -o w.png --precision f32 --backend gpu");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.err.find("hexray: warning: float32 cannot hold this scene (its lengths span 1e-30 to"),
-              std::string::npos) << run.err;
+              std::string::npos)
+        << run.err;
     EXPECT_NE(run.err.find("a ratio beyond float32's 2^100); rendering in f64 instead"), std::string::npos) << run.err;
     EXPECT_NE(run.out.find("gpu f64"), std::string::npos) << run.out;
     const RunResult lecture =
@@ -293,7 +295,8 @@ TEST_F(CliTest, BenchWithoutASceneBenchesTheShippedDemoScene) {
 }
 
 TEST_F(CliTest, AnUnwritableOutputIsExitCode5AndLeavesNothing) {
-    const RunResult run = hexray("render " + scene("constant-debug.json") + " -o no-such-dir/x.png --width 8 --height 8");
+    const RunResult run =
+        hexray("render " + scene("constant-debug.json") + " -o no-such-dir/x.png --width 8 --height 8");
     EXPECT_EQ(run.exitCode, 5) << run.err;
     EXPECT_NE(run.err.find("no-such-dir/x.png: cannot create output file"), std::string::npos) << run.err;
     EXPECT_TRUE(createdFiles().empty());
@@ -354,7 +357,8 @@ TEST_P(BadInputTest, IsRejectedWithExitCode2AndNoOutput) {
         const RunResult run = hexray("render bad.json -o " + target + " " + bad.extraArguments);
         EXPECT_EQ(run.exitCode, 2) << run.err;
         EXPECT_NE(run.err.find(bad.expectedMessage), std::string::npos)
-            << "expected \"" << bad.expectedMessage << "\" in:\n" << run.err;
+            << "expected \"" << bad.expectedMessage << "\" in:\n"
+            << run.err;
         EXPECT_EQ(run.out, "");
     }
     EXPECT_FALSE(fs::exists(dir_ / "new.png"));
@@ -382,7 +386,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"PlaneBeyondTheSupportedRange",
                  replaced(kGoodScene, R"({"type": "sphere", "center": [-10, 60, 0], "radius": 10})",
                           R"({"type": "plane", "y": 1e308})"),
-                 "", "bad.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 in magnitude, the supported "
+                 "",
+                 "bad.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 in magnitude, the supported "
                  "range of lengths (got 1e+308)"},
         BadInput{"RadiusBeyondTheSupportedRange", replaced(kGoodScene, "\"radius\": 10", "\"radius\": 1e308"), "",
                  "bad.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 in magnitude, the supported "
@@ -395,7 +400,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"UnknownKey", replaced(kGoodScene, "\"fov\": 90", "\"fvo\": 90"), "",
                  "bad.json: camera.fvo: unknown key"},
         BadInput{"MissingFile", "", "", "bad.json: cannot read scene file"},
-        BadInput{"WidthOverrideZero", kGoodScene, "--width 0", "--width: must be an integer between 1 and 16384 (got 0)"},
+        BadInput{"WidthOverrideZero", kGoodScene, "--width 0",
+                 "--width: must be an integer between 1 and 16384 (got 0)"},
         BadInput{"HeightOverrideAbsurd", kGoodScene, "--height 99999999",
                  "--height: must be an integer between 1 and 16384 (got 99999999)"},
         BadInput{"UnknownBackend", kGoodScene, "--backend quantum", "--backend"}),

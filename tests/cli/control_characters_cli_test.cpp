@@ -28,8 +28,9 @@ constexpr const char* kEscaped = "x\\x1b]0;owned\\x07\\u009b\\x9b";
 std::string rawControl(const std::string& text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         const unsigned char c = static_cast<unsigned char>(text[i]);
-        const bool c1 = c >= 0x80 && c <= 0x9f && (i == 0 || static_cast<unsigned char>(text[i - 1]) < 0x80 ||
-                                                   static_cast<unsigned char>(text[i - 1]) == 0xc2);
+        const bool c1 = c >= 0x80 && c <= 0x9f &&
+                        (i == 0 || static_cast<unsigned char>(text[i - 1]) < 0x80 ||
+                         static_cast<unsigned char>(text[i - 1]) == 0xc2);
         if ((c < 0x20 && c != '\n') || c == 0x7f || c1) {
             return "raw control character at byte " + std::to_string(i) + " in:\n" + text;
         }
@@ -61,9 +62,13 @@ TEST_F(ControlCharacterTest, SceneFileNamesAreEscaped) {
 }
 
 TEST_F(ControlCharacterTest, SceneKeysStringsAndTheParsersQuotesAreEscaped) {
-    writeScene("keys.json", "{\"im\x7f" "age\xc2\x9b\": 1}");
+    writeScene("keys.json",
+               "{\"im\x7f"
+               "age\xc2\x9b\": 1}");
     expectEscaped("render keys.json", "keys.json: [\"im\\x7fage\\u009b\"]: unknown key");
-    writeScene("strings.json", R"({"image": {"width": 8, "height": 8, "sampling": "cen)" "\x7f" R"(ter"}})");
+    writeScene("strings.json", R"({"image": {"width": 8, "height": 8, "sampling": "cen)"
+                               "\x7f"
+                               R"(ter"}})");
     expectEscaped("render strings.json", "unknown value \"cen\\x7fter\"");
     writeScene("utf8.json", "{\"a\x9b\": 1}");  // not UTF-8: the parser quotes what it read
     expectEscaped("render utf8.json", "\\x9b");

@@ -69,8 +69,8 @@ TEST_F(CliTest, ExtensionsAreReadInAnyCaseAndMinusIsAPngOnStandardOutput) {
     EXPECT_EQ(readPng(dir_ / "X.PNG").width, 20u);
     ASSERT_EQ(hexray("render " + scene("lecture-demo.json") + " --width 20 --height 10 -o Y.Exr").exitCode, 0);
     EXPECT_EQ(readExr(dir_ / "Y.Exr").width, 20u);
-    const RunResult run = shell("\"$HEXRAY\" render " + scene("lecture-demo.json") +
-                                " --width 20 --height 10 -o - > piped.png");
+    const RunResult run =
+        shell("\"$HEXRAY\" render " + scene("lecture-demo.json") + " --width 20 --height 10 -o - > piped.png");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(readPng(dir_ / "piped.png").height, 10u);
 }
@@ -99,8 +99,9 @@ TEST_F(CliTest, AnExrNameThatIsStandardOutputGetsOpenExrThroughAFileAPipeOrAFifo
     expectSameExr(dir_ / "piped.exr", dir_ / "reference.exr");
     // A FIFO.
     ASSERT_EQ(::mkfifo((dir_ / "fifo.exr").c_str(), 0644), 0);
-    run = shell("timeout 60 cat fifo.exr > from-fifo.exr & \"$HEXRAY\" render bright.json -o fifo.exr; code=$?; wait; "
-                "exit $code");
+    run = shell(
+        "timeout 60 cat fifo.exr > from-fifo.exr & \"$HEXRAY\" render bright.json -o fifo.exr; code=$?; wait; "
+        "exit $code");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     expectSameExr(dir_ / "from-fifo.exr", dir_ / "reference.exr");
     EXPECT_TRUE(fs::is_fifo(fs::symlink_status(dir_ / "fifo.exr")));

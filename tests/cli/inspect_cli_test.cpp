@@ -41,7 +41,7 @@ std::string line(const std::string& text, const std::string& label) {
 
 TEST_F(InspectCliTest, PixelExplainsALitFloorPixelIdenticallyOnBothBackends) {
     const test::RunResult run = hexray("pixel " + demoScene() + " " + std::to_string(demo::kFloorX) + " " +
-                           std::to_string(demo::kFloorY) + " --precision f32");
+                                       std::to_string(demo::kFloorY) + " --precision f32");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // The hit row shows node 0 at the analytic distance in both columns.
     const double t = *demo::planeT(demo::direction(demo::kFloorX, demo::kFloorY, 800, 600));
@@ -61,8 +61,8 @@ TEST_F(InspectCliTest, PixelExplainsALitFloorPixelIdenticallyOnBothBackends) {
 }
 
 TEST_F(InspectCliTest, PixelInTheSphereShadowSaysShadowedOnBothBackends) {
-    const test::RunResult run = hexray("pixel " + demoScene() + " " + std::to_string(demo::kShadowX) + " " +
-                           std::to_string(demo::kShadowY));
+    const test::RunResult run =
+        hexray("pixel " + demoScene() + " " + std::to_string(demo::kShadowX) + " " + std::to_string(demo::kShadowY));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string light = line(run.out, "light 0");
     const auto first = light.find("shadowed");
@@ -81,8 +81,7 @@ TEST_F(InspectCliTest, PixelWithOneBackendPrintsOneColumn) {
 TEST_F(InspectCliTest, PixelOutsideTheImageIsBadInput) {
     test::RunResult run = hexray("pixel " + demoScene() + " 800 10");
     EXPECT_EQ(run.exitCode, 2);
-    EXPECT_NE(run.err.find("X = 800 is outside the image: the width is 800, so X must be in 0..799"),
-              std::string::npos)
+    EXPECT_NE(run.err.find("X = 800 is outside the image: the width is 800, so X must be in 0..799"), std::string::npos)
         << run.err;
     run = hexray("pixel " + demoScene() + " 10 -1");
     EXPECT_EQ(run.exitCode, 2);
@@ -101,9 +100,9 @@ TEST_F(InspectCliTest, PixelRejectsAPrecisionForTheCpuBackendAlone) {
 // A second render into the same AOV directory replaces the first's set whole: the three-light
 // scene's light-1 and light-2 do not linger beside the one-light demo's files.
 TEST_F(InspectCliTest, RenderAovReplacesAnEarlierSetInTheSameDirectory) {
-    ASSERT_EQ(hexray("render " + scene("spheres-and-lights.json") + " -o a.png --width 64 --height 36 --aov aov")
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        hexray("render " + scene("spheres-and-lights.json") + " -o a.png --width 64 --height 36 --aov aov").exitCode,
+        0);
     ASSERT_TRUE(fs::exists(dir_ / "aov" / "light-2.exr"));
     const test::RunResult run = hexray("render " + demoScene() + " -o b.png --width 64 --height 48 --aov aov");
     ASSERT_EQ(run.exitCode, 0) << run.err;

@@ -114,8 +114,8 @@ TEST_F(KernelCliTest, SpirvFromTheCacheThatTheDriverRefusesIsCompiledAfresh) {
     const std::string fault = "HEXRAY_INJECT_VULKAN_FAULT=pipeline-fails-once";
     const RunResult refused = render("lecture-demo.json", "refused.png", fault);
     ASSERT_EQ(refused.exitCode, 0) << refused.err;
-    EXPECT_TRUE(reportsOnly(refused.err, file,
-                            "the driver refused its SPIR-V (vkCreateComputePipelines: ErrorUnknown)"))
+    EXPECT_TRUE(
+        reportsOnly(refused.err, file, "the driver refused its SPIR-V (vkCreateComputePipelines: ErrorUnknown)"))
         << refused.err;
     EXPECT_NE(refused.out.find("glslang"), std::string::npos) << refused.out;
     EXPECT_EQ(readFile(dir_ / "refused.png"), readFile(dir_ / "a.png"));
@@ -187,8 +187,8 @@ TEST_F(KernelCliTest, AnUnusableCacheIsNoCacheAndNoError) {
 
 TEST_F(KernelCliTest, TwoProcessesSharingTheCacheBothSucceed) {
     const std::string cache = (dir_ / "cache").string();
-    const std::string render = "'" HEXRAY_EXECUTABLE "' render " + scene("lecture-demo.json") +
-                               " --width 40 --height 30 -o ";
+    const std::string render =
+        "'" HEXRAY_EXECUTABLE "' render " + scene("lecture-demo.json") + " --width 40 --height 30 -o ";
     const std::string command = "cd '" + dir_.string() + "' && export XDG_CACHE_HOME='" + cache + "' && (" + render +
                                 "a.png >/dev/null & " + render + "b.png >/dev/null & wait) && cmp a.png b.png";
     EXPECT_EQ(std::system(command.c_str()), 0);

@@ -31,8 +31,9 @@ protected:
         const double intensity = 0.5 * 1600.0 / (2.0 * 3.14159265 * double(lights));
         out << R"(], "lights": [)";
         for (std::size_t i = 0; i < lights; ++i) {
-            out << (i ? "," : "") << R"({"position": [)" << double(i % 40) - 19.5 << "," << 8.0 + double(i / 1600) * 0.25
-                << "," << double(i / 40 % 40) - 9.5 << R"(], "intensity": )" << intensity << "}";
+            out << (i ? "," : "") << R"({"position": [)" << double(i % 40) - 19.5 << ","
+                << 8.0 + double(i / 1600) * 0.25 << "," << double(i / 40 % 40) - 9.5 << R"(], "intensity": )"
+                << intensity << "}";
         }
         out << "]}";
         return path;

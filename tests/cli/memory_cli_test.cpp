@@ -137,8 +137,8 @@ TEST_F(MemoryCliTest, RunningOutOfMemoryIsExitCode6AndNamesTheSizeToReduce) {
     // of a 16384-pixel-wide image.
     const std::uint64_t baseline =
         smallestWorkingLimit("render empty.json --backend cpu --threads 1 --width 1 --height 1 -o tiny.png");
-    const RunResult run = underLimit(baseline + 4096,
-                                     "render empty.json --backend cpu --threads 1 --width 16384 --height 64 -o wide.png");
+    const RunResult run = underLimit(
+        baseline + 4096, "render empty.json --backend cpu --threads 1 --width 16384 --height 64 -o wide.png");
     EXPECT_EQ(run.exitCode, 6) << run.err;
     EXPECT_NE(run.err.find("hexray: error: out of memory"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("--width"), std::string::npos) << run.err;

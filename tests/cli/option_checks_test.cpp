@@ -18,8 +18,8 @@ TEST(IntegerProblem, AcceptsDecimalIntegersInTheRange) {
 }
 
 TEST(IntegerProblem, RefusesEverythingElseEchoingTheText) {
-    for (const char* text : {"0", "16385", "-1", "1e3", "0x10", " 12", "12 ", "+12", "1.5", "", "nan", "12abc",
-                             "99999999999999999999"}) {
+    for (const char* text :
+         {"0", "16385", "-1", "1e3", "0x10", " 12", "12 ", "+12", "1.5", "", "nan", "12abc", "99999999999999999999"}) {
         EXPECT_EQ(integerProblem<std::int64_t>(text, 1, 16384),
                   std::string("must be an integer between 1 and 16384 (got ") + text + ")")
             << text;
@@ -39,8 +39,8 @@ TEST(FiniteNumberProblem, AcceptsFiniteNumbersInTheRange) {
 }
 
 TEST(FiniteNumberProblem, RefusesNonFiniteOutOfRangeAndMalformedText) {
-    for (const char* text : {"nan", "NaN", "inf", "-inf", "infinity", "100.5", "-0.1", "1e999", "0x1p3", " 1", "",
-                             "1,5"}) {
+    for (const char* text :
+         {"nan", "NaN", "inf", "-inf", "infinity", "100.5", "-0.1", "1e999", "0x1p3", " 1", "", "1,5"}) {
         EXPECT_EQ(finiteNumberProblem(text, 0.0, 100.0),
                   std::string("must be a finite number between 0 and 100 (got ") + text + ")")
             << text;

@@ -32,7 +32,8 @@ TEST_P(BadOptionTest, IsExitCode2NamingTheOptionAndItsRangeBeforeAnyWork) {
     const RunResult run = hexray(command + " --width 8 --height 8");
     EXPECT_EQ(run.exitCode, 2) << run.out << run.err;
     EXPECT_NE(run.err.find(std::string("hexray: error: ") + GetParam().message), std::string::npos)
-        << "expected \"" << GetParam().message << "\" in:\n" << run.err;
+        << "expected \"" << GetParam().message << "\" in:\n"
+        << run.err;
     EXPECT_LT(run.err.size(), 300u) << run.err;
     EXPECT_EQ(run.out, "");
     EXPECT_EQ(createdFiles(), std::vector<std::string>{});
@@ -77,7 +78,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadOption{"EmptyCsv", "bench SCENE --csv ''", "--csv: must not be empty"},
         BadOption{"EmptyAov", "render SCENE -o x.png --aov ''", "--aov: must not be empty"},
         // A named value is one of its names, never the enum's number behind it.
-        BadOption{"BackendUnknown", "render SCENE -o x.png --backend vulkan", "--backend: vulkan not in {auto,gpu,cpu}"},
+        BadOption{"BackendUnknown", "render SCENE -o x.png --backend vulkan",
+                  "--backend: vulkan not in {auto,gpu,cpu}"},
         BadOption{"BackendByNumber", "render SCENE -o x.png --backend 2", "--backend: 2 not in {auto,gpu,cpu}"},
         BadOption{"CullingUnknown", "render SCENE -o x.png --culling yes", "--culling: yes not in {auto,on,off}"},
         BadOption{"PrecisionByNumber", "compare SCENE --precision 1", "--precision: 1 not in {auto,f32,f64,f32-naive}"},
@@ -87,8 +89,8 @@ INSTANTIATE_TEST_SUITE_P(
 using OptionCliTest = test::CliTest;
 
 TEST_F(OptionCliTest, ThreadsBeyondWhatIsUsedAreCappedAndTheCapIsEchoed) {
-    const RunResult run =
-        hexray("render " + scene("lecture-demo.json") + " -o x.png --backend cpu --width 16 --height 8 --threads 4000000000");
+    const RunResult run = hexray("render " + scene("lecture-demo.json") +
+                                 " -o x.png --backend cpu --width 16 --height 8 --threads 4000000000");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.out.find("cpu reference (8 threads)"), std::string::npos) << run.out;
     EXPECT_EQ(run.out.find("4000000000"), std::string::npos) << run.out;

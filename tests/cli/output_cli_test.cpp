@@ -66,8 +66,10 @@ protected:
     // io/removed_on_signal.h, so what the test then sends finds the render at that point on any
     // machine, however fast or loaded. -1 if it did not stop there.
     pid_t startStoppedRender(bool aov = false) const {
-        std::vector<std::string> arguments = {"render", test::sourcePath("scenes/lecture-demo.json").string(),
-                                              "-o", "big.png", "--width", "64", "--height", "48"};
+        std::vector<std::string> arguments = {"render",   test::sourcePath("scenes/lecture-demo.json").string(),
+                                              "-o",       "big.png",
+                                              "--width",  "64",
+                                              "--height", "48"};
         if (aov) {
             arguments.insert(arguments.end(), {"--aov", "aov"});
         }
@@ -236,12 +238,14 @@ TEST_F(OutputCliTest, AnUnwritableOutputPathFailsBeforeTheWork) {
         std::string path;
     };
     const std::string demo = scene("lecture-demo.json");
-    for (const Case& c : {Case{"bench " + demo + " --width 8 --height 8 --rounds 1 --samples 1 --reference-samples 1 "
-                                                 "--csv nodir/x.csv",
-                               "nodir/x.csv"},
-                          Case{"compare " + demo + " --width 8 --height 8 --mask nodir/m.png", "nodir/m.png"},
-                          Case{"compare " + demo + " --width 8 --height 8 --diff nodir/d.png", "nodir/d.png"},
-                          Case{"render " + demo + " --width 8 --height 8 -o x.png --aov file.txt/aov", "file.txt/aov"}}) {
+    for (const Case& c :
+         {Case{"bench " + demo +
+                   " --width 8 --height 8 --rounds 1 --samples 1 --reference-samples 1 "
+                   "--csv nodir/x.csv",
+               "nodir/x.csv"},
+          Case{"compare " + demo + " --width 8 --height 8 --mask nodir/m.png", "nodir/m.png"},
+          Case{"compare " + demo + " --width 8 --height 8 --diff nodir/d.png", "nodir/d.png"},
+          Case{"render " + demo + " --width 8 --height 8 -o x.png --aov file.txt/aov", "file.txt/aov"}}) {
         std::ofstream(dir_ / "file.txt") << "a file, not a directory";
         const RunResult run = hexray(c.command);
         EXPECT_EQ(run.exitCode, 5) << c.command << "\n" << run.err;

@@ -29,9 +29,9 @@ protected:
         ASSERT_NE(text.find(size), std::string::npos);
         text.replace(text.find(size), size.size(), "\"width\": 61, \"height\": 45, \"spp\": 2");
         writeScene("scene.json", text);
-        const RunResult commands = shell("/usr/bin/python3 '" +
-                                         test::sourcePath("tests/cli/scale_out_commands.py").string() + "' '" +
-                                         test::sourcePath("docs/scale-out.md").string() + "' .");
+        const RunResult commands =
+            shell("/usr/bin/python3 '" + test::sourcePath("tests/cli/scale_out_commands.py").string() + "' '" +
+                  test::sourcePath("docs/scale-out.md").string() + "' .");
         ASSERT_EQ(commands.exitCode, 0) << commands.err;
         ASSERT_EQ(shell("\"$HEXRAY\" render scene.json -o single.png").exitCode, 0);
     }
@@ -42,8 +42,10 @@ protected:
                        const std::string& tiles) {
         const std::string path = "PATH=\"$(dirname \"$HEXRAY\"):$PATH\" SLURM_CPUS_PER_TASK=1";
         return shell("n=$(cat " + tiles + "); pids=''; for i in $(seq 0 $((n - 1))); do " + path + " " + variable +
-                     "=$i bash " + tileScript + " & pids=\"$pids $!\"; done; for p in $pids; do wait $p || exit 9; "
-                     "done; " + path + " bash " + mergeScript);
+                     "=$i bash " + tileScript +
+                     " & pids=\"$pids $!\"; done; for p in $pids; do wait $p || exit 9; "
+                     "done; " +
+                     path + " bash " + mergeScript);
     }
 };
 
@@ -63,9 +65,10 @@ TEST_F(ScaleOutCliTest, TheSlurmArraysTilesMergeIntoTheSingleRender) {
 }
 
 TEST_F(ScaleOutCliTest, AMissingTaskMakesTheMergeFailNamingItsTile) {
-    const RunResult run = shell("for i in 0 1 2 4 5 6 7; do PATH=\"$(dirname \"$HEXRAY\"):$PATH\" "
-                                "JOB_COMPLETION_INDEX=$i sh k8s-tile.sh || exit 9; done; "
-                                "PATH=\"$(dirname \"$HEXRAY\"):$PATH\" sh k8s-merge.sh");
+    const RunResult run = shell(
+        "for i in 0 1 2 4 5 6 7; do PATH=\"$(dirname \"$HEXRAY\"):$PATH\" "
+        "JOB_COMPLETION_INDEX=$i sh k8s-tile.sh || exit 9; done; "
+        "PATH=\"$(dirname \"$HEXRAY\"):$PATH\" sh k8s-merge.sh");
     EXPECT_EQ(run.exitCode, 2) << run.err;
     EXPECT_NE(run.err.find("missing tile 3/8, rows 16-21"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(dir_ / "frame.png"));

@@ -41,8 +41,8 @@ protected:
         std::string pieces;
         for (std::uint32_t i = tiles; i-- > 0;) {
             const std::string piece = "piece-" + std::to_string(i) + extension;
-            const RunResult run = hexray(render + " --tile " + std::to_string(i) + "/" + std::to_string(tiles) +
-                                         " -o " + piece);
+            const RunResult run =
+                hexray(render + " --tile " + std::to_string(i) + "/" + std::to_string(tiles) + " -o " + piece);
             EXPECT_EQ(run.exitCode, 0) << run.err;
             pieces += " " + piece;
         }
@@ -52,9 +52,9 @@ protected:
     // Renders the CPU reference's `tiles` tiles of a small image as piece-I.EXTENSION.
     void renderPieces(std::uint32_t tiles, const std::string& extension) {
         for (std::uint32_t i = 0; i < tiles; ++i) {
-            const RunResult run = hexray("render " + scene("spheres-and-lights.json") + kImage + " --backend cpu --tile " +
-                                         std::to_string(i) + "/" + std::to_string(tiles) + " -o piece-" +
-                                         std::to_string(i) + extension);
+            const RunResult run =
+                hexray("render " + scene("spheres-and-lights.json") + kImage + " --backend cpu --tile " +
+                       std::to_string(i) + "/" + std::to_string(tiles) + " -o piece-" + std::to_string(i) + extension);
             ASSERT_EQ(run.exitCode, 0) << run.err;
         }
     }
@@ -133,7 +133,8 @@ TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem)
     for (const char* tile : {"0/3", "1/3", "2/3"}) {
         ASSERT_EQ(hexray(render + " --tile " + tile).exitCode, 0);
     }
-    ASSERT_EQ(hexray("render " + scene("lecture-demo.json") + " --width 67 --height 53 --spp 2 --backend cpu "
+    ASSERT_EQ(hexray("render " + scene("lecture-demo.json") +
+                     " --width 67 --height 53 --spp 2 --backend cpu "
                      "--tile 1/3 -o other-spp.png")
                   .exitCode,
               0);
@@ -153,8 +154,9 @@ TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem)
         {first + middle + middle + last, "lecture-demo.tile-1-of-3.png: given twice"},
         {first + " other-spp.png" + last,
          "other-spp.png: a tile of another image than lecture-demo.tile-0-of-3.png: spp 2 (not 4)"},
-        {first + " other-count.png" + last, "other-count.png: a tile of another image than "
-                                            "lecture-demo.tile-0-of-3.png: tile count 4 (not 3)"},
+        {first + " other-count.png" + last,
+         "other-count.png: a tile of another image than "
+         "lecture-demo.tile-0-of-3.png: tile count 4 (not 3)"},
         {first + " whole.png" + last, "whole.png: not a piece of a tiled render (no hexray-tile stamp"},
         {first + " nothing.png" + last, "nothing.png: cannot open: No such file or directory"},
     };

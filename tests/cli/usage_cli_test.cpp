@@ -96,7 +96,8 @@ protected:
 };
 
 TEST_F(ProgressCliTest, RenderShowsRowsDoneAndTimeLeftOnATerminalOnBothBackends) {
-    const std::string cpu = "render " + scene("lecture-demo.json") + " --backend cpu --width 200 --height 1500 -o c.png";
+    const std::string cpu =
+        "render " + scene("lecture-demo.json") + " --backend cpu --width 200 --height 1500 -o c.png";
     RunResult run = onTerminal(cpu);
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
     EXPECT_TRUE(std::regex_search(run.out, std::regex("rendering [^:]*lecture-demo.json: \\d+% \\(\\d+ of 1500 "
@@ -105,14 +106,16 @@ TEST_F(ProgressCliTest, RenderShowsRowsDoneAndTimeLeftOnATerminalOnBothBackends)
     // The GPU's bands of 256 MiB of pixels: 1024 rows each at this width.
     run = onTerminal("render " + scene("lecture-demo.json") + " --backend gpu --width 16384 --height 2100 -o g.png");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    EXPECT_TRUE(std::regex_search(run.out, std::regex("rendering [^:]*: \\d+% \\(\\d+ of 2100 rows\\), \\d+\\.\\d s left")))
+    EXPECT_TRUE(
+        std::regex_search(run.out, std::regex("rendering [^:]*: \\d+% \\(\\d+ of 2100 rows\\), \\d+\\.\\d s left")))
         << run.out;
 }
 
 TEST_F(ProgressCliTest, CompareAndALargeSceneLoadShowProgressOnATerminal) {
     RunResult run = onTerminal("compare " + scene("lecture-demo.json"));
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    EXPECT_TRUE(std::regex_search(run.out, std::regex("comparing [^:]*: \\d+% \\(\\d+ of 600 rows\\), \\d+\\.\\d s left")))
+    EXPECT_TRUE(
+        std::regex_search(run.out, std::regex("comparing [^:]*: \\d+% \\(\\d+ of 600 rows\\), \\d+\\.\\d s left")))
         << run.out;
     // Some 3 MB of spheres: progress every MiB parsed.
     {
@@ -120,27 +123,30 @@ TEST_F(ProgressCliTest, CompareAndALargeSceneLoadShowProgressOnATerminal) {
         big << R"({"image": {"width": 8, "height": 8}, "camera": {"position": [0, 0, -10]},)"
             << R"("shaders": {"s": {"type": "constant", "color": [1, 1, 1]}}, "nodes": [)";
         for (int i = 0; i < 40000; ++i) {
-            big << (i ? "," : "") << R"({"geometry": {"type": "sphere", "center": [)" << i << R"(, 0.5, 100], "radius": 0.25}, "shader": "s"})";
+            big << (i ? "," : "") << R"({"geometry": {"type": "sphere", "center": [)" << i
+                << R"(, 0.5, 100], "radius": 0.25}, "shader": "s"})";
         }
         big << "]}";
     }
     run = onTerminal("render big.json --backend cpu -o big.png");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    EXPECT_TRUE(std::regex_search(run.out, std::regex("loading big.json: \\d+% \\(\\d\\.\\d of \\d\\.\\d MB\\)"))) << run.out;
+    EXPECT_TRUE(std::regex_search(run.out, std::regex("loading big.json: \\d+% \\(\\d\\.\\d of \\d\\.\\d MB\\)")))
+        << run.out;
 }
 
 TEST_F(ProgressCliTest, BenchShowsMeasurementsDoneAndTimeLeftOnATerminal) {
     const RunResult run = onTerminal("bench " + scene("lecture-demo.json") +
                                      " --width 64 --height 48 --rounds 2 --samples 1 --reference-samples 1");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    EXPECT_TRUE(std::regex_search(
-        run.out, std::regex("bench: \\d+% \\(\\d+ of \\d+ measurements\\), \\d+\\.\\d s left")))
+    EXPECT_TRUE(
+        std::regex_search(run.out, std::regex("bench: \\d+% \\(\\d+ of \\d+ measurements\\), \\d+\\.\\d s left")))
         << run.out;
     EXPECT_EQ(run.out.find("bench: round 1 of 2"), std::string::npos) << run.out;
 }
 
 TEST_F(ProgressCliTest, NothingIsShownWhenStandardErrorIsNotATerminal) {
-    const RunResult run = hexray("render " + scene("lecture-demo.json") + " --backend cpu --width 200 --height 1500 -o c.png");
+    const RunResult run =
+        hexray("render " + scene("lecture-demo.json") + " --backend cpu --width 200 --height 1500 -o c.png");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.err, "");
     const RunResult compare = hexray("compare " + scene("lecture-demo.json"));

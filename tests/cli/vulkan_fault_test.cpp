@@ -55,7 +55,8 @@ TEST_P(VulkanFaultTest, BackendGpuFailsWithItsMessageAndExitCodeAndNoOutput) {
         const RunResult run = hexray(render(target, "gpu"), fault.environment);
         EXPECT_EQ(run.exitCode, fault.exitCode) << run.err;
         EXPECT_NE(run.err.find(std::string("hexray: error: ") + fault.message), std::string::npos)
-            << "expected \"" << fault.message << "\" in:\n" << run.err;
+            << "expected \"" << fault.message << "\" in:\n"
+            << run.err;
         EXPECT_EQ(run.out, "");
     }
     EXPECT_EQ(readFile(dir_ / "existing.png"), "keep me");
@@ -72,7 +73,8 @@ TEST_P(VulkanFaultTest, BackendAutoSaysWhyAndRendersOnTheCpuReference) {
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << "one line:\n" << run.err;
     EXPECT_NE(run.out.find("wrote auto.png (64x48) — cpu reference"), std::string::npos) << run.out;
 
-    const RunResult cpu = hexray("render " + scene("lecture-demo.json") + " -o cpu.png --width 64 --height 48 --backend cpu");
+    const RunResult cpu =
+        hexray("render " + scene("lecture-demo.json") + " -o cpu.png --width 64 --height 48 --backend cpu");
     ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
     EXPECT_EQ(readPng(dir_ / "auto.png").bytes, readPng(dir_ / "cpu.png").bytes);
     std::vector<std::string> files = createdFiles();
@@ -88,17 +90,17 @@ TEST_P(VulkanFaultTest, BackendAutoSaysWhyAndRendersOnTheCpuReference) {
 
 INSTANTIATE_TEST_SUITE_P(
     Faults, VulkanFaultTest,
-    ::testing::Values(
-        Fault{"NoDriver", kNoDriver, "", 3, "no Vulkan driver found"},
-        Fault{"NoComputeQueue", inject("no-compute-queue"), "", 3,
-              "no Vulkan device has a compute queue (devices: 0: llvmpipe"},
-        Fault{"NoFloat64", inject("no-float64"), "--precision f64", 3,
-              "--precision f64 needs shaderFloat64, which llvmpipe"},
-        Fault{"DeviceLost", inject("device-lost"), "", 7,
-              "the Vulkan device was lost while rendering on llvmpipe"},
-        Fault{"DeviceHang", inject("device-hang"), "", 7, "the Vulkan device timed out: a render did not finish within 60 s on llvmpipe"},
-        Fault{"OutOfDeviceMemory", inject("out-of-device-memory"), "", 8,
-              "out of memory while allocating a 1 KiB buffer (ErrorOutOfDeviceMemory)"}),
+    ::testing::Values(Fault{"NoDriver", kNoDriver, "", 3, "no Vulkan driver found"},
+                      Fault{"NoComputeQueue", inject("no-compute-queue"), "", 3,
+                            "no Vulkan device has a compute queue (devices: 0: llvmpipe"},
+                      Fault{"NoFloat64", inject("no-float64"), "--precision f64", 3,
+                            "--precision f64 needs shaderFloat64, which llvmpipe"},
+                      Fault{"DeviceLost", inject("device-lost"), "", 7,
+                            "the Vulkan device was lost while rendering on llvmpipe"},
+                      Fault{"DeviceHang", inject("device-hang"), "", 7,
+                            "the Vulkan device timed out: a render did not finish within 60 s on llvmpipe"},
+                      Fault{"OutOfDeviceMemory", inject("out-of-device-memory"), "", 8,
+                            "out of memory while allocating a 1 KiB buffer (ErrorOutOfDeviceMemory)"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(CliTest, WithoutFloat64AutoPrecisionStaysOnTheGpuInF32) {
@@ -139,13 +141,13 @@ TEST_F(CliTest, AnUnknownInjectedFaultIsAnErrorNotIgnored) {
 }
 
 TEST_F(CliTest, TwoRendersAtOnceBothFinishWithTheSequentialImage) {
-    const std::string render =
-        "'" HEXRAY_EXECUTABLE "' render " + scene("spheres-and-lights.json") + " --backend gpu --width 800 --height 600 --spp 2";
+    const std::string render = "'" HEXRAY_EXECUTABLE "' render " + scene("spheres-and-lights.json") +
+                               " --backend gpu --width 800 --height 600 --spp 2";
     const RunResult sequential = hexray("render " + scene("spheres-and-lights.json") +
                                         " --backend gpu --width 800 --height 600 --spp 2 -o sequential.png");
     ASSERT_EQ(sequential.exitCode, 0) << sequential.err;
-    const std::string command = "cd '" + dir_.string() + "' && (" + render + " -o a.png >a.log 2>&1 & a=$!; " +
-                                render + " -o b.png >b.log 2>&1 & b=$!; wait $a; ra=$?; wait $b; rb=$?; " +
+    const std::string command = "cd '" + dir_.string() + "' && (" + render + " -o a.png >a.log 2>&1 & a=$!; " + render +
+                                " -o b.png >b.log 2>&1 & b=$!; wait $a; ra=$?; wait $b; rb=$?; " +
                                 "exit $((ra * 16 + rb)))";
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));

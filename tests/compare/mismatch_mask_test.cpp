@@ -25,8 +25,8 @@ TEST(MismatchMask, EachKindOfDisagreementHasItsColour) {
     ambiguity[5].flags = PixelClass::litBit(0);
     ambiguity[6].flags = PixelClass::kOddCheckerBit;
     const Rgb8Image mask = mismatchMask(referenceClasses, testClasses, ambiguity, reference, test);
-    EXPECT_EQ(mask.bytes, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 0, 255, 255, 0, 255, 0, 0, 0, 64, 255, 255, 255, 0,
-                                                     255, 0, 0}));
+    EXPECT_EQ(mask.bytes, (std::vector<std::uint8_t>{0, 0, 0,  0,   0,   0,   255, 255, 0, 255, 0,
+                                                     0, 0, 64, 255, 255, 255, 0,   255, 0, 0}));
 }
 
 TEST(MismatchMask, NearTiedAndAgreeingIsNavy) {

@@ -42,8 +42,7 @@ TEST(JudgePixel, NearTiedOnAShadowEdgeOfLightTwoStillMustAgreeOnTheRest) {
         EXPECT_EQ(judgePixel(reference, {0, (kLight0 | kLight2 | kLight3) & ~lost}, shadowEdge).mismatch,
                   Mismatch::Lights);
     }
-    EXPECT_EQ(judgePixel(reference, {0, kLight0 | kLight1 | kLight2 | kLight3}, shadowEdge).mismatch,
-              Mismatch::Lights);
+    EXPECT_EQ(judgePixel(reference, {0, kLight0 | kLight1 | kLight2 | kLight3}, shadowEdge).mismatch, Mismatch::Lights);
 }
 
 TEST(JudgePixel, TheColourIsComparedWhenTheNearTiedDecisionWentTheSameWay) {
@@ -111,8 +110,8 @@ TEST(RenderComparator, CountsInvalidColoursOnEveryPixel) {
     test.pixels[0].b = std::numeric_limits<float>::infinity();
     reference.pixels[2].r = -0.5f;
     const std::vector<PixelClass> classes(3);
-    const RenderComparison comparison = compareRenders(reference, classes, PixelMask{true, false, true}, test,
-                                                       classes, Encoding::Linear);
+    const RenderComparison comparison =
+        compareRenders(reference, classes, PixelMask{true, false, true}, test, classes, Encoding::Linear);
     EXPECT_EQ(comparison.invalidColours, 2u);
     EXPECT_FALSE(judge(comparison, Tolerance{}).valuesOk);
     EXPECT_FALSE(judge(comparison, Tolerance{}).passed());

@@ -21,8 +21,9 @@ struct Pair {
             test.pixels[i] = reference.pixels[i] + glm::vec3(i % 3 == 0 ? 0.01f * float(i) : 0.0f, 0.0f, -0.002f);
             referenceClasses[i] = PixelClass{std::uint32_t(i % 2), 0};
             testClasses[i] = PixelClass{std::uint32_t(i % 7 == 0 ? 1 - i % 2 : i % 2), i % 5 == 0 ? 2u : 0u};
-            ambiguity[i] = i % 6 == 1 ? PixelAmbiguity{true, 0, false} : i % 4 == 3 ? PixelAmbiguity{false, 2, false}
-                                                                    : PixelAmbiguity{};
+            ambiguity[i] = i % 6 == 1   ? PixelAmbiguity{true, 0, false}
+                           : i % 4 == 3 ? PixelAmbiguity{false, 2, false}
+                                        : PixelAmbiguity{};
         }
     }
 };

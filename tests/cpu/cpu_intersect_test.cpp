@@ -58,8 +58,8 @@ TEST(IntersectPlane, FromBelowFacesDown) {
 }
 
 TEST(IntersectPlane, MissesWhenGoingAway) {
-    EXPECT_FALSE(intersectPlane(rayFrom({0, 5, 0}, {1, 1, 0}), Plane{0.0}));   // above, going up
-    EXPECT_FALSE(intersectPlane(rayFrom({0, -5, 0}, {1, -1, 0}), Plane{0.0})); // below, going down
+    EXPECT_FALSE(intersectPlane(rayFrom({0, 5, 0}, {1, 1, 0}), Plane{0.0}));    // above, going up
+    EXPECT_FALSE(intersectPlane(rayFrom({0, -5, 0}, {1, -1, 0}), Plane{0.0}));  // below, going down
 }
 
 TEST(IntersectPlane, ParallelMissesForBothSignedZeros) {

@@ -144,7 +144,8 @@ TEST(SphereCrossingMargin, RayExactlyThroughTheSilhouetteIsZero) {
 TEST(SphereCrossingMargin, RayThroughTheCentreIsRadiusOverDistancePlusRadius) {
     // D = 10, r = 1: the chord would have to shrink by r, the roots lie at 9 and 11 from the eye.
     const Sphere sphere{{0, 0, 10}, 1.0};
-    const double margin = sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, sphereScale(sphere, kOrigin));
+    const double margin =
+        sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, kInfinity, sphereScale(sphere, kOrigin));
     EXPECT_DOUBLE_EQ(margin, 1.0 / 11.0);
     EXPECT_GE(margin, kFloat32Bound);
 }
@@ -180,7 +181,8 @@ TEST(SphereCrossingMargin, TangentBeyondTheLightDecidesNothing) {
     // The same line grazes a sphere 10 beyond the segment's end at 20: the sphere must reach the
     // end too, sqrt(101) - 1 away.
     const Sphere sphere{{1, 0, 30}, 1.0};
-    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0), (std::sqrt(101.0) - 1.0) / 40.0);
+    EXPECT_DOUBLE_EQ(sphereCrossingMargin(rayFrom(kOrigin, {0, 0, 1}), sphere, 20.0, 40.0),
+                     (std::sqrt(101.0) - 1.0) / 40.0);
 }
 
 TEST(SphereCrossingMargin, SegmentEndingOnASphereIsZero) {
@@ -218,9 +220,11 @@ TEST(SphereCrossingMargins, AnEndAHairFromTheSurfaceIsNearTiedHoweverFarTheRoot)
     // seed 2010831) meets it.
     const Sphere sphere{{0, 0, 0}, 10.0};
     const double height = 10.0 - 1e-6;
-    const SphereCrossingMargins toTheLight = sphereCrossingMargins(rayFrom({-20, height, 0}, {1, 0, 0}), sphere, 20.0, 1.0);
+    const SphereCrossingMargins toTheLight =
+        sphereCrossingMargins(rayFrom({-20, height, 0}, {1, 0, 0}), sphere, 20.0, 1.0);
     EXPECT_NEAR(toTheLight.ends, 1e-6, 1e-12);
-    const SphereCrossingMargins fromThePoint = sphereCrossingMargins(rayFrom({0, height, 0}, {1, 0, 0}), sphere, 20.0, 1.0);
+    const SphereCrossingMargins fromThePoint =
+        sphereCrossingMargins(rayFrom({0, height, 0}, {1, 0, 0}), sphere, 20.0, 1.0);
     EXPECT_NEAR(fromThePoint.ends, 1e-6, 1e-12);
     // A line that misses by 1e-7 and would touch 4.2e-3 beyond a segment's end 1e-6 outside the
     // sphere: the sphere reaches the range by reaching that end.
@@ -356,8 +360,8 @@ TEST(PlaneTextureScales, DistancePlusTheAxisOffsetOverGrazingCosine) {
 
 TEST(SphereCheckerMargin, MidCellIsTheNearestEdgeInNormalSpace) {
     // (4.5, 4.5) in cells of 9 degrees: latitude edges at 0 and 9, meridians at 0 and 9.
-    const double expected = std::min({sinDegrees(4.5), sinDegrees(9.0) - sinDegrees(4.5),
-                                      std::cos(glm::radians(4.5)) * sinDegrees(4.5)});
+    const double expected =
+        std::min({sinDegrees(4.5), sinDegrees(9.0) - sinDegrees(4.5), std::cos(glm::radians(4.5)) * sinDegrees(4.5)});
     EXPECT_NEAR(sphereCheckerMargin(normalAt(4.5, 4.5), 9.0, 1.0), expected, 1e-15);
     EXPECT_NEAR(sphereCheckerMargin(normalAt(4.5, 4.5), 9.0, 4.0), expected / 4.0, 1e-15);
 }
@@ -385,7 +389,8 @@ TEST(SphereCheckerMargin, MeridiansMeetAtThePoles) {
 TEST(SphereCheckerMargin, AMultipleOfSizeBeyondThePoleIsNoEdge) {
     // Size 50, latitude 80: the edges around it are 50 and 100, but no latitude reaches 100
     // (and sin 100 = sin 80, so counting it would make the point look like it is on an edge).
-    const double expected = std::min(sinDegrees(80.0) - sinDegrees(50.0), std::cos(glm::radians(80.0)) * sinDegrees(25.0));
+    const double expected =
+        std::min(sinDegrees(80.0) - sinDegrees(50.0), std::cos(glm::radians(80.0)) * sinDegrees(25.0));
     EXPECT_NEAR(sphereCheckerMargin(normalAt(25.0, 80.0), 50.0, 1.0), expected, 1e-15);
 }
 
@@ -416,9 +421,9 @@ TEST(RenderMargins, CheckerEdgeRowOfTheLectureSceneIsAmbiguous) {
     const std::optional<Hit> edgeHit = intersectGeometry(edgeRay, floor.geometry);
     ASSERT_TRUE(edgeHit);
     EXPECT_NEAR(std::remainder(edgeHit->point.z, size), 0.0, 1e-9);
-    EXPECT_LT(planeCheckerMargin(textureCoordinates(floor.geometry, *edgeHit), size,
-                                 planeTextureScales(*edgeHit, edgeRay)),
-              kFloat32Bound);
+    EXPECT_LT(
+        planeCheckerMargin(textureCoordinates(floor.geometry, *edgeHit), size, planeTextureScales(*edgeHit, edgeRay)),
+        kFloat32Bound);
 
     // Pixel (100, 500) aims at (-0.6, -0.4, 1) and lands at (-67.5, 15, -7.5): 7.5 from the
     // nearest edge in both directions, with nothing else close either.
@@ -621,8 +626,9 @@ TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
     Scene scene = makeRandomSpheresScene(3000, 1);
     for (const std::uint32_t samples : {1u, 4u}) {
         scene.image.samplesPerPixel = samples;
-        for (const auto& [name, roundoff] : {std::pair("f32", DecisionRoundoff{}),
-                                             std::pair("f64", DecisionRoundoff{FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF})}) {
+        for (const auto& [name, roundoff] :
+             {std::pair("f32", DecisionRoundoff{}),
+              std::pair("f64", DecisionRoundoff{FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF})}) {
             const double share = ambiguousShare(renderOnCpu(scene, 0, Acceleration::Auto, false, roundoff));
             std::printf("[ ambiguous ] 3000 random spheres, %u spp, %s: %.3f %%\n", samples, name, 100.0 * share);
             EXPECT_LT(share, 0.05);
@@ -633,9 +639,11 @@ TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
 // A light's term is computed to a tolerance unless the point's rounding is large beside the light's
 // distance: then the colour may honestly differ (seed 6000528: a huge sphere's wall a hair below a light).
 TEST(LightTermMargin, OnlyALightCloseBesideAWidelyRoundedPointLeavesTheColourOpen) {
-    EXPECT_GT(lightTermMargin(0.0, 2.0, FLOAT32_UNIT_ROUNDOFF), 1.0);      // the demo: a light at its own distance
-    EXPECT_GT(lightTermMargin(1000.0, 1.0, FLOAT32_UNIT_ROUNDOFF), 1.0);   // a sphere 1000 radii away: its normal roughly
-    EXPECT_LT(lightTermMargin(0.0, 2.4e5, FLOAT32_UNIT_ROUNDOFF), 1.0);    // a wall rounded on a 2.4e5 scale, 1 from the light
-    EXPECT_GT(lightTermMargin(0.0, 2.4e5, FLOAT64_UNIT_ROUNDOFF), 1.0);    // the same in double
+    EXPECT_GT(lightTermMargin(0.0, 2.0, FLOAT32_UNIT_ROUNDOFF), 1.0);  // the demo: a light at its own distance
+    EXPECT_GT(lightTermMargin(1000.0, 1.0, FLOAT32_UNIT_ROUNDOFF),
+              1.0);  // a sphere 1000 radii away: its normal roughly
+    EXPECT_LT(lightTermMargin(0.0, 2.4e5, FLOAT32_UNIT_ROUNDOFF),
+              1.0);  // a wall rounded on a 2.4e5 scale, 1 from the light
+    EXPECT_GT(lightTermMargin(0.0, 2.4e5, FLOAT64_UNIT_ROUNDOFF), 1.0);  // the same in double
     EXPECT_DOUBLE_EQ(lightTermMargin(1.0, 1.0, 0x1p-10), 0.25);
 }

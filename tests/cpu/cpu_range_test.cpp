@@ -41,8 +41,8 @@ void expectSoundHit(const Ray& ray, const Sphere& sphere, const std::string& whe
     EXPECT_NEAR(glm::length(hit->geometricNormal), 1.0, 1e-14) << where;
     EXPECT_NEAR(glm::length(hit->facingNormal), 1.0, 1e-14) << where;
     // On the sphere to rounding of the coordinates' magnitude.
-    const double magnitude = std::max({std::abs(sphere.center.x), std::abs(sphere.center.y),
-                                       std::abs(sphere.center.z)}) + sphere.radius;
+    const double magnitude =
+        std::max({std::abs(sphere.center.x), std::abs(sphere.center.y), std::abs(sphere.center.z)}) + sphere.radius;
     EXPECT_NEAR(glm::length(hit->point - sphere.center), sphere.radius, 1e-14 * magnitude) << where;
     const Scene scene = litSphereScene(sphere, ray.origin);
     const ShadedHit shaded = shadeHit(scene, scene.nodes[0], *hit);
@@ -83,8 +83,7 @@ TEST(CpuReferenceRange, SphereOffsetBy1e17HasUnitNormals) {
     const glm::dvec3 eye = offset + glm::dvec3(0, 60, -120);
     const glm::dvec3 toCentre = sphere.center - eye;  // exact: both are near 1e17 (the aims are not)
     for (const double aim : {0.0, 3.0, 7.5, 8.9}) {
-        expectSoundHit(towards(eye, toCentre + glm::dvec3(aim, aim / 2, 0)), sphere,
-                       "aim " + std::to_string(aim));
+        expectSoundHit(towards(eye, toCentre + glm::dvec3(aim, aim / 2, 0)), sphere, "aim " + std::to_string(aim));
     }
 }
 
@@ -100,13 +99,16 @@ TEST(CpuReferenceRange, RadiiAndOffsetsAcrossTheSupportedRange) {
                 const double offset = std::min(sign * std::pow(10.0, offsetExponent), kMaxSceneLength / 2);
                 const glm::dvec3 center(offset, -0.5 * offset, 0.25 * offset);
                 for (const double distance : {1.5 * radius, 1e12 * radius, 0.3 * radius}) {
-                    if (std::abs(offset) + distance > kMaxSceneLength) continue;
+                    if (std::abs(offset) + distance > kMaxSceneLength)
+                        continue;
                     const glm::dvec3 eye = center - glm::dvec3(0.0, 0.0, distance);
                     for (const double aim : {0.0, 0.5, 0.999}) {
                         const glm::dvec3 target = center + glm::dvec3(aim * radius, 0.0, 0.0);
-                        if (target - eye == glm::dvec3(0.0)) continue;
+                        if (target - eye == glm::dvec3(0.0))
+                            continue;
                         const Ray ray = towards(eye, target - eye);
-                        if (!intersectSphere(ray, Sphere{center, radius})) continue;  // aim lost to rounding
+                        if (!intersectSphere(ray, Sphere{center, radius}))
+                            continue;  // aim lost to rounding
                         expectSoundHit(ray, Sphere{center, radius},
                                        "radius " + std::to_string(radius) + " offset " + std::to_string(offset) +
                                            " distance " + std::to_string(distance) + " aim " + std::to_string(aim));

@@ -16,8 +16,7 @@ using namespace hexray;
 
 namespace {
 
-void expectPixel(const Image& image, std::uint32_t x, std::uint32_t y, const Color& expected,
-                 double tolerance = 1e-6) {
+void expectPixel(const Image& image, std::uint32_t x, std::uint32_t y, const Color& expected, double tolerance = 1e-6) {
     // The image holds float: compare with the expected value rounded the same way.
     const glm::vec3& actual = image.at(x, y);
     const glm::vec3 expectedFloat(expected);
@@ -198,7 +197,7 @@ TEST(CpuBandRenderer, RowsPerBandGrowWithTheBytesAndShrinkWithTheWidth) {
     const std::size_t pixelBytes = sizeof(glm::vec3) + sizeof(PixelClass) + sizeof(float) + sizeof(PixelAmbiguity);
     const CpuBandRenderer renderer(scene, 1);
     EXPECT_EQ(renderer.rowsPerBand(37 * pixelBytes * 5), 5u);
-    EXPECT_EQ(renderer.rowsPerBand(1), 1u);                  // at least one row
+    EXPECT_EQ(renderer.rowsPerBand(1), 1u);                      // at least one row
     EXPECT_EQ(renderer.rowsPerBand(std::size_t(1) << 40), 23u);  // at most the image
     // AOVs take room too: fewer rows in the same bytes.
     EXPECT_LT(CpuBandRenderer(scene, 1, Acceleration::Auto, true).rowsPerBand(37 * pixelBytes * 5), 5u);

@@ -73,7 +73,7 @@ TEST(CheckerParity, LargeCoordinates) {
     // 1e7 / 20 = 500000, even; one cell further is odd.
     EXPECT_EQ(checkerParity(1e7, 0.5, 20), 0);
     EXPECT_EQ(checkerParity(1e7 + 20, 0.5, 20), 1);
-    EXPECT_EQ(checkerParity(-1e7 - 10, 0.5, 20), 1);  // cell -500001
+    EXPECT_EQ(checkerParity(-1e7 - 10, 0.5, 20), 1);      // cell -500001
     EXPECT_EQ(checkerParity(1e7 + 10, 1e7 + 30, 20), 1);  // 500000 + 500001
     // The largest odd integer a double holds exactly, 2^53 - 1.
     const double largestOdd = 9007199254740991.0;
@@ -163,8 +163,8 @@ TEST(Lambert, AmbientAndLightColourAndFalloff) {
 TEST(Lambert, LightsAddUp) {
     Scene scene;
     scene.ambient = Color(0.15);
-    scene.lights.push_back(lightAt({0, 100, 0}, 10000));              // 1.0
-    scene.lights.push_back(lightAt({0, 10, 0}, 25, {0, 1, 0}));       // 0.25 green
+    scene.lights.push_back(lightAt({0, 100, 0}, 10000));         // 1.0
+    scene.lights.push_back(lightAt({0, 10, 0}, 25, {0, 1, 0}));  // 0.25 green
     expectNear(incidentLight(scene, kGround, planeHitFromAbove(0, 0)), {1.15, 1.4, 1.15}, 1e-14);
 }
 
@@ -232,8 +232,8 @@ TEST(Shadow, PlaneNeedsNoOffset) {
     Scene scene;
     scene.shaders.push_back(LambertShader{});
     scene.nodes.push_back(Node{Plane{0.1}, 0});
-    const std::optional<Hit> hit = intersectPlane(Ray{{0.3, 1e4, 0.7}, glm::normalize(glm::dvec3(0.1, -1, 0.2))},
-                                                  Plane{0.1});
+    const std::optional<Hit> hit =
+        intersectPlane(Ray{{0.3, 1e4, 0.7}, glm::normalize(glm::dvec3(0.1, -1, 0.2))}, Plane{0.1});
     ASSERT_TRUE(hit);
     EXPECT_TRUE(isLightVisible(scene, Plane{0.1}, *hit, {1e4, 0.1 + 1e-9, -3e4}));  // nearly grazing
 }
@@ -269,8 +269,8 @@ std::pair<int, int> countSelfShadowing(const Sphere& sphere, bool fromInside, bo
     int tried = 0;
     for (int i = 0; i < 40; ++i) {
         for (int j = 0; j < 40; ++j) {
-            const glm::dvec3 target = sphere.center + sphere.radius * 0.95 *
-                glm::dvec3((i - 19.5) / 20.0, (j - 19.5) / 20.0, -0.3);
+            const glm::dvec3 target =
+                sphere.center + sphere.radius * 0.95 * glm::dvec3((i - 19.5) / 20.0, (j - 19.5) / 20.0, -0.3);
             const glm::dvec3 origin = fromInside ? sphere.center + glm::dvec3(0.1, -0.2, 0.3) * sphere.radius
                                                  : sphere.center + glm::dvec3(0.3, 0.2, -10.0) * sphere.radius;
             const glm::dvec3 direction = glm::normalize(fromInside ? origin - target : target - origin);
@@ -298,15 +298,15 @@ std::pair<int, int> countSelfShadowing(const Sphere& sphere, bool fromInside, bo
 }  // namespace
 
 TEST(Shadow, NoSelfShadowingOnSpheresAtAnyScale) {
-    for (const glm::dvec3& center : {glm::dvec3(0, 0, 0), glm::dvec3(1e3, -2e3, 5e2), glm::dvec3(1e6, 1e6, -1e6),
-                                     glm::dvec3(-3e8, 1e7, 2e8)}) {
+    for (const glm::dvec3& center :
+         {glm::dvec3(0, 0, 0), glm::dvec3(1e3, -2e3, 5e2), glm::dvec3(1e6, 1e6, -1e6), glm::dvec3(-3e8, 1e7, 2e8)}) {
         for (double radius : {1e-3, 1.0, 250.0}) {
             const Sphere sphere{center, radius};
             for (bool fromInside : {false, true}) {
                 const auto [selfShadowed, tried] = countSelfShadowing(sphere, fromInside, true);
                 EXPECT_GT(tried, 100);
-                EXPECT_EQ(selfShadowed, 0) << "centre " << center.x << " radius " << radius
-                                           << (fromInside ? " inside" : " outside");
+                EXPECT_EQ(selfShadowed, 0)
+                    << "centre " << center.x << " radius " << radius << (fromInside ? " inside" : " outside");
             }
         }
     }

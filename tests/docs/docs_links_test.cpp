@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 std::vector<fs::path> documents() {
     std::vector<fs::path> files = {test::sourcePath("README.md")};
     for (const auto& entry : fs::directory_iterator(test::sourcePath("docs"))) {
-        if (entry.path().extension() == ".md") files.push_back(entry.path());
+        if (entry.path().extension() == ".md")
+            files.push_back(entry.path());
     }
     return files;
 }
@@ -35,11 +36,12 @@ TEST(Docs, EveryRelativeLinkNamesAFileInTheRepository) {
         for (auto match = std::sregex_iterator(content.begin(), content.end(), link); match != std::sregex_iterator();
              ++match) {
             const std::string target = (*match)[1];
-            if (target.rfind("http://", 0) == 0 || target.rfind("https://", 0) == 0) continue;
+            if (target.rfind("http://", 0) == 0 || target.rfind("https://", 0) == 0)
+                continue;
             const fs::path resolved = fs::weakly_canonical(document.parent_path() / target);
             EXPECT_TRUE(fs::exists(resolved)) << document.filename() << ": " << target;
-            EXPECT_EQ(resolved.string().rfind(root.string(), 0), 0u) << document.filename() << ": " << target
-                                                                     << " is outside the repository";
+            EXPECT_EQ(resolved.string().rfind(root.string(), 0), 0u)
+                << document.filename() << ": " << target << " is outside the repository";
         }
         EXPECT_EQ(content.find("../shared"), std::string::npos) << document.filename();
     }

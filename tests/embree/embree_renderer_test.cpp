@@ -39,7 +39,9 @@ void expectAgreesWithTheReference(const Scene& scene, EmbreeTracing tracing) {
     EXPECT_TRUE(verdict.rmseOk) << comparison.encoded.rmse;
 
     // Not a vacuous agreement: the image shows spheres, the floor, lit and shadowed pixels.
-    const auto count = [&](auto predicate) { return std::count_if(embree.classes.begin(), embree.classes.end(), predicate); };
+    const auto count = [&](auto predicate) {
+        return std::count_if(embree.classes.begin(), embree.classes.end(), predicate);
+    };
     EXPECT_GT(count([](const PixelClass& c) { return c.node != PixelClass::kBackground && c.node > 0; }), 0);
     EXPECT_GT(count([](const PixelClass& c) { return c.node != PixelClass::kBackground && (c.flags >> 1) != 0; }), 0);
 }

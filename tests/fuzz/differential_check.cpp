@@ -35,8 +35,8 @@ public:
         const DecisionRoundoff roundoff = decisionRoundoff(precision);
         auto found = renders_.find(roundoff.general);
         if (found == renders_.end()) {
-            found = renders_.emplace(roundoff.general, renderOnCpu(scene_, 1, Acceleration::Auto, false, roundoff))
-                        .first;
+            found =
+                renders_.emplace(roundoff.general, renderOnCpu(scene_, 1, Acceleration::Auto, false, roundoff)).first;
         }
         return found->second;
     }
@@ -72,14 +72,15 @@ void judgeComparison(const RenderComparison& c, const Verdict& verdict, bool rob
         findings.push_back({"topology", where, topologyDetail(c.topology)});
     }
     if (robust && (!verdict.shareOk || !verdict.rmseOk)) {
-        findings.push_back({"colour", where,
-                            format("8-bit max %.0f levels, RMSE %.3f, %llu pixels > 1 level of %llu compared",
-                                   c.encoded.maxAbs, c.encoded.rmse,
-                                   static_cast<unsigned long long>(c.encoded.pixelsOverOneLevel),
-                                   static_cast<unsigned long long>(c.encoded.pixels))});
+        findings.push_back(
+            {"colour", where,
+             format("8-bit max %.0f levels, RMSE %.3f, %llu pixels > 1 level of %llu compared", c.encoded.maxAbs,
+                    c.encoded.rmse, static_cast<unsigned long long>(c.encoded.pixelsOverOneLevel),
+                    static_cast<unsigned long long>(c.encoded.pixels))});
     }
     if (judgeAmbiguity && !verdict.ambiguousOk) {
-        findings.push_back({"ambiguous", where, format("%.2f %% of the pixels near-tied", 100.0 * c.topology.ambiguousShare())});
+        findings.push_back(
+            {"ambiguous", where, format("%.2f %% of the pixels near-tied", 100.0 * c.topology.ambiguousShare())});
     }
 }
 
@@ -131,14 +132,13 @@ std::vector<Finding> checkRenders(GpuRenderer& renderer, const Scene& scene, con
                 const GpuRenderResult gpu =
                     render ? render(sized, plan) : renderer.render(sized, plan, GpuOutput::LinearAndClasses);
                 const CpuRender& cpu = references.at(plan.precision);
-                const RenderComparison comparison = compareRenders(cpu.image, cpu.classes, cpu.ambiguity, gpu.image,
-                                                                   gpu.classes, sized.image.encoding);
+                const RenderComparison comparison =
+                    compareRenders(cpu.image, cpu.classes, cpu.ambiguity, gpu.image, gpu.classes, sized.image.encoding);
                 judgeComparison(comparison, judge(comparison, options.tolerance),
                                 plan.formulation == Formulation::Robust,
                                 judgeAmbiguity && samples == options.samplesPerPixel.front() &&
                                     requested == judgedForAmbiguity && !request.generatedKernel,
-                                where,
-                                findings);
+                                where, findings);
                 for (std::size_t i = before; i < findings.size(); ++i) {
                     findings[i].precision = requested;
                     findings[i].samplesPerPixel = samples;

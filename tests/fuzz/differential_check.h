@@ -41,8 +41,9 @@ struct DifferentialOptions {
     std::uint32_t width = 32;
     std::uint32_t height = 24;
     std::vector<std::uint32_t> samplesPerPixel = {1, 4};
-    std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32, Precision::F64};  // f64 if the device has it
-    Tolerance tolerance;  // compare's defaults
+    std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32,
+                                         Precision::F64};  // f64 if the device has it
+    Tolerance tolerance;                                   // compare's defaults
     // Every render is made by the data-driven kernels (prebuilt: one pipeline per precision and
     // sample count for a whole run), with candidate lists (Always) or testing every node (None).
     // With generatedKernels, also by the kernels the render plan picks by default (for a small

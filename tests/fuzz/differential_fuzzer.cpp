@@ -33,8 +33,8 @@ namespace {
 struct FuzzOptions {
     double seconds = 120;
     std::uint64_t firstSeed = 0;
-    std::uint64_t seedStride = 1;  // the seeds checked: firstSeed, firstSeed + seedStride, ...
-    std::uint64_t scenes = 0;  // 0: until the time is up
+    std::uint64_t seedStride = 1;       // the seeds checked: firstSeed, firstSeed + seedStride, ...
+    std::uint64_t scenes = 0;           // 0: until the time is up
     std::optional<std::uint64_t> seed;  // one scene only, reported in full
     fs::path failures = HEXRAY_BINARY_DIR "/differential-failures";  // in the build tree, never the source tree
     std::uint32_t maxFailures = 5;
@@ -72,12 +72,15 @@ DifferentialOptions optionsFor(std::uint64_t seed, std::uint64_t generatedEvery)
 std::vector<Finding> findingsFor(GpuRenderer& renderer, const Scene& scene, std::uint64_t seed,
                                  std::uint64_t generatedEvery) {
     std::vector<Finding> findings;
-    if (auto finding = checkLoad(scene, false)) findings.push_back(*finding);
+    if (auto finding = checkLoad(scene, false))
+        findings.push_back(*finding);
     if (seed % kOutOfRangeEvery == 0) {
-        if (auto finding = checkLoad(generateOutOfRangeScene(seed), true)) findings.push_back(*finding);
+        if (auto finding = checkLoad(generateOutOfRangeScene(seed), true))
+            findings.push_back(*finding);
     }
     const DifferentialOptions options = optionsFor(seed, generatedEvery);
-    for (const Finding& finding : checkRenders(renderer, scene, options)) findings.push_back(finding);
+    for (const Finding& finding : checkRenders(renderer, scene, options))
+        findings.push_back(finding);
     renderer.releaseGeneratedKernels();
     return findings;
 }
@@ -105,7 +108,9 @@ fs::path writeShrunk(GpuRenderer& renderer, std::uint64_t seed, const Finding& f
 int run(const FuzzOptions& options) {
     const VulkanContext context({nullptr, options.device});
     const auto start = std::chrono::steady_clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     const std::uint64_t first = options.seed.value_or(options.firstSeed);
     const std::uint64_t limit = options.seed ? 1 : options.scenes;
     // One renderer for the run: the data-driven kernels' pipelines are built once; each scene's
@@ -124,12 +129,15 @@ int run(const FuzzOptions& options) {
         nearTied += !reasons.empty();
         if (options.seed) {
             std::printf("%s", sceneToJson(scene).c_str());
-            for (const std::string& reason : reasons) std::printf("near-tied: %s\n", reason.c_str());
+            for (const std::string& reason : reasons)
+                std::printf("near-tied: %s\n", reason.c_str());
         }
-        if (findings.empty()) continue;
+        if (findings.empty())
+            continue;
         ++failures;
         std::printf("FAIL seed %llu:\n", static_cast<unsigned long long>(seed));
-        for (const Finding& finding : findings) std::printf("  %s\n", describe(finding).c_str());
+        for (const Finding& finding : findings)
+            std::printf("  %s\n", describe(finding).c_str());
         if (options.shrink) {
             std::printf("  shrunk: %s\n", writeShrunk(renderer, seed, findings.front(), options.failures).c_str());
         }
@@ -139,12 +147,13 @@ int run(const FuzzOptions& options) {
         }
     }
     const double seconds = elapsed();
-    std::printf("%llu scenes (seeds %llu to %llu, every %llu) in %.1f s: %.2f scenes per second; %u failed; %llu with "
-                "something on a boundary or below resolution, their ambiguous share not held to the limit\n",
-                static_cast<unsigned long long>(done), static_cast<unsigned long long>(first),
-                static_cast<unsigned long long>(first + (done - 1) * options.seedStride),
-                static_cast<unsigned long long>(options.seedStride), seconds, double(done) / seconds, failures,
-                static_cast<unsigned long long>(nearTied));
+    std::printf(
+        "%llu scenes (seeds %llu to %llu, every %llu) in %.1f s: %.2f scenes per second; %u failed; %llu with "
+        "something on a boundary or below resolution, their ambiguous share not held to the limit\n",
+        static_cast<unsigned long long>(done), static_cast<unsigned long long>(first),
+        static_cast<unsigned long long>(first + (done - 1) * options.seedStride),
+        static_cast<unsigned long long>(options.seedStride), seconds, double(done) / seconds, failures,
+        static_cast<unsigned long long>(nearTied));
     return failures ? 1 : 0;
 }
 
@@ -163,13 +172,14 @@ int main(int argc, char** argv) {
     app.add_option("--scenes", options.scenes, "How many scenes (instead of --seconds)");
     app.add_option("--seed", options.seed, "Check only this seed's scene, and print it");
     app.add_option("--failures", options.failures, "Where shrunk failing scenes are written")->capture_default_str();
-    app.add_option("--max-failures", options.maxFailures, "Stop after this many failing scenes")
+    app.add_option("--max-failures", options.maxFailures, "Stop after this many failing scenes")->capture_default_str();
+    app.add_option(
+           "--generated-every", options.generatedEvery,
+           "Render about one scene in N with its generated kernel too, at one sample count (0: never); every scene "
+           "gets the data-driven ones")
         ->capture_default_str();
-    app.add_option("--generated-every", options.generatedEvery,
-                   "Render about one scene in N with its generated kernel too, at one sample count (0: never); every scene "
-                   "gets the data-driven ones")
-        ->capture_default_str();
-    app.add_flag("!--no-shrink", options.shrink, "Report failing seeds without shrinking them (replay one with --seed)");
+    app.add_flag("!--no-shrink", options.shrink,
+                 "Report failing seeds without shrinking them (replay one with --seed)");
     app.add_option("--device", options.device, "A Vulkan device by index or part of its name");
     CLI11_PARSE(app, argc, argv);
     try {

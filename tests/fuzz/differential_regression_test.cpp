@@ -28,7 +28,8 @@ std::vector<fs::path> differentialRegressions() {
     std::vector<fs::path> scenes;
     for (const auto& entry : fs::directory_iterator(test::sourcePath("tests/fuzz/regressions"))) {
         const std::string name = entry.path().filename().string();
-        if (name.starts_with("differential-") && entry.path().extension() == ".json") scenes.push_back(entry.path());
+        if (name.starts_with("differential-") && entry.path().extension() == ".json")
+            scenes.push_back(entry.path());
     }
     std::sort(scenes.begin(), scenes.end());
     return scenes;
@@ -36,7 +37,8 @@ std::vector<fs::path> differentialRegressions() {
 
 std::string described(const std::vector<test::Finding>& findings) {
     std::string text;
-    for (const test::Finding& finding : findings) text += "\n  " + test::describe(finding);
+    for (const test::Finding& finding : findings)
+        text += "\n  " + test::describe(finding);
     return text;
 }
 
@@ -52,7 +54,9 @@ TEST_P(DifferentialRegression, PassesTheDifferentialCheck) {
 INSTANTIATE_TEST_SUITE_P(Scenes, DifferentialRegression, ::testing::ValuesIn(differentialRegressions()),
                          [](const ::testing::TestParamInfo<fs::path>& info) {
                              std::string name = info.param.stem().string();
-                             std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                             std::replace_if(
+                                 name.begin(), name.end(),
+                                 [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
                              return name;
                          });
 
@@ -95,21 +99,24 @@ TEST_F(DifferentialCheck, CatchesOneNaNPixel) {
 
 TEST_F(DifferentialCheck, CatchesAnotherNodeShown) {
     const auto findings = findingsWith([](GpuRenderResult& r) {
-        for (PixelClass& c : r.classes) c.node = c.node == 0 ? 1 : 0;
+        for (PixelClass& c : r.classes)
+            c.node = c.node == 0 ? 1 : 0;
     });
     EXPECT_TRUE(has(findings, "topology")) << described(findings);
 }
 
 TEST_F(DifferentialCheck, CatchesALightLostEverywhere) {
     const auto findings = findingsWith([](GpuRenderResult& r) {
-        for (PixelClass& c : r.classes) c.flags &= ~PixelClass::litBit(0);
+        for (PixelClass& c : r.classes)
+            c.flags &= ~PixelClass::litBit(0);
     });
     EXPECT_TRUE(has(findings, "topology")) << described(findings);
 }
 
 TEST_F(DifferentialCheck, CatchesHalvedColours) {
     const auto findings = findingsWith([](GpuRenderResult& r) {
-        for (auto& pixel : r.image.pixels) pixel *= 0.5f;
+        for (auto& pixel : r.image.pixels)
+            pixel *= 0.5f;
     });
     EXPECT_TRUE(has(findings, "colour")) << described(findings);
 }

@@ -24,7 +24,8 @@ namespace {
 std::vector<fs::path> regressionInputs() {
     std::vector<fs::path> inputs;
     for (const auto& entry : fs::directory_iterator(fs::path(HEXRAY_SOURCE_DIR) / "tests/fuzz/regressions")) {
-        if (entry.is_regular_file() && entry.path().extension() == ".json") inputs.push_back(entry.path());
+        if (entry.is_regular_file() && entry.path().extension() == ".json")
+            inputs.push_back(entry.path());
     }
     std::sort(inputs.begin(), inputs.end());
     return inputs;
@@ -60,12 +61,15 @@ TEST_P(FuzzRegression, AcceptedWithInvariantsOrRejectedAtAPlace) {
 INSTANTIATE_TEST_SUITE_P(Inputs, FuzzRegression, ::testing::ValuesIn(regressionInputs()),
                          [](const ::testing::TestParamInfo<fs::path>& info) {
                              std::string name = info.param.stem().string();
-                             std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
-                                            '_');
+                             std::replace_if(
+                                 name.begin(), name.end(),
+                                 [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
                              return name;
                          });
 
-TEST(FuzzRegressionInputs, ThereAreSome) { EXPECT_GE(regressionInputs().size(), 5u); }
+TEST(FuzzRegressionInputs, ThereAreSome) {
+    EXPECT_GE(regressionInputs().size(), 5u);
+}
 
 // ---------------------------------------------------------------- the judge itself
 

@@ -33,9 +33,13 @@ constexpr double kSphereCellBounds = 1000.0;
 // view, or a pole where every meridian meets, is then near-tied over many pixels.
 constexpr double kSpherePixelBounds = 100.0;
 
-double magnitude(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+double magnitude(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
 
-bool coincide(double a, double b, double scale) { return std::abs(a - b) <= kCoincidence * scale; }
+bool coincide(double a, double b, double scale) {
+    return std::abs(a - b) <= kCoincidence * scale;
+}
 
 // A point on a surface, up to the rounding of the coordinates and distances involved. `reach`: how
 // far the point's rays run (a light's to any point the camera sees), against which its distance
@@ -55,7 +59,9 @@ double offMultiple(double x, double size) {
     return std::abs(x - size * std::nearbyint(x / size));
 }
 
-std::string name(const char* what, std::size_t index) { return std::string(what) + " " + std::to_string(index); }
+std::string name(const char* what, std::size_t index) {
+    return std::string(what) + " " + std::to_string(index);
+}
 
 class Reasons {
 public:
@@ -85,7 +91,8 @@ private:
             const double reach = glm::length(point - scene_.camera.position) + extent_;
             const bool on = std::holds_alternative<Plane>(g) ? onPlane(point, std::get<Plane>(g), reach)
                                                              : onSphere(point, std::get<Sphere>(g), reach);
-            if (on) add(what + " lies on node " + std::to_string(n));
+            if (on)
+                add(what + " lies on node " + std::to_string(n));
         }
     }
 
@@ -94,7 +101,8 @@ private:
     void touchingSurfaces() {
         for (std::size_t a = 0; a < scene_.nodes.size(); ++a) {
             const auto* sphere = std::get_if<Sphere>(&scene_.nodes[a].geometry);
-            if (!sphere) continue;
+            if (!sphere)
+                continue;
             for (std::size_t b = 0; b < scene_.nodes.size(); ++b) {
                 if (b != a && touches(*sphere, scene_.nodes[b].geometry)) {
                     add("node " + std::to_string(a) + " touches node " + std::to_string(b));
@@ -171,9 +179,10 @@ private:
                 add("the camera looks level at node " + std::to_string(n));
             }
             const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[scene_.nodes[n].shaderIndex]);
-            const bool edgeThroughEye = checker && (std::holds_alternative<Plane>(geometry)
-                                                        ? planeEdgeBelowEye(std::get<Plane>(geometry), checker->size)
-                                                        : sphereEdgeThroughEye(std::get<Sphere>(geometry), checker->size));
+            const bool edgeThroughEye =
+                checker && (std::holds_alternative<Plane>(geometry)
+                                ? planeEdgeBelowEye(std::get<Plane>(geometry), checker->size)
+                                : sphereEdgeThroughEye(std::get<Sphere>(geometry), checker->size));
             if (edgeThroughEye) {
                 add("a checker edge of node " + std::to_string(n) + " passes through the eye");
             }
@@ -202,10 +211,12 @@ private:
 
     void planeCellsOutOfScale(std::size_t n) {
         const auto* checker = std::get_if<CheckerShader>(&scene_.shaders[scene_.nodes[n].shaderIndex]);
-        if (!checker) return;
+        if (!checker)
+            return;
         const glm::dvec3& eye = scene_.camera.position;
         const double distance = std::abs(std::get<Plane>(scene_.nodes[n].geometry).height - eye.y);
-        if (checker->size < kFinestPlaneCell * (magnitude(eye) + distance) || checker->size > kCoarsestPlaneCell * distance) {
+        if (checker->size < kFinestPlaneCell * (magnitude(eye) + distance) ||
+            checker->size > kCoarsestPlaneCell * distance) {
             add("node " + std::to_string(n) + "'s checker cells are out of scale with the points seen on it");
         }
     }
@@ -234,6 +245,8 @@ private:
 
 }  // namespace
 
-std::vector<std::string> nearTieReasons(const Scene& scene) { return Reasons(scene).all(); }
+std::vector<std::string> nearTieReasons(const Scene& scene) {
+    return Reasons(scene).all();
+}
 
 }  // namespace hexray::test

@@ -27,11 +27,14 @@ Scene clearScene() {
 
 std::string reasonsOf(const Scene& scene) {
     std::string all;
-    for (const std::string& reason : test::nearTieReasons(scene)) all += reason + "; ";
+    for (const std::string& reason : test::nearTieReasons(scene))
+        all += reason + "; ";
     return all;
 }
 
-TEST(NearTieReasons, NoneInAnOrdinaryScene) { EXPECT_EQ(reasonsOf(clearScene()), ""); }
+TEST(NearTieReasons, NoneInAnOrdinaryScene) {
+    EXPECT_EQ(reasonsOf(clearScene()), "");
+}
 
 TEST(NearTieReasons, FindEachKind) {
     const auto reasonsWith = [](auto&& change) {
@@ -44,7 +47,9 @@ TEST(NearTieReasons, FindEachKind) {
     EXPECT_EQ(reasonsWith([](Scene& s) { std::get<Sphere>(s.nodes[1].geometry).center.y = -0.1; }),
               "node 1 touches node 0; ");
     EXPECT_EQ(reasonsWith([](Scene& s) { s.nodes.push_back(Node{Plane{-1.0}, 0}); }), "node 0 coincides with node 2; ");
-    EXPECT_EQ(reasonsWith([](Scene& s) { s.nodes.push_back(Node{Sphere{{0.1, 0.2, 2.0}, 0.8}, 0}); }),
+    EXPECT_EQ(reasonsWith([](Scene& s) {
+                  s.nodes.push_back(Node{Sphere{{0.1, 0.2, 2.0}, 0.8}, 0});
+              }),
               "node 1 touches node 2; node 2 touches node 1; ");
     EXPECT_EQ(reasonsWith([](Scene& s) { std::get<Sphere>(s.nodes[1].geometry).radius = 1e-30; }),
               "node 1 is smaller than the rounding of its position; ");

@@ -38,7 +38,8 @@ inline std::string readEveryRow(TilePiece& piece) {
             piece.readRgb8Rows(rgb);
             digest.addRgb8Rows(rgb);
         } else {
-            for (std::vector<float>* plane : {&red, &green, &blue}) plane->resize(rows * width);
+            for (std::vector<float>* plane : {&red, &green, &blue})
+                plane->resize(rows * width);
             piece.readFloatRows(rows, red, green, blue);
             digest.addFloatRows(red, green, blue);
         }

@@ -40,8 +40,10 @@ public:
     }
     // How many of something: 0 and 1 often, a few usually, now and then many (`many` at most).
     std::uint32_t count(std::uint32_t few, std::uint32_t many) {
-        if (chance(0.15)) return 0;
-        if (chance(0.1)) return few + 1 + below(many - few);
+        if (chance(0.15))
+            return 0;
+        if (chance(0.1))
+            return few + 1 + below(many - few);
         return 1 + below(few);
     }
 
@@ -52,7 +54,8 @@ private:
 // A length held within the supported range: 0 below it, the largest length above it.
 double supported(double length) {
     const double magnitude = std::abs(length);
-    if (magnitude < kMinSceneLength) return 0.0;
+    if (magnitude < kMinSceneLength)
+        return 0.0;
     return magnitude > kMaxSceneLength ? std::copysign(kMaxSceneLength, length) : length;
 }
 
@@ -61,8 +64,10 @@ glm::dvec3 supported(const glm::dvec3& point) {
 }
 
 Color colour(Draw& draw) {
-    if (draw.chance(0.05)) return Color(0.0);
-    if (draw.chance(0.05)) return Color(draw.chance(0.5) ? kMaxColorComponent : draw.logUniform(0, 3));
+    if (draw.chance(0.05))
+        return Color(0.0);
+    if (draw.chance(0.05))
+        return Color(draw.chance(0.5) ? kMaxColorComponent : draw.logUniform(0, 3));
     return {draw.unit(), draw.unit(), draw.unit()};
 }
 
@@ -80,7 +85,7 @@ struct Builder {
     // The scene's overall size: mostly ordinary, often anywhere in the range, sometimes at its
     // edges; the focus near the origin or far from it.
     void chooseScale() {
-        const double exponent = draw.chance(0.55)   ? draw.uniform(-3, 3)
+        const double exponent = draw.chance(0.55)  ? draw.uniform(-3, 3)
                                 : draw.chance(0.7) ? draw.uniform(-44, 44)
                                                    : draw.sign() * draw.uniform(45, 49);
         scale = std::pow(10.0, exponent);
@@ -91,8 +96,10 @@ struct Builder {
 
     // A length relative to the scale: mostly within a few times it, sometimes far smaller or larger.
     double relative(double ordinarySpread = 1.0) {
-        if (draw.chance(0.1)) return scale * draw.logUniform(-12, -3);
-        if (draw.chance(0.1)) return scale * draw.logUniform(2, 12);
+        if (draw.chance(0.1))
+            return scale * draw.logUniform(-12, -3);
+        if (draw.chance(0.1))
+            return scale * draw.logUniform(2, 12);
         return scale * draw.logUniform(-ordinarySpread, ordinarySpread);
     }
 
@@ -103,8 +110,12 @@ struct Builder {
         for (std::uint32_t i = 0; i < count; ++i) {
             scene.shaderNames.push_back(std::to_string(i).insert(0, 1, 's'));
             switch (draw.below(3)) {
-                case 0: scene.shaders.push_back(ConstantShader{colour(draw)}); break;
-                case 1: scene.shaders.push_back(LambertShader{colour(draw)}); break;
+                case 0:
+                    scene.shaders.push_back(ConstantShader{colour(draw)});
+                    break;
+                case 1:
+                    scene.shaders.push_back(LambertShader{colour(draw)});
+                    break;
                 default: {
                     // A sphere's cells are degrees, a plane's lengths: both scales appear.
                     const double size = draw.chance(0.5) ? draw.logUniform(-1, 2.5) : relative(2.0);
@@ -133,7 +144,8 @@ struct Builder {
     }
 
     Plane plane() {
-        if (onBoundaries && draw.chance(0.15)) return Plane{scene.camera.position.y};  // through the camera
+        if (onBoundaries && draw.chance(0.15))
+            return Plane{scene.camera.position.y};  // through the camera
         return Plane{supported(focus.y + draw.sign() * relative(1.0) * draw.uniform(0, 2))};
     }
 
@@ -141,7 +153,8 @@ struct Builder {
     std::vector<const Kind*> nodesOf() const {
         std::vector<const Kind*> found;
         for (const Node& node : scene.nodes) {
-            if (const auto* kind = std::get_if<Kind>(&node.geometry)) found.push_back(kind);
+            if (const auto* kind = std::get_if<Kind>(&node.geometry))
+                found.push_back(kind);
         }
         return found;
     }
@@ -169,7 +182,8 @@ struct Builder {
             const bool onSurface = onBoundaries && draw.chance(0.5);
             return supported(sphere.center + draw.axis() * sphere.radius * (onSurface ? 1.0 : draw.unit()));
         }
-        if (where < 0.25) return scene.camera.position;
+        if (where < 0.25)
+            return scene.camera.position;
         return supported(focus + draw.unitVector() * relative(1.0) * draw.uniform(0.5, 10));
     }
 
@@ -192,8 +206,11 @@ struct Builder {
         CameraSettings& camera = scene.camera;
         camera.position = supported(focus - draw.unitVector() * relative(0.5) * draw.uniform(2, 20));
         const double fov = draw.unit();
-        camera.fovDegrees = fov < 0.1 ? draw.logUniform(-2, 0) : fov < 0.2 ? draw.uniform(170, 179.9) : draw.uniform(30, 120);
-        if (draw.chance(0.1)) camera.aspect = draw.logUniform(-1, 1);
+        camera.fovDegrees = fov < 0.1   ? draw.logUniform(-2, 0)
+                            : fov < 0.2 ? draw.uniform(170, 179.9)
+                                        : draw.uniform(30, 120);
+        if (draw.chance(0.1))
+            camera.aspect = draw.logUniform(-1, 1);
         aimAt(focus);
         const double turn = draw.unit();
         if (turn < 0.15) {
@@ -202,13 +219,15 @@ struct Builder {
             camera.yawDegrees = draw.uniform(-360, 360);
             camera.pitchDegrees = draw.uniform(-90, 90);
         }
-        if (draw.chance(0.3)) camera.rollDegrees = draw.uniform(-180, 180);
+        if (draw.chance(0.3))
+            camera.rollDegrees = draw.uniform(-180, 180);
     }
 
     void aimAt(const glm::dvec3& target) {
         const glm::dvec3 offset = target - scene.camera.position;
         const double length = glm::length(offset);
-        if (!(length > 0.0) || !std::isfinite(length)) return;
+        if (!(length > 0.0) || !std::isfinite(length))
+            return;
         const glm::dvec3 d = offset / length;
         scene.camera.pitchDegrees = glm::degrees(std::asin(std::clamp(d.y, -1.0, 1.0)));
         scene.camera.yawDegrees = glm::degrees(std::atan2(-d.x, d.z));
@@ -258,17 +277,24 @@ Scene generateScene(std::uint64_t seed) {
 Scene generateOutOfRangeScene(std::uint64_t seed) {
     Scene scene = generateScene(seed);
     Draw draw(~seed);
-    const double beyond = draw.chance(0.5) ? kMaxSceneLength * draw.uniform(1.5, 1e10) : kMinSceneLength / draw.uniform(1.5, 1e10);
+    const double beyond =
+        draw.chance(0.5) ? kMaxSceneLength * draw.uniform(1.5, 1e10) : kMinSceneLength / draw.uniform(1.5, 1e10);
     switch (draw.below(4)) {
-        case 0: scene.camera.position.x = draw.sign() * beyond; break;
+        case 0:
+            scene.camera.position.x = draw.sign() * beyond;
+            break;
         case 1:
             if (!scene.lights.empty()) {
                 scene.lights[0].intensity = draw.chance(0.5) ? kMaxIntensity * 10.0 : kMinIntensity / 10.0;
                 break;
             }
             [[fallthrough]];
-        case 2: scene.nodes.push_back(Node{Sphere{{0.0, 0.0, 0.0}, beyond}, 0}); break;
-        default: scene.nodes.push_back(Node{Plane{draw.sign() * beyond}, 0}); break;
+        case 2:
+            scene.nodes.push_back(Node{Sphere{{0.0, 0.0, 0.0}, beyond}, 0});
+            break;
+        default:
+            scene.nodes.push_back(Node{Plane{draw.sign() * beyond}, 0});
+            break;
     }
     return scene;
 }

@@ -52,7 +52,8 @@ TEST(SceneGenerator, OutOfRangeScenesAreRejectedNamingTheRange) {
 bool holdsCamera(const Scene& scene) {
     for (const Node& node : scene.nodes) {
         const auto* sphere = std::get_if<Sphere>(&node.geometry);
-        if (sphere && glm::length(scene.camera.position - sphere->center) < sphere->radius) return true;
+        if (sphere && glm::length(scene.camera.position - sphere->center) < sphere->radius)
+            return true;
     }
     return false;
 }
@@ -80,18 +81,20 @@ TEST(SceneGenerator, ReachesTheEdges) {
     for (const std::uint64_t count : {noNodes, noLights, manyNodes, cameraInside, straightDown, tiny, huge}) {
         EXPECT_GT(count, kSeeds / 100);
     }
-    std::printf("of %llu scenes: no nodes %llu, no lights %llu, > 32 nodes %llu, camera in a sphere %llu, looking "
-                "straight down %llu, a radius < 1e-40 %llu, > 1e40 %llu\n",
-                static_cast<unsigned long long>(kSeeds), static_cast<unsigned long long>(noNodes),
-                static_cast<unsigned long long>(noLights), static_cast<unsigned long long>(manyNodes),
-                static_cast<unsigned long long>(cameraInside), static_cast<unsigned long long>(straightDown),
-                static_cast<unsigned long long>(tiny), static_cast<unsigned long long>(huge));
+    std::printf(
+        "of %llu scenes: no nodes %llu, no lights %llu, > 32 nodes %llu, camera in a sphere %llu, looking "
+        "straight down %llu, a radius < 1e-40 %llu, > 1e40 %llu\n",
+        static_cast<unsigned long long>(kSeeds), static_cast<unsigned long long>(noNodes),
+        static_cast<unsigned long long>(noLights), static_cast<unsigned long long>(manyNodes),
+        static_cast<unsigned long long>(cameraInside), static_cast<unsigned long long>(straightDown),
+        static_cast<unsigned long long>(tiny), static_cast<unsigned long long>(huge));
 }
 
 bool hasLargeSphere(const Scene& scene) {
     for (const Node& node : scene.nodes) {
         const auto* sphere = std::get_if<Sphere>(&node.geometry);
-        if (sphere && sphere->radius > 10.0) return true;
+        if (sphere && sphere->radius > 10.0)
+            return true;
     }
     return false;
 }
@@ -100,7 +103,8 @@ int significantDigits(double value) {
     for (int digits = 1; digits <= 17; ++digits) {
         char text[64];
         std::snprintf(text, sizeof text, "%.*e", digits - 1, value);
-        if (std::strtod(text, nullptr) == value) return digits;
+        if (std::strtod(text, nullptr) == value)
+            return digits;
     }
     return 17;
 }

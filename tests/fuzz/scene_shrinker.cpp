@@ -54,7 +54,8 @@ std::vector<Number> numbersOf(const Scene& scene) {
             numbers.push_back({[=](Scene& s) -> double& { return std::get<Plane>(s.nodes[i].geometry).height; }});
         } else {
             addTriple(numbers, [=](Scene& s) -> glm::dvec3& { return std::get<Sphere>(s.nodes[i].geometry).center; });
-            numbers.push_back({[=](Scene& s) -> double& { return std::get<Sphere>(s.nodes[i].geometry).radius; }, false});
+            numbers.push_back(
+                {[=](Scene& s) -> double& { return std::get<Sphere>(s.nodes[i].geometry).radius; }, false});
         }
     }
     return numbers;
@@ -87,7 +88,8 @@ Scene withoutShader(Scene scene, std::uint32_t index) {
 
 bool isUsed(const Scene& scene, std::uint32_t shader) {
     for (const Node& node : scene.nodes) {
-        if (node.shaderIndex == shader) return true;
+        if (node.shaderIndex == shader)
+            return true;
     }
     return false;
 }
@@ -110,9 +112,11 @@ public:
 private:
     // Takes `candidate` if it is valid and still fails.
     bool tryCandidate(const Scene& candidate) {
-        if (triesLeft_ == 0 || !loads(candidate)) return false;
+        if (triesLeft_ == 0 || !loads(candidate))
+            return false;
         --triesLeft_;
-        if (!fails_(candidate)) return false;
+        if (!fails_(candidate))
+            return false;
         best_ = candidate;
         return true;
     }
@@ -133,7 +137,8 @@ private:
             progress |= tryChange([&](Scene& s) { s.lights.erase(s.lights.begin() + std::ptrdiff_t(i)); });
         }
         for (std::uint32_t i = std::uint32_t(best_.shaders.size()); i-- > 0;) {
-            if (best_.shaders.size() > 1 && !isUsed(best_, i)) progress |= tryCandidate(withoutShader(best_, i));
+            if (best_.shaders.size() > 1 && !isUsed(best_, i))
+                progress |= tryCandidate(withoutShader(best_, i));
         }
         return progress;
     }
@@ -149,8 +154,8 @@ private:
                     tryChange([&](Scene& s) { s.camera.fovDegrees = straight.fovDegrees; });
         progress |= best_.image.sampling != Sampling::Center &&
                     tryChange([](Scene& s) { s.image.sampling = Sampling::Center; });
-        progress |= best_.image.encoding != Encoding::Srgb &&
-                    tryChange([](Scene& s) { s.image.encoding = Encoding::Srgb; });
+        progress |=
+            best_.image.encoding != Encoding::Srgb && tryChange([](Scene& s) { s.image.encoding = Encoding::Srgb; });
         return progress;
     }
 
@@ -159,9 +164,11 @@ private:
         for (const Number& number : numbersOf(best_)) {
             const double value = number.in(best_);
             std::vector<double> rounder;
-            if (number.mayBeZero && value != 0.0) rounder.push_back(0.0);
+            if (number.mayBeZero && value != 0.0)
+                rounder.push_back(0.0);
             for (int digits = 1; digits <= 3; ++digits) {
-                if (roundedTo(value, digits) != value) rounder.push_back(roundedTo(value, digits));
+                if (roundedTo(value, digits) != value)
+                    rounder.push_back(roundedTo(value, digits));
             }
             for (const double candidate : rounder) {
                 if (tryChange([&](Scene& s) { number.in(s) = candidate; })) {

@@ -28,7 +28,8 @@ constexpr char kName[] = "fuzz-piece";
 // The in-memory file, made once and refilled for each input.
 int memoryFile() {
     static const int descriptor = ::memfd_create(kName, MFD_CLOEXEC);
-    if (descriptor < 0) failWith("memfd_create", std::strerror(errno));
+    if (descriptor < 0)
+        failWith("memfd_create", std::strerror(errno));
     return descriptor;
 }
 
@@ -40,11 +41,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         failWith("cannot fill the in-memory file", std::strerror(errno));
     }
     const int own = ::dup(descriptor);  // the piece closes its descriptor
-    if (own < 0) failWith("dup", std::strerror(errno));
+    if (own < 0)
+        failWith("dup", std::strerror(errno));
     const bool png = size >= 8 && std::memcmp(data, "\x89PNG\r\n\x1a\n", 8) == 0;
-    const hexray::test::PieceVerdict verdict =
-        hexray::test::judgePiece(hexray::ReadOnlyFile(own, kName), png ? hexray::ImageFormat::Png
-                                                                        : hexray::ImageFormat::Exr);
+    const hexray::test::PieceVerdict verdict = hexray::test::judgePiece(
+        hexray::ReadOnlyFile(own, kName), png ? hexray::ImageFormat::Png : hexray::ImageFormat::Exr);
     if (verdict.violation) {
         failWith("broke the piece reader's contract", *verdict.violation);
     }

@@ -142,7 +142,8 @@ Scene manyLightsScene() {
 
 void expectSameAsEveryNode(GpuRenderer& renderer, const Scene& scene, Precision precision) {
     const GpuRenderResult every = renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::None);
-    const GpuRenderResult listed = renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::Always);
+    const GpuRenderResult listed =
+        renderer.render(scene, precision, GpuOutput::LinearClassesAndAov, Acceleration::Always);
     ASSERT_FALSE(every.usedCandidateLists);
     ASSERT_TRUE(listed.usedCandidateLists);
     std::size_t differentPixels = 0;
@@ -152,7 +153,8 @@ void expectSameAsEveryNode(GpuRenderer& renderer, const Scene& scene, Precision 
     for (std::size_t i = 0; i < every.classes.size(); ++i) {
         differentPixels += every.image.pixels[i] != listed.image.pixels[i];
         differentClasses += every.classes[i] != listed.classes[i];
-        const bool sameDepth = std::bit_cast<std::uint32_t>(every.depth[i]) == std::bit_cast<std::uint32_t>(listed.depth[i]);
+        const bool sameDepth =
+            std::bit_cast<std::uint32_t>(every.depth[i]) == std::bit_cast<std::uint32_t>(listed.depth[i]);
         differentAovs += !sameDepth || every.normals[i] != listed.normals[i];
         spheres += every.classes[i].node != PixelClass::kBackground && every.classes[i].node > 0;
     }

@@ -104,7 +104,8 @@ TEST_F(GpuRendererTest, LinearRowsComeInBandsThatAreTheWholeRendersRows) {
     std::vector<std::uint32_t> firstRows;
     GpuRenderResult joined;
     const GpuRenderResult result = banded.renderLinearRows(
-        scene, banded.plan(scene), GpuOutput::LinearClassesAndAov, [&](std::uint32_t firstRow, const GpuRenderResult& band) {
+        scene, banded.plan(scene), GpuOutput::LinearClassesAndAov,
+        [&](std::uint32_t firstRow, const GpuRenderResult& band) {
             firstRows.push_back(firstRow);
             EXPECT_EQ(band.image.width, 100u);
             EXPECT_EQ(band.image.height, std::min(16u, 75u - firstRow));
@@ -172,7 +173,8 @@ TEST_F(GpuRendererTest, AntiAliasingBlendsASilhouetteOnlyWhereItCrossesAPixel) {
     };
     const auto total = [](const Image& image) {
         double sum = 0;
-        for (const glm::vec3& p : image.pixels) sum += p.r;
+        for (const glm::vec3& p : image.pixels)
+            sum += p.r;
         return sum;
     };
     const Image sharp = renderer.render(scene).image;

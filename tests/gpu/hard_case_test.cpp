@@ -66,7 +66,8 @@ struct Outcome {
 
     std::uint64_t violations() const {
         std::uint64_t n = 0;
-        for (const Asserted& a : asserted) n += a.count.violations;
+        for (const Asserted& a : asserted)
+            n += a.count.violations;
         return n;
     }
 };
@@ -80,13 +81,15 @@ struct Render {
 
 struct HardCase {
     Margins margins{};
-    std::uint64_t minLit = 0;                            // per light: pixels whose lit bit is checked
-    std::uint64_t minChecker = 0;                        // pixels whose checker cell is checked (scenes with a checker)
-    bool assertShading = false;                          // colours against the model (otherwise printed only)
+    std::uint64_t minLit = 0;      // per light: pixels whose lit bit is checked
+    std::uint64_t minChecker = 0;  // pixels whose checker cell is checked (scenes with a checker)
+    bool assertShading = false;    // colours against the model (otherwise printed only)
     std::function<void(const Render&, Outcome&)> extra{};  // the scene's own checks
 };
 
-bool nodeIs(const PixelTruth& p, std::uint32_t node) { return !p.nodeAmbiguous && p.node == node; }
+bool nodeIs(const PixelTruth& p, std::uint32_t node) {
+    return !p.nodeAmbiguous && p.node == node;
+}
 
 // Pixels whose true node is `node` and which light 0 truly reaches (`lit`) or not; checkLitBits
 // leaves out the ambiguous ones itself.
@@ -120,7 +123,8 @@ void checkShadowRadius(const Render& r, Outcome& o) {
     CheckCount inside{"shadow-disc"}, outside{"beyond-shadow"};
     for (std::uint32_t i = 0; i < r.truth.pixels.size(); ++i) {
         const PixelTruth& p = r.truth.pixels[i];
-        if (!nodeIs(p, 0) || r.gpu.classes[i].node != 0) continue;
+        if (!nodeIs(p, 0) || r.gpu.classes[i].node != 0)
+            continue;
         const Real rho = std::hypot(p.point.x - light.x, p.point.z - light.z);
         // The same relative margin as any segment against a sphere (analytic.h).
         const Real margin =
@@ -356,38 +360,47 @@ Outcome runChecks(const std::string& name, const Scene& scene, const GpuRenderRe
 // HEXRAY_HARD_DETAILS=1 adds the first few violating pixels of every check.
 std::string describe(const CheckCount& c) {
     std::string text = c.name + " " + std::to_string(c.violations) + "/" + std::to_string(c.checked);
-    if (c.excluded) text += " (" + std::to_string(c.excluded) + " excl)";
+    if (c.excluded)
+        text += " (" + std::to_string(c.excluded) + " excl)";
     if (c.worst > 0) {
         char worst[32];
         std::snprintf(worst, sizeof worst, " worst %.2e", c.worst);
         text += worst;
     }
-    if (std::getenv("HEXRAY_HARD_DETAILS") && c.violations) text += " {" + c.firstViolations + "}";
+    if (std::getenv("HEXRAY_HARD_DETAILS") && c.violations)
+        text += " {" + c.firstViolations + "}";
     return text;
 }
 
 std::string summary(const Outcome& o) {
     std::string text;
-    for (const Asserted& a : o.asserted) text += " " + describe(a.count) + ";";
-    for (const CheckCount& c : o.info) text += " [info " + describe(c) + "]";
+    for (const Asserted& a : o.asserted)
+        text += " " + describe(a.count) + ";";
+    for (const CheckCount& c : o.info)
+        text += " [info " + describe(c) + "]";
     return text;
 }
 
 std::vector<std::filesystem::path> hardScenes() {
     std::vector<std::filesystem::path> scenes;
     for (const auto& path : test::shippedScenes()) {
-        if (path.parent_path().filename() == "hard") scenes.push_back(path);
+        if (path.parent_path().filename() == "hard")
+            scenes.push_back(path);
     }
     return scenes;
 }
 
-std::string stem(const std::filesystem::path& path) { return path.stem().string(); }
+std::string stem(const std::filesystem::path& path) {
+    return path.stem().string();
+}
 
 TEST(HardCaseSuite, EverySceneHasItsGroundTruthAndEveryGroundTruthItsScene) {
     std::set<std::string> files;
-    for (const auto& path : hardScenes()) files.insert(stem(path));
+    for (const auto& path : hardScenes())
+        files.insert(stem(path));
     std::set<std::string> specified;
-    for (const auto& [name, hardCase] : hardCases()) specified.insert(name);
+    for (const auto& [name, hardCase] : hardCases())
+        specified.insert(name);
     EXPECT_EQ(files, specified);
     EXPECT_GE(files.size(), 20u);
 }
@@ -433,10 +446,12 @@ TEST_F(HardCaseNaiveTest, TextbookFloat32FailsAtLeastFiveHardCases) {
         const Outcome o = runChecks(name, scene, renderer.render(scene, Precision::F32Naive));
         std::printf("hard %s f32-naive: %llu violations;%s\n", name.c_str(),
                     static_cast<unsigned long long>(o.violations()), summary(o).c_str());
-        if (o.violations() > 0) failed.push_back(name);
+        if (o.violations() > 0)
+            failed.push_back(name);
     }
     std::string list;
-    for (const std::string& name : failed) list += " " + name;
+    for (const std::string& name : failed)
+        list += " " + name;
     std::printf("f32-naive fails %zu of %zu hard cases:%s\n", failed.size(), hardScenes().size(), list.c_str());
     EXPECT_GE(failed.size(), 5u);
 }

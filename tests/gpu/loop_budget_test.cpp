@@ -48,9 +48,9 @@ TEST(LoopBudget, AFloorTakesThreePassesASampleAndThreeALight) {
     const LoopPasses passes = loopPasses(floorUnder(2), nullptr);
     EXPECT_EQ(passes.sample, 3u);
     EXPECT_EQ(passes.lights, (std::vector<std::uint64_t>{3, 3}));
-    EXPECT_EQ(dispatchPasses(passes, 1, 0, 2), 3u + 6u + 2u);      // and the sample loop's two
+    EXPECT_EQ(dispatchPasses(passes, 1, 0, 2), 3u + 6u + 2u);  // and the sample loop's two
     EXPECT_EQ(dispatchPasses(passes, 4, 0, 2), 4u * 9u + 5u);
-    EXPECT_EQ(tracePasses(passes, 4), 4u * 9u + 5u + 4u * 2u);     // and each sample's loop over the nodes
+    EXPECT_EQ(tracePasses(passes, 4), 4u * 9u + 5u + 4u * 2u);  // and each sample's loop over the nodes
     EXPECT_EQ(smallestDispatchPasses(passes), 3u + 2u + 3u);
 }
 
@@ -78,7 +78,7 @@ TEST(LoopBudget, WholeSamplesAsManyAsFitADispatch) {
 TEST(LoopBudget, OneSampleInGreedyBatchesOfLightsEachWithinTheLimit) {
     const std::vector<std::uint64_t> lights = {4, 9, 2, 2, 7, 1, 1, 1, 8, 3};
     const LoopPasses passes = passesOf(5, lights);  // a sample alone: 5 and the sample loop's 2
-    const std::uint64_t limit = 7 + 12;  // lights of 12 passes at most a batch
+    const std::uint64_t limit = 7 + 12;             // lights of 12 passes at most a batch
     const std::optional<LightBatches> batches = planLightBatches(passes, 2, limit);
     ASSERT_TRUE(batches);
     EXPECT_EQ(batches->samplesPerDispatch, 1u);

@@ -32,19 +32,27 @@ constexpr double kFloat64Roundoff = FLOAT64_UNIT_ROUNDOFF;
 
 LightStatus gpuStatus(std::uint32_t status) {
     switch (status) {
-        case gpu::TRACE_LIGHT_LIT: return LightStatus::Lit;
-        case gpu::TRACE_LIGHT_FACING_AWAY: return LightStatus::FacingAway;
-        case gpu::TRACE_LIGHT_SHADOWED: return LightStatus::Shadowed;
-        default: return LightStatus::AtPoint;
+        case gpu::TRACE_LIGHT_LIT:
+            return LightStatus::Lit;
+        case gpu::TRACE_LIGHT_FACING_AWAY:
+            return LightStatus::FacingAway;
+        case gpu::TRACE_LIGHT_SHADOWED:
+            return LightStatus::Shadowed;
+        default:
+            return LightStatus::AtPoint;
     }
 }
 
 LightStatus cpuStatus(LightReach reach) {
     switch (reach) {
-        case LightReach::Lit: return LightStatus::Lit;
-        case LightReach::FacingAway: return LightStatus::FacingAway;
-        case LightReach::Shadowed: return LightStatus::Shadowed;
-        default: return LightStatus::AtPoint;
+        case LightReach::Lit:
+            return LightStatus::Lit;
+        case LightReach::FacingAway:
+            return LightStatus::FacingAway;
+        case LightReach::Shadowed:
+            return LightStatus::Shadowed;
+        default:
+            return LightStatus::AtPoint;
     }
 }
 
@@ -52,7 +60,8 @@ RendererRay fromGpu(const GpuPixelTrace& g) {
     RendererRay r;
     r.origin = g.rayOrigin;
     r.direction = g.rayDirection;
-    if (g.node != PixelClass::kBackground) r.node = g.node;
+    if (g.node != PixelClass::kBackground)
+        r.node = g.node;
     r.t = g.t;
     r.normal = g.normal;
     r.oddChecker = (g.flags & PixelClass::kOddCheckerBit) != 0;
@@ -97,7 +106,8 @@ TEST_F(OracleSuiteTest, EveryWellConditionedAnswerIsRightOnBothRenderers) {
     std::vector<std::string> families;
     std::map<std::string, std::map<std::string, Tally>> table;  // family -> column -> tally
     for (const oracle::HardRay& ray : oracle::hardRays()) {
-        if (table.find(ray.family) == table.end()) families.push_back(ray.family);
+        if (table.find(ray.family) == table.end())
+            families.push_back(ray.family);
         std::map<std::string, Tally>& row = table[ray.family];
         row[kColumns[0]].add(judgeRay(ray, fromCpu(explainPixel(ray.scene, 0, 0, 0)), kFloat64Roundoff, "cpu"));
         const Tally f32 = judgeRay(ray, fromGpu(renderer.tracePixel(ray.scene, Precision::F32, 0, 0, 0)),
@@ -118,12 +128,14 @@ TEST_F(OracleSuiteTest, EveryWellConditionedAnswerIsRightOnBothRenderers) {
             const Tally& t = table[family][column];
             std::printf("oracle-row: | %s | %s | %llu | %llu/%llu | %llu | %.2f | %llu | %.2f |\n", family.c_str(),
                         column, static_cast<unsigned long long>(t.rays),
-                        static_cast<unsigned long long>(t.rightDecisions),
-                        static_cast<unsigned long long>(t.decisions), static_cast<unsigned long long>(t.distances),
-                        t.maxDistanceUlps, static_cast<unsigned long long>(t.values), t.maxValueUnits);
-            for (const std::string& failure : t.failures) ADD_FAILURE() << failure;
+                        static_cast<unsigned long long>(t.rightDecisions), static_cast<unsigned long long>(t.decisions),
+                        static_cast<unsigned long long>(t.distances), t.maxDistanceUlps,
+                        static_cast<unsigned long long>(t.values), t.maxValueUnits);
+            for (const std::string& failure : t.failures)
+                ADD_FAILURE() << failure;
             EXPECT_EQ(t.rightDecisions, t.decisions) << family << " " << column;
-            if (column == kColumns[0]) rays += t.rays;
+            if (column == kColumns[0])
+                rays += t.rays;
             decisions += t.decisions;
         }
     }

@@ -31,19 +31,19 @@ struct Allowance {
     double f64;
 };
 const std::map<std::string, Allowance> kKnifeEdges = {
-    {"hard_grazing_plane_slopes", {100, 100}},       // rays parallel to the plane, or nearly
-    {"hard_grazing_sphere_silhouette", {7, 5}},      // rays within float32 rounding of the silhouette
-    {"hard_huge_sphere_ground", {50, 5}},            // float32's horizon of a radius-1e6 ground
-    {"hard_light_on_plane", {28, 28}},               // cos theta exactly 0 on the whole floor
-    {"hard_light_on_top_of_sphere", {88, 88}},       // shadow segments ending exactly on the sphere
-    {"hard_overflow_huge_scale", {7, 7}},            // rows exactly on checker edges
-    {"hard_scene_offset_1e5", {7, 7}},               // rows exactly on checker edges
-    {"hard_scene_offset_1e6", {7, 7}},               // rows exactly on checker edges
-    {"hard_scene_offset_1e7", {7, 7}},               // rows exactly on checker edges
-    {"hard_underflow_tiny_scale", {7, 7}},           // rows exactly on checker edges
-    {"hard_terminator_grazing_light", {66, 5}},      // the light grazes every lit point
-    {"hard_tiny_sphere_far_1e5", {95, 5}},           // beyond float32 (auto takes f64): its normals too
-    {"hard_tiny_sphere_far_1e7", {100, 5}},          // beyond float32 (auto takes f64)
+    {"hard_grazing_plane_slopes", {100, 100}},   // rays parallel to the plane, or nearly
+    {"hard_grazing_sphere_silhouette", {7, 5}},  // rays within float32 rounding of the silhouette
+    {"hard_huge_sphere_ground", {50, 5}},        // float32's horizon of a radius-1e6 ground
+    {"hard_light_on_plane", {28, 28}},           // cos theta exactly 0 on the whole floor
+    {"hard_light_on_top_of_sphere", {88, 88}},   // shadow segments ending exactly on the sphere
+    {"hard_overflow_huge_scale", {7, 7}},        // rows exactly on checker edges
+    {"hard_scene_offset_1e5", {7, 7}},           // rows exactly on checker edges
+    {"hard_scene_offset_1e6", {7, 7}},           // rows exactly on checker edges
+    {"hard_scene_offset_1e7", {7, 7}},           // rows exactly on checker edges
+    {"hard_underflow_tiny_scale", {7, 7}},       // rows exactly on checker edges
+    {"hard_terminator_grazing_light", {66, 5}},  // the light grazes every lit point
+    {"hard_tiny_sphere_far_1e5", {95, 5}},       // beyond float32 (auto takes f64): its normals too
+    {"hard_tiny_sphere_far_1e7", {100, 5}},      // beyond float32 (auto takes f64)
 };
 
 double allowedAmbiguousPercent(const std::string& scene, Precision precision) {
@@ -66,14 +66,15 @@ TEST_P(SceneAgreementTest, GpuMatchesCpuReferenceOutsideNearTiedDecisions) {
     GpuRenderer renderer(context());
     const RenderComparison c = test::compareWithReference(scene, renderer.render(scene, precision));
 
-    std::printf("%s %s: ambiguous %.3f%%, topology mismatches %llu (node %llu, checker %llu, lights %llu); "
-                "compared colours: 8-bit max %.0f RMSE %.4f levels, %.4f%% > 1 level; linear max %.2e\n",
-                test::sceneTestName(path).c_str(), std::string(precisionName(precision)).c_str(),
-                100.0 * c.topology.ambiguousShare(), static_cast<unsigned long long>(c.topology.mismatches),
-                static_cast<unsigned long long>(c.topology.nodeMismatches),
-                static_cast<unsigned long long>(c.topology.checkerMismatches),
-                static_cast<unsigned long long>(c.topology.lightMismatches), c.encoded.maxAbs, c.encoded.rmse,
-                100.0 * c.encoded.shareOverOneLevel, c.linear.maxAbs);
+    std::printf(
+        "%s %s: ambiguous %.3f%%, topology mismatches %llu (node %llu, checker %llu, lights %llu); "
+        "compared colours: 8-bit max %.0f RMSE %.4f levels, %.4f%% > 1 level; linear max %.2e\n",
+        test::sceneTestName(path).c_str(), std::string(precisionName(precision)).c_str(),
+        100.0 * c.topology.ambiguousShare(), static_cast<unsigned long long>(c.topology.mismatches),
+        static_cast<unsigned long long>(c.topology.nodeMismatches),
+        static_cast<unsigned long long>(c.topology.checkerMismatches),
+        static_cast<unsigned long long>(c.topology.lightMismatches), c.encoded.maxAbs, c.encoded.rmse,
+        100.0 * c.encoded.shareOverOneLevel, c.linear.maxAbs);
     EXPECT_LE(100.0 * c.topology.ambiguousShare(), allowedAmbiguousPercent(test::sceneTestName(path), precision));
     EXPECT_EQ(c.invalidColours, 0u);
     EXPECT_EQ(c.topology.mismatches, kTolerance.maxTopologyMismatches);

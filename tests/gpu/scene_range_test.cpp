@@ -36,10 +36,12 @@ Scene scaled(Scene scene, double factor) {
         light.intensity *= factor * factor;
     }
     for (Shader& shader : scene.shaders) {
-        if (auto* checker = std::get_if<CheckerShader>(&shader)) checker->size *= factor;
+        if (auto* checker = std::get_if<CheckerShader>(&shader))
+            checker->size *= factor;
     }
     for (Node& node : scene.nodes) {
-        if (auto* plane = std::get_if<Plane>(&node.geometry)) plane->height *= factor;
+        if (auto* plane = std::get_if<Plane>(&node.geometry))
+            plane->height *= factor;
         if (auto* sphere = std::get_if<Sphere>(&node.geometry)) {
             sphere->center *= factor;
             sphere->radius *= factor;
@@ -114,9 +116,11 @@ TEST_P(SceneRangeTest, LectureSceneAtTheEdgesOfTheSupportedRange) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Precisions, SceneRangeTest, ::testing::Values(Precision::F32, Precision::F64, Precision::Auto),
-                         [](const auto& info) { return std::string(info.param == Precision::F32   ? "f32"
-                                                                   : info.param == Precision::F64 ? "f64"
-                                                                                                  : "auto"); });
+                         [](const auto& info) {
+                             return std::string(info.param == Precision::F32   ? "f32"
+                                                : info.param == Precision::F64 ? "f64"
+                                                                               : "auto");
+                         });
 
 }  // namespace
 }  // namespace hexray

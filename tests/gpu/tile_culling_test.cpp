@@ -47,11 +47,9 @@ std::vector<std::tuple<std::filesystem::path, Precision>> cases() {
     return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(ShippedScenes, TileCullingTest, ::testing::ValuesIn(cases()),
-                         [](const auto& info) {
-                             return test::sceneTestName(std::get<0>(info.param)) +
-                                    (std::get<1>(info.param) == Precision::F64 ? "_f64" : "_f32");
-                         });
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, TileCullingTest, ::testing::ValuesIn(cases()), [](const auto& info) {
+    return test::sceneTestName(std::get<0>(info.param)) + (std::get<1>(info.param) == Precision::F64 ? "_f64" : "_f32");
+});
 
 using TileCullingPlanTest = test::ValidatedVulkanTest;
 
@@ -68,7 +66,7 @@ TEST_F(TileCullingPlanTest, TheDemoSceneLosesMostOfItsWork) {
     const TileWork& topLeft = tiles.classes[tiles.classOfTile.front()];
     EXPECT_EQ(topLeft.primary, 0u);  // sky
     const TileWork& bottomRight = tiles.classes[tiles.classOfTile.back()];
-    EXPECT_EQ(bottomRight.primary, 1u);  // only the floor...
+    EXPECT_EQ(bottomRight.primary, 1u);    // only the floor...
     EXPECT_EQ(bottomRight.shadow[0], 0u);  // ...and the ball's shadow is elsewhere
     const WorkPerPixel before = workPerPixel(*plan.kernel.code);
     const WorkPerPixel after = workPerPixel(*plan.kernel.code, tiles, scene.image);
@@ -81,7 +79,8 @@ TEST_F(TileCullingPlanTest, TheDemoSceneLosesMostOfItsWork) {
 TEST_F(TileCullingPlanTest, TextbookKernelsAndCustomRequestsAreNotCulled) {
     const Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
     GpuRenderer renderer(context());
-    EXPECT_TRUE(renderer.plan(scene, {Precision::F32Naive, Acceleration::Auto, Culling::On}).tileClasses.kernels.empty());
+    EXPECT_TRUE(
+        renderer.plan(scene, {Precision::F32Naive, Acceleration::Auto, Culling::On}).tileClasses.kernels.empty());
     EXPECT_TRUE(renderer.plan(scene, {Precision::F32, Acceleration::Auto, Culling::Off}).tileClasses.kernels.empty());
 }
 

@@ -12,9 +12,7 @@ namespace hexray::test {
 
 class ValidatedVulkanTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        context_ = std::make_unique<VulkanContext>(VulkanContext::Options{&validation_, ""});
-    }
+    void SetUp() override { context_ = std::make_unique<VulkanContext>(VulkanContext::Options{&validation_, ""}); }
 
     void TearDown() override {
         context_.reset();

@@ -151,7 +151,7 @@ TEST_F(AovTest, AStagingDirectoryThatAKilledRunLeftIsRemovedAndAFreshOneIsNot) {
     fs::last_write_time(dir_ / "aov" / ".hexray-aov-stale", fs::file_time_type::clock::now() - std::chrono::hours(1));
     fs::create_directories(dir_ / "aov" / ".hexray-aov-fresh");  // newer than this run's start: another run's
     fs::last_write_time(dir_ / "aov" / ".hexray-aov-fresh", fs::file_time_type::clock::now() + std::chrono::hours(1));
-    fs::create_directories(dir_ / "aov" / ".hexray-aovish");      // not a name hexray gives
+    fs::create_directories(dir_ / "aov" / ".hexray-aovish");  // not a name hexray gives
     fs::last_write_time(dir_ / "aov" / ".hexray-aovish", fs::file_time_type::clock::now() - std::chrono::hours(1));
     tinySet(1).commitTo(dir_ / "aov", 1);
     EXPECT_FALSE(fs::exists(dir_ / "aov" / ".hexray-aov-stale"));

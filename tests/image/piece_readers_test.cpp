@@ -64,7 +64,8 @@ std::vector<std::uint8_t> readAllRows(const fs::path& path) {
 // Grey levels 0, 20, ..., 220, as the RGB a reader must see.
 std::vector<std::uint8_t> greyRgb() {
     std::vector<std::uint8_t> rgb;
-    for (std::uint8_t i = 0; i < kWidth * kHeight; ++i) rgb.insert(rgb.end(), 3, std::uint8_t(20 * i));
+    for (std::uint8_t i = 0; i < kWidth * kHeight; ++i)
+        rgb.insert(rgb.end(), 3, std::uint8_t(20 * i));
     return rgb;
 }
 
@@ -76,7 +77,8 @@ std::vector<std::uint8_t> samplesOf(const std::vector<std::uint8_t>& values, int
         for (int c = 0; c < channels; ++c) {
             const std::uint8_t value = c == alphaChannel ? 255 : values[i + std::size_t(channels >= 3 ? c : 0)];
             data.push_back(value);
-            if (sixteenBits) data.push_back(value);  // v * 257 = v in both bytes
+            if (sixteenBits)
+                data.push_back(value);  // v * 257 = v in both bytes
         }
     }
     return data;
@@ -85,7 +87,8 @@ std::vector<std::uint8_t> samplesOf(const std::vector<std::uint8_t>& values, int
 TEST_F(PieceReadersTest, EveryNonInterlacedPngFormIsReadAsTheSame8BitRgb) {
     const std::vector<std::uint8_t> grey = greyRgb();
     std::vector<std::uint8_t> colour = grey;
-    for (std::size_t i = 0; i < colour.size(); ++i) colour[i] = std::uint8_t(colour[i] + 7 * (i % 3));
+    for (std::size_t i = 0; i < colour.size(); ++i)
+        colour[i] = std::uint8_t(colour[i] + 7 * (i % 3));
     const struct {
         const char* form;
         std::uint8_t colorType;
@@ -117,7 +120,8 @@ TEST_F(PieceReadersTest, EveryNonInterlacedPngFormIsReadAsTheSame8BitRgb) {
     // One bit a pixel: black and white.
     writePngForm(dir_ / "bits.png", SPNG_COLOR_TYPE_GRAYSCALE, 1, {0b10100000, 0b01010000, 0b11110000});
     std::vector<std::uint8_t> bits;
-    for (const int bit : {1, 0, 1, 0, 0, 1, 0, 1, 1, 1, 1, 1}) bits.insert(bits.end(), 3, std::uint8_t(bit * 255));
+    for (const int bit : {1, 0, 1, 0, 0, 1, 0, 1, 1, 1, 1, 1})
+        bits.insert(bits.end(), 3, std::uint8_t(bit * 255));
     EXPECT_EQ(readAllRows(dir_ / "bits.png"), bits);
 }
 
@@ -152,7 +156,8 @@ TEST_F(PieceReadersTest, OpenExrRgbIsReadInBandsOfAnyHeightIgnoringOtherChannels
     constexpr std::uint32_t height = 40;
     std::vector<std::vector<float>> planes(4, std::vector<float>(width * height));
     for (std::size_t c = 0; c < planes.size(); ++c) {
-        for (std::size_t i = 0; i < planes[c].size(); ++i) planes[c][i] = float(c) * 1000.0f + float(i) * 0.5f;
+        for (std::size_t i = 0; i < planes[c].size(); ++i)
+            planes[c][i] = float(c) * 1000.0f + float(i) * 0.5f;
     }
     ExrRowWriter writer(dir_ / "a.exr", width, height, {"R", "G", "B", "A"}, {{"note", "text"}});
     writer.writeRows(height, {planes[0], planes[1], planes[2], planes[3]});
@@ -172,7 +177,8 @@ TEST_F(PieceReadersTest, OpenExrRgbIsReadInBandsOfAnyHeightIgnoringOtherChannels
         read[1].insert(read[1].end(), g.begin(), g.end());
         read[2].insert(read[2].end(), b.begin(), b.end());
     }
-    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(read[c], planes[c]) << c;
+    for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_EQ(read[c], planes[c]) << c;
     std::vector<float> one(width);
     EXPECT_THROW(reader.readRows(1, one, one, one), ImageIoError);
 }
@@ -180,12 +186,14 @@ TEST_F(PieceReadersTest, OpenExrRgbIsReadInBandsOfAnyHeightIgnoringOtherChannels
 // An OpenEXR file of `width` x 2 written by OpenEXR's C++ interface, as `adjust` makes its header.
 void writeExrWith(const fs::path& path, int width, const std::function<void(Imf::Header&)>& adjust) {
     Imf::Header header(width, 2);
-    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    for (const char* name : {"R", "G", "B"})
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
     adjust(header);
     std::vector<float> values(std::size_t(width) * 2, 0.25f);
     Imf::FrameBuffer frame;
     for (auto channel = header.channels().begin(); channel != header.channels().end(); ++channel) {
-        if (channel.channel().type != Imf::FLOAT) continue;  // written as zeros
+        if (channel.channel().type != Imf::FLOAT)
+            continue;  // written as zeros
         frame.insert(channel.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
                                                 sizeof(float) * std::size_t(width), channel.channel().xSampling,
                                                 channel.channel().ySampling));

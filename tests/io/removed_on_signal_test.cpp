@@ -67,7 +67,9 @@ INSTANTIATE_TEST_SUITE_P(CatchableSignals, EachSignal, ::testing::ValuesIn(test:
                          [](const auto& info) { return test::signalTestName(info.param); });
 
 std::atomic<int> handled{0};
-extern "C" void countSignal(int) { handled.fetch_add(1); }
+extern "C" void countSignal(int) {
+    handled.fetch_add(1);
+}
 
 TEST_F(RemovedOnSignalTest, AHandlerTheProcessAlreadyHasIsKept) {
     std::ofstream(dir_ / "partial.png") << "partial";
@@ -92,7 +94,7 @@ TEST_F(RemovedOnSignalTest, FaultsKeepTheActionTheyHad) {
     // "Untouched" is the action before registering: the default, or a sanitizer's own handler.
     const int status = inChildRaising(SIGKILL, [&] {
         const int faults[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGSYS, SIGTRAP};
-        struct sigaction before[std::size(faults)] {};
+        struct sigaction before[std::size(faults)]{};
         for (std::size_t i = 0; i < std::size(faults); ++i) {
             ::sigaction(faults[i], nullptr, &before[i]);
         }

@@ -28,13 +28,14 @@ fs::path oldFile(const fs::path& path) {
 }
 
 TEST_F(StaleTemporariesTest, RemovesOnlyHexraysOwnOldUnheldTemporaries) {
-    oldFile(dir_ / ".hexray-partial-a.png.AbCdEf");      // stale
-    oldFile(dir_ / ".a.png.AbCdEf");                     // the old naming: not recognisably hexray's
-    oldFile(dir_ / ".hexray-partial-");                  // the prefix alone
-    oldFile(dir_ / "hexray-partial-visible.png");        // not hidden
+    oldFile(dir_ / ".hexray-partial-a.png.AbCdEf");  // stale
+    oldFile(dir_ / ".a.png.AbCdEf");                 // the old naming: not recognisably hexray's
+    oldFile(dir_ / ".hexray-partial-");              // the prefix alone
+    oldFile(dir_ / "hexray-partial-visible.png");    // not hidden
     std::ofstream(dir_ / ".hexray-partial-new.png.123456") << "being written";
     // Newer than the run's start, beyond the file system's timestamp granularity (a tick).
-    fs::last_write_time(dir_ / ".hexray-partial-new.png.123456", fs::file_time_type::clock::now() + std::chrono::hours(1));
+    fs::last_write_time(dir_ / ".hexray-partial-new.png.123456",
+                        fs::file_time_type::clock::now() + std::chrono::hours(1));
     fs::create_directories(dir_ / ".hexray-aov-Stale1");
     oldFile(dir_ / ".hexray-aov-Stale1" / "depth.exr");
     fs::last_write_time(dir_ / ".hexray-aov-Stale1", fs::file_time_type::clock::now() - std::chrono::hours(1));

@@ -31,7 +31,8 @@ namespace fs = std::filesystem;
 std::vector<std::uint32_t> smallKernel(int value, int extra = 0) {
     std::string source =
         "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Out { uint values[]; };\n"
-        "void main() {\n    values[gl_GlobalInvocationID.x] = " + std::to_string(value) + "u;\n";
+        "void main() {\n    values[gl_GlobalInvocationID.x] = " +
+        std::to_string(value) + "u;\n";
     for (int i = 0; i < extra; ++i) {
         source += "    values[" + std::to_string(i + 1) + "] += " + std::to_string(i) + "u;\n";
     }

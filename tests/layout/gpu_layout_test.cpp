@@ -28,7 +28,10 @@ struct Member {
     std::size_t offset;
 };
 
-#define MEMBER(prefix, type, member) Member{prefix #member, offsetof(type, member)}
+#define MEMBER(prefix, type, member)           \
+    Member {                                   \
+        prefix #member, offsetof(type, member) \
+    }
 
 template <typename Real>
 std::vector<Member> sceneMembers() {
@@ -36,15 +39,15 @@ std::vector<Member> sceneMembers() {
     using Node = GpuNode<Real>;
     using Light = GpuLight<Real>;
     return {
-        MEMBER("FrameBlock.", Frame, origin),        MEMBER("FrameBlock.", Frame, sheetTopLeft),
-        MEMBER("FrameBlock.", Frame, sheetRight),    MEMBER("FrameBlock.", Frame, sheetDown),
-        MEMBER("FrameBlock.", Frame, background),    MEMBER("FrameBlock.", Frame, ambient),
-        MEMBER("FrameBlock.", Frame, imageSize),     MEMBER("FrameBlock.", Frame, samplingOffset),
-        MEMBER("FrameBlock.", Frame, nodeCount),     MEMBER("FrameBlock.", Frame, lightCount),
-        MEMBER("nodes[0].", Node, kinds),            MEMBER("nodes[0].", Node, geometry),
-        MEMBER("nodes[0].", Node, eyePower),         MEMBER("nodes[0].", Node, color1),
-        MEMBER("nodes[0].", Node, color2),           MEMBER("nodes[0].", Node, checker),
-        MEMBER("lights[0].", Light, position),       MEMBER("lights[0].", Light, power),
+        MEMBER("FrameBlock.", Frame, origin),     MEMBER("FrameBlock.", Frame, sheetTopLeft),
+        MEMBER("FrameBlock.", Frame, sheetRight), MEMBER("FrameBlock.", Frame, sheetDown),
+        MEMBER("FrameBlock.", Frame, background), MEMBER("FrameBlock.", Frame, ambient),
+        MEMBER("FrameBlock.", Frame, imageSize),  MEMBER("FrameBlock.", Frame, samplingOffset),
+        MEMBER("FrameBlock.", Frame, nodeCount),  MEMBER("FrameBlock.", Frame, lightCount),
+        MEMBER("nodes[0].", Node, kinds),         MEMBER("nodes[0].", Node, geometry),
+        MEMBER("nodes[0].", Node, eyePower),      MEMBER("nodes[0].", Node, color1),
+        MEMBER("nodes[0].", Node, color2),        MEMBER("nodes[0].", Node, checker),
+        MEMBER("lights[0].", Light, position),    MEMBER("lights[0].", Light, power),
     };
 }
 
@@ -53,16 +56,25 @@ std::vector<Member> outputMembers() {
     using Header = GpuTraceHeader<Real>;
     using Entry = GpuTraceEntry<Real>;
     return {
-        MEMBER("BandBlock.", GpuBand, firstRow),          MEMBER("BandBlock.", GpuBand, rowCount),
-        MEMBER("BandBlock.", GpuBand, firstTile),         MEMBER("BandBlock.", GpuBand, firstSample),
-        MEMBER("BandBlock.", GpuBand, endSample),         MEMBER("BandBlock.", GpuBand, firstLight),
-        MEMBER("BandBlock.", GpuBand, endLight),          MEMBER("carry[0].", GpuPixelCarry, sum),
-        MEMBER("carry[0].", GpuPixelCarry, flags),        MEMBER("carry[0].", GpuPixelCarry, irradiance),
+        MEMBER("BandBlock.", GpuBand, firstRow),
+        MEMBER("BandBlock.", GpuBand, rowCount),
+        MEMBER("BandBlock.", GpuBand, firstTile),
+        MEMBER("BandBlock.", GpuBand, firstSample),
+        MEMBER("BandBlock.", GpuBand, endSample),
+        MEMBER("BandBlock.", GpuBand, firstLight),
+        MEMBER("BandBlock.", GpuBand, endLight),
+        MEMBER("carry[0].", GpuPixelCarry, sum),
+        MEMBER("carry[0].", GpuPixelCarry, flags),
+        MEMBER("carry[0].", GpuPixelCarry, irradiance),
         MEMBER("TraceBlock.header.", Header, request),
-        MEMBER("TraceBlock.header.", Header, result),     MEMBER("TraceBlock.header.", Header, rayOrigin),
-        MEMBER("TraceBlock.header.", Header, rayDirection), MEMBER("TraceBlock.header.", Header, hitPosition),
-        MEMBER("TraceBlock.header.", Header, hitNormal),  MEMBER("TraceBlock.header.", Header, shadowOrigin),
-        MEMBER("TraceBlock.header.", Header, albedo),     MEMBER("TraceBlock.header.", Header, sampleColor),
+        MEMBER("TraceBlock.header.", Header, result),
+        MEMBER("TraceBlock.header.", Header, rayOrigin),
+        MEMBER("TraceBlock.header.", Header, rayDirection),
+        MEMBER("TraceBlock.header.", Header, hitPosition),
+        MEMBER("TraceBlock.header.", Header, hitNormal),
+        MEMBER("TraceBlock.header.", Header, shadowOrigin),
+        MEMBER("TraceBlock.header.", Header, albedo),
+        MEMBER("TraceBlock.header.", Header, sampleColor),
         MEMBER("TraceBlock.header.", Header, pixelColor),
         // The entries follow the header: their offsets count from the block's start.
         Member{"TraceBlock.entries[0].values", sizeof(Header) + offsetof(Entry, values)},
@@ -165,8 +177,8 @@ std::map<std::string, Reflected> reflectBlocks(const std::string& defines) {
 std::string listed(const std::map<std::string, Reflected>& members) {
     std::string text;
     for (const auto& [name, member] : members) {
-        text += "  " + name + " @" + std::to_string(member.offset) + " stride " + std::to_string(member.arrayStride) +
-                "\n";
+        text +=
+            "  " + name + " @" + std::to_string(member.offset) + " stride " + std::to_string(member.arrayStride) + "\n";
     }
     return text;
 }
@@ -224,13 +236,12 @@ TEST_P(GpuLayoutTest, EveryMemberAndStrideIsWhereTheCppMirrorPutsIt) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, GpuLayoutTest,
-                         ::testing::Values(Variant{"StorageF32", "", false},
-                                           Variant{"StorageF64", "#define HEXRAY_F64\n", true},
-                                           Variant{"UniformF32", "#define HEXRAY_UNIFORM_SCENE\n", false},
-                                           Variant{"UniformF64", "#define HEXRAY_F64\n#define HEXRAY_UNIFORM_SCENE\n",
-                                                   true}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Variants, GpuLayoutTest,
+    ::testing::Values(Variant{"StorageF32", "", false}, Variant{"StorageF64", "#define HEXRAY_F64\n", true},
+                      Variant{"UniformF32", "#define HEXRAY_UNIFORM_SCENE\n", false},
+                      Variant{"UniformF64", "#define HEXRAY_F64\n#define HEXRAY_UNIFORM_SCENE\n", true}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace hexray

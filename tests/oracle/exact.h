@@ -87,8 +87,12 @@ private:
     mpfr_t value_;
 };
 
-inline Exact min(const Exact& a, const Exact& b) { return b < a ? b : a; }
-inline Exact max(const Exact& a, const Exact& b) { return a < b ? b : a; }
+inline Exact min(const Exact& a, const Exact& b) {
+    return b < a ? b : a;
+}
+inline Exact max(const Exact& a, const Exact& b) {
+    return a < b ? b : a;
+}
 
 struct ExactVec {
     Exact x, y, z;
@@ -99,7 +103,11 @@ struct ExactVec {
     friend ExactVec operator-(const ExactVec& v) { return {-v.x, -v.y, -v.z}; }
 };
 
-inline Exact dot(const ExactVec& a, const ExactVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Exact length(const ExactVec& v) { return sqrt(dot(v, v)); }
+inline Exact dot(const ExactVec& a, const ExactVec& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline Exact length(const ExactVec& v) {
+    return sqrt(dot(v, v));
+}
 
 }  // namespace hexray::oracle

@@ -71,8 +71,8 @@ public:
                 Scene scene = baseScene({10 * height, 100 * height, 10 * height}, 1e4 * height * height);
                 scene.nodes = {sphereNode({0, -radius, 0}, radius)};
                 const double dip = std::acos(radius / (radius + height));
-                for (const double angle : {0.5 * dip, 0.9 * dip, 0.99 * dip, 1.01 * dip, 1.1 * dip, 2 * dip, 10 * dip,
-                                           0.5, 1.5}) {
+                for (const double angle :
+                     {0.5 * dip, 0.9 * dip, 0.99 * dip, 1.01 * dip, 1.1 * dip, 2 * dip, 10 * dip, 0.5, 1.5}) {
                     add("huge sphere ground", "R " + std::to_string(radius) + " angle " + std::to_string(angle), scene,
                         {0, height, 0}, {0.0, -std::sin(angle), std::cos(angle)});
                 }
@@ -85,8 +85,8 @@ public:
         Scene scene = baseScene({5, 8, 0}, 100.0);
         scene.nodes = {sphereNode({0, 0, 10}, 1.0)};
         for (const double side : {0.0, 0.5 * std::numbers::pi, 0.25 * std::numbers::pi, 3.5}) {
-            for (const double delta : {0.0, 1e-1, -1e-1, 1e-3, -1e-3, 1e-5, -1e-5, 1e-7, -1e-7, 1e-9, -1e-9, 1e-12,
-                                       -1e-12}) {
+            for (const double delta :
+                 {0.0, 1e-1, -1e-1, 1e-3, -1e-3, 1e-5, -1e-5, 1e-7, -1e-7, 1e-9, -1e-9, 1e-12, -1e-12}) {
                 const double sine = (1.0 + delta) / 10.0;
                 const double cosine = std::sqrt(1.0 - sine * sine);
                 add("tangent to a sphere", "delta " + std::to_string(delta), scene, {0, 0, 0},
@@ -107,8 +107,8 @@ public:
              {glm::dvec3(0, 0, 0), glm::dvec3(1000, -2000, 500), glm::dvec3(1e6, 1e6, -1e6)}) {
             Scene scene = baseScene(center + glm::dvec3(0, 20, -20), 400.0);
             scene.nodes = {sphereNode(center, 5.0)};
-            for (const glm::dvec3 onSurface : {glm::dvec3(3, 4, 0), glm::dvec3(0, 5, 0), glm::dvec3(0, 0, -5),
-                                               glm::dvec3(-4, 0, 3)}) {
+            for (const glm::dvec3 onSurface :
+                 {glm::dvec3(3, 4, 0), glm::dvec3(0, 5, 0), glm::dvec3(0, 0, -5), glm::dvec3(-4, 0, 3)}) {
                 const glm::dvec3 normal = onSurface / 5.0;
                 const glm::dvec3 tangent = glm::normalize(glm::cross(normal, glm::dvec3(0.6, 0.0, 0.8)));
                 for (const double tilt : {0.5 * std::numbers::pi, 0.5, 0.05, 1e-2, 1e-4, 0.0}) {

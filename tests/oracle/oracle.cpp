@@ -46,7 +46,8 @@ ExactScene asGiven(const Scene& scene) {
             result.nodes.push_back({false, 0.0, exact(sphere.center), sphere.radius});
         }
     }
-    for (const PointLight& light : scene.lights) result.lights.push_back(exact(light.position));
+    for (const PointLight& light : scene.lights)
+        result.lights.push_back(exact(light.position));
     return result;
 }
 
@@ -69,14 +70,15 @@ ExactScene placed(const ExactScene& scene, const ExactVec& origin, double unitRo
         node.center = origin + roundedTo(node.center - origin, unitRoundoff);
         node.radius = roundedTo(node.radius, unitRoundoff);
     }
-    for (ExactVec& light : result.lights) light = origin + roundedTo(light - origin, unitRoundoff);
+    for (ExactVec& light : result.lights)
+        light = origin + roundedTo(light - origin, unitRoundoff);
     return result;
 }
 
 struct Candidate {
     bool hit = false;
     Exact t;
-    Exact margin;  // > 0 hit, < 0 miss
+    Exact margin;                 // > 0 hit, < 0 miss
     bool infiniteMargin = false;  // no direction flips it (origin inside a sphere, or on a plane)
 };
 
@@ -320,7 +322,8 @@ public:
     }
     double value() const { return std::sqrt(sumOfSquares_); }
     static double conditioning(double margin, double sensitivity) {
-        if (std::isinf(margin)) return kUnbounded;
+        if (std::isinf(margin))
+            return kUnbounded;
         return sensitivity > 0 ? std::abs(margin) / sensitivity : (margin != 0 ? kUnbounded : 0.0);
     }
 
@@ -353,14 +356,17 @@ Judged judge(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& dir
             Exact& component = move == 0 ? perturbed.x : move == 1 ? perturbed.y : perturbed.z;
             component = component + Exact(unitRoundoff);
         }
-        const RayTruth moved = traceExact(scene, move < 3 ? given : placed(given, exact(origin), unitRoundoff),
-                                          origin, perturbed);
-        for (std::size_t i = 0; i < nodes; ++i) hit[i].add(base.hitMargins[i], moved.hitMargins[i]);
+        const RayTruth moved =
+            traceExact(scene, move < 3 ? given : placed(given, exact(origin), unitRoundoff), origin, perturbed);
+        for (std::size_t i = 0; i < nodes; ++i)
+            hit[i].add(base.hitMargins[i], moved.hitMargins[i]);
         sameNode = sameNode && moved.node == base.node;
-        if (!sameNode || !base.node) continue;
+        if (!sameNode || !base.node)
+            continue;
         gap.add(base.nearestGap, moved.nearestGap);
         t.add(base.t, moved.t);
-        for (int c = 0; c < 3; ++c) normal.add(base.normal[c], moved.normal[c]);
+        for (int c = 0; c < 3; ++c)
+            normal.add(base.normal[c], moved.normal[c]);
         checker.add(base.checkerMargin, moved.checkerMargin);
         for (std::size_t i = 0; i < lights; ++i) {
             cosine[i].add(base.lights[i].cosTheta, moved.lights[i].cosTheta);
@@ -374,7 +380,8 @@ Judged judge(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& dir
         judged.nodeConditioning =
             std::min(judged.nodeConditioning, Sensitivity::conditioning(base.hitMargins[i], hit[i].value()));
     }
-    if (!base.node) return judged;
+    if (!base.node)
+        return judged;
     if (!sameNode) {
         judged.nodeConditioning = 0.0;
     }

@@ -42,10 +42,10 @@ struct RayTruth {
     double nearestGap = kUnbounded;   // the second-nearest hit's t minus the nearest's
     double t = 0;                     // distance along the unit direction
     glm::dvec3 point{0.0};
-    glm::dvec3 normal{0.0};           // facing the ray
-    double scale = 0;                 // the magnitude the hit's arithmetic works at (see distanceScale)
-    double radius = 0;                // of the hit sphere; 0 for a plane
-    std::optional<bool> oddChecker;   // checker-shaded hits
+    glm::dvec3 normal{0.0};             // facing the ray
+    double scale = 0;                   // the magnitude the hit's arithmetic works at (see distanceScale)
+    double radius = 0;                  // of the hit sphere; 0 for a plane
+    std::optional<bool> oddChecker;     // checker-shaded hits
     double checkerMargin = kUnbounded;  // plane: length to the nearest cell edge; sphere: degrees
     std::vector<LightTruth> lights;
 };

@@ -10,17 +10,23 @@ namespace hexray::oracle {
 namespace {
 
 LightStatus truthStatus(const LightTruth& light) {
-    if (light.atPoint) return LightStatus::AtPoint;
-    if (!light.facing) return LightStatus::FacingAway;
+    if (light.atPoint)
+        return LightStatus::AtPoint;
+    if (!light.facing)
+        return LightStatus::FacingAway;
     return light.blocked ? LightStatus::Shadowed : LightStatus::Lit;
 }
 
 const char* statusName(LightStatus status) {
     switch (status) {
-        case LightStatus::Lit: return "lit";
-        case LightStatus::FacingAway: return "facing away";
-        case LightStatus::Shadowed: return "shadowed";
-        default: return "at point";
+        case LightStatus::Lit:
+            return "lit";
+        case LightStatus::FacingAway:
+            return "facing away";
+        case LightStatus::Shadowed:
+            return "shadowed";
+        default:
+            return "at point";
     }
 }
 
@@ -84,9 +90,7 @@ private:
 
     double u() const { return judged_.unitRoundoff; }
 
-    double normalUnit() const {
-        return truth_.radius > 0 ? u() * std::max(1.0, truth_.scale / truth_.radius) : u();
-    }
+    double normalUnit() const { return truth_.radius > 0 ? u() * std::max(1.0, truth_.scale / truth_.radius) : u(); }
 
     void checkNormal() {
         const glm::dvec3 error = glm::abs(rendered_.normal - truth_.normal);

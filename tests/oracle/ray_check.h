@@ -35,7 +35,7 @@ enum class LightStatus { Lit, FacingAway, Shadowed, AtPoint };
 // What a renderer reports for one ray, in world units.
 struct RendererRay {
     glm::dvec3 origin{0.0};
-    glm::dvec3 direction{0.0};  // as the renderer used it: the oracle judges this ray
+    glm::dvec3 direction{0.0};      // as the renderer used it: the oracle judges this ray
     bool worldCoordinates = false;  // positions held in world coordinates, not relative to the eye
     std::optional<std::size_t> node;
     double t = 0;

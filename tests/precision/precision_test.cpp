@@ -57,9 +57,9 @@ TEST(Precision, TheEyeCloseToAHugeSphereNeedsDouble) {
 }
 
 TEST(Precision, AutoPicksFloatForTheCourseScenesAndDoubleForTheHardestCases) {
-    for (const char* name : {"lecture-demo", "course-2024-lecture4", "spheres-and-lights", "constant-debug",
-                             "hard/tiny-sphere-far-1e3", "hard/scene-offset-1e7", "hard/checker-far-1e7",
-                             "hard/overflow-huge-scale", "hard/underflow-tiny-scale"}) {
+    for (const char* name :
+         {"lecture-demo", "course-2024-lecture4", "spheres-and-lights", "constant-debug", "hard/tiny-sphere-far-1e3",
+          "hard/scene-offset-1e7", "hard/checker-far-1e7", "hard/overflow-huge-scale", "hard/underflow-tiny-scale"}) {
         EXPECT_EQ(choosePrecision(loadSceneFile(test::sourcePath(std::string("scenes/") + name + ".json")), true),
                   Precision::F32)
             << name;

@@ -62,7 +62,8 @@ std::string validSceneWith(const std::string& from, const std::string& to) {
     std::string text = kValidScene;
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << "test setup: \"" << from << "\" is not in the valid scene";
-    if (at != std::string::npos) text.replace(at, from.size(), to);
+    if (at != std::string::npos)
+        text.replace(at, from.size(), to);
     return text;
 }
 
@@ -87,7 +88,9 @@ void expectVec(const glm::dvec3& actual, const glm::dvec3& expected) {
     EXPECT_EQ(actual.z, expected.z);
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 // A scratch folder for tests that need real files, removed afterwards.
 class SceneFileTest : public ::testing::Test {
@@ -171,7 +174,8 @@ TEST(SceneLoader, OmittedOptionalFieldsTakeTheirDefaults) {
         "camera": {"position": [1, 2, 3]},
         "lights": [{"position": [0, 0, 0], "intensity": 5}],
         "nodes": []
-    })", "defaults.json");
+    })",
+                                   "defaults.json");
 
     EXPECT_EQ(scene.image.sampling, Sampling::Center);
     EXPECT_EQ(scene.image.encoding, Encoding::Srgb);
@@ -192,17 +196,18 @@ TEST(SceneLoader, OmittedOptionalFieldsTakeTheirDefaults) {
 
 TEST(SceneLoader, OmittedListsAreEmpty) {
     const Scene scene = parseScene(R"({"image": {"width": 1, "height": 1}, "camera": {"position": [0, 0, 0]},
-                                       "nodes": []})", "empty.json");
+                                       "nodes": []})",
+                                   "empty.json");
     EXPECT_TRUE(scene.lights.empty());
     EXPECT_TRUE(scene.shaders.empty());
     EXPECT_TRUE(scene.nodes.empty());
 }
 
 TEST(SceneLoader, ReadsTheCourseSettings) {
-    const Scene scene = parseScene(
-        validSceneWith(R"("image": {"width": 8, "height": 6})",
-                       R"("image": {"width": 8, "height": 6, "sampling": "corner", "encoding": "linear"})"),
-        "course.json");
+    const Scene scene =
+        parseScene(validSceneWith(R"("image": {"width": 8, "height": 6})",
+                                  R"("image": {"width": 8, "height": 6, "sampling": "corner", "encoding": "linear"})"),
+                   "course.json");
     EXPECT_EQ(scene.image.sampling, Sampling::Corner);
     EXPECT_EQ(scene.image.encoding, Encoding::Linear);
 }
@@ -219,9 +224,9 @@ TEST(SceneLoader, ReadsCameraAngles) {
 }
 
 TEST(SceneLoader, HexColoursAreCaseInsensitiveAndHdrComponentsAreKept) {
-    const Scene scene = parseScene(validSceneWith(R"("ambient": [0.1, 0.1, 0.1])",
-                                                  R"("ambient": "#FfA00b", "background": [2.5, 0, 1e3])"),
-                                   "colours.json");
+    const Scene scene = parseScene(
+        validSceneWith(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": "#FfA00b", "background": [2.5, 0, 1e3])"),
+        "colours.json");
     expectVec(scene.ambient, {1.0, 0xa0 / 255.0, 0x0b / 255.0});
     expectVec(scene.background, {2.5, 0, 1000});
 }
@@ -235,7 +240,8 @@ TEST(SceneLoader, AcceptsTheLargestAllowedImages) {
     EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 16384, "height": 1)"), "wide.json")
                   .image.width,
               16384u);
-    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 16384, "height": 16384, "spp": 16)"), "big.json")
+    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8, "height": 6)", R"("width": 16384, "height": 16384, "spp": 16)"),
+                         "big.json")
                   .image.height,
               16384u);
 }
@@ -247,7 +253,8 @@ TEST(SceneLoader, ShaderIndicesFollowShaderNames) {
         "shaders": {"red": {"type": "lambert", "color": [1, 0, 0]}, "blue": {"type": "constant", "color": "#0000ff"}},
         "nodes": [{"geometry": {"type": "plane", "y": -2}, "shader": "blue"},
                   {"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"}]
-    })", "indices.json");
+    })",
+                                   "indices.json");
     ASSERT_EQ(scene.shaderNames, (std::vector<std::string>{"blue", "red"}));
     ASSERT_EQ(scene.nodes.size(), 2u);
     EXPECT_EQ(scene.nodes[0].shaderIndex, 0u);
@@ -260,14 +267,16 @@ TEST(SceneLoader, ShaderIndicesFollowShaderNames) {
 // ---------------------------------------------------------------- JSON syntax
 
 TEST(SceneLoaderRejects, MissingCommaWithLineAndColumn) {
-    const std::string message = errorFor("{\n"
-                                         "  \"image\": {\"width\": 8, \"height\": 6}\n"
-                                         "  \"camera\": {\"position\": [0, 0, 0]},\n"
-                                         "  \"nodes\": []\n"
-                                         "}\n");
+    const std::string message = errorFor(
+        "{\n"
+        "  \"image\": {\"width\": 8, \"height\": 6}\n"
+        "  \"camera\": {\"position\": [0, 0, 0]},\n"
+        "  \"nodes\": []\n"
+        "}\n");
     // The parser stops at the end of the unexpected string "camera": line 3, column 10.
-    EXPECT_EQ(message, "test.json:3:10: JSON syntax error: syntax error while parsing object - "
-                       "unexpected string literal; expected '}'");
+    EXPECT_EQ(message,
+              "test.json:3:10: JSON syntax error: syntax error while parsing object - "
+              "unexpected string literal; expected '}'");
 }
 
 TEST(SceneLoaderRejects, SyntaxErrorColumnsCountCharactersNotBytes) {
@@ -278,8 +287,9 @@ TEST(SceneLoaderRejects, SyntaxErrorColumnsCountCharactersNotBytes) {
 }
 
 TEST(SceneLoaderRejects, TruncatedFile) {
-    EXPECT_EQ(errorFor("{"), "test.json:1:2: JSON syntax error: syntax error while parsing object key - "
-                             "unexpected end of input; expected string literal");
+    EXPECT_EQ(errorFor("{"),
+              "test.json:1:2: JSON syntax error: syntax error while parsing object key - "
+              "unexpected end of input; expected string literal");
     EXPECT_TRUE(contains(errorFor(""), "test.json:1:1: JSON syntax error: ")) << errorFor("");
 }
 
@@ -291,8 +301,10 @@ TEST(SceneLoaderRejects, DuplicateKey) {
 // 20 KB of '[' take a minute and 1.4 GB; 200 KB would have exhausted memory.
 TEST(SceneLoaderRejects, DeepNestingQuicklyAndAtItsPlace) {
     std::string path = "nodes";
-    for (int level = 2; level <= 64; ++level) path += "[0]";  // root, nodes, 62 arrays; the 65th is refused
-    EXPECT_EQ(errorFor(R"({"nodes": )" + std::string(200000, '[')), "test.json: " + path + ": nested deeper than 64 levels");
+    for (int level = 2; level <= 64; ++level)
+        path += "[0]";  // root, nodes, 62 arrays; the 65th is refused
+    EXPECT_EQ(errorFor(R"({"nodes": )" + std::string(200000, '[')),
+              "test.json: " + path + ": nested deeper than 64 levels");
     // 64 levels are still read (and then rejected for what they are).
     EXPECT_EQ(errorFor(std::string(64, '[') + std::string(64, ']')),
               "test.json: (root): expected an object (got an array of 1 element)");
@@ -300,28 +312,36 @@ TEST(SceneLoaderRejects, DeepNestingQuicklyAndAtItsPlace) {
 
 // Paths the parser reports (not the scene reader) inside nested arrays and objects.
 TEST(SceneLoaderRejects, ParserProblemsNamedAtNestedPaths) {
-    EXPECT_EQ(errorFor(R"({"lights": [1, {"a": [2, 3, 1e999]}]})"), "test.json: lights[1].a[2]: must be a finite number (got 1e999)");
-    EXPECT_EQ(errorFor(R"({"lights": [1, {"a": [[2], 3, {"b": 1, "b": 2}]}]})"), "test.json: lights[1].a[2].b: duplicate key");
+    EXPECT_EQ(errorFor(R"({"lights": [1, {"a": [2, 3, 1e999]}]})"),
+              "test.json: lights[1].a[2]: must be a finite number (got 1e999)");
+    EXPECT_EQ(errorFor(R"({"lights": [1, {"a": [[2], 3, {"b": 1, "b": 2}]}]})"),
+              "test.json: lights[1].a[2].b: duplicate key");
 }
 
 TEST(SceneLoaderRejects, LongTokensAreCutInSyntaxErrors) {
-    EXPECT_EQ(errorFor(R"({"image": ")" + std::string(100000, 'x')),
-              "test.json:1:100012: JSON syntax error: syntax error while parsing value - invalid string: missing closing "
-              "quote; last read: '\"" + std::string(39, 'x') + "...'");
+    EXPECT_EQ(
+        errorFor(R"({"image": ")" + std::string(100000, 'x')),
+        "test.json:1:100012: JSON syntax error: syntax error while parsing value - invalid string: missing closing "
+        "quote; last read: '\"" +
+            std::string(39, 'x') + "...'");
     // Cut between characters, not inside one: the 20th two-byte character would straddle the cut.
     std::string accents;
-    for (int i = 0; i < 100; ++i) accents += "\u00e9";
+    for (int i = 0; i < 100; ++i)
+        accents += "\u00e9";
     std::string shown = "\"";
-    for (int i = 0; i < 19; ++i) shown += "\u00e9";
+    for (int i = 0; i < 19; ++i)
+        shown += "\u00e9";
     EXPECT_EQ(errorFor(R"({"image": ")" + accents),
               "test.json:1:112: JSON syntax error: syntax error while parsing value - invalid string: missing closing "
-              "quote; last read: '" + shown + "...'");
+              "quote; last read: '" +
+                  shown + "...'");
 }
 
 TEST(SceneLoaderRejects, LongKeysAreCutInMessages) {
     const std::string key(100000, 'k');
     EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, ")" + key + R"(": 1,)"),
-              "test.json: image[\"" + std::string(40, 'k') + "\"...]: unknown key (allowed: encoding, height, sampling, spp, width)");
+              "test.json: image[\"" + std::string(40, 'k') +
+                  "\"...]: unknown key (allowed: encoding, height, sampling, spp, width)");
 }
 
 // ---------------------------------------------------------------- text encodings and comments
@@ -350,8 +370,8 @@ TEST(SceneLoaderRejects, Utf16AndUtf32WithOrWithoutAByteOrderMarkByName) {
                           Case{"\xFF\xFE\0\0", 4, true, "UTF-32 (little-endian)", "UTF-32LE"},
                           Case{"\0\0\xFE\xFF", 4, false, "UTF-32 (big-endian)", "UTF-32BE"}}) {
         const std::string bom(c.bom, std::size_t(c.width));
-        for (const std::string& text : {bom + widened(kValidScene, c.width, c.littleEndian),
-                                        widened(kValidScene, c.width, c.littleEndian)}) {
+        for (const std::string& text :
+             {bom + widened(kValidScene, c.width, c.littleEndian), widened(kValidScene, c.width, c.littleEndian)}) {
             EXPECT_EQ(errorFor(text), std::string("test.json: the file is ") + c.name +
                                           " text, and scene files are UTF-8: convert it, e.g. with iconv -f " +
                                           c.iconvName + " -t UTF-8");
@@ -362,8 +382,9 @@ TEST(SceneLoaderRejects, Utf16AndUtf32WithOrWithoutAByteOrderMarkByName) {
 TEST(SceneLoader, AcceptsAUtf8ByteOrderMarkAndCountsNoColumnForIt) {
     const Scene scene = parseScene("\xEF\xBB\xBF" + kValidScene, "test.json");
     EXPECT_EQ(scene.image.width, 8u);
-    EXPECT_EQ(errorFor("\xEF\xBB\xBF{]"), "test.json:1:2: JSON syntax error: syntax error while parsing object key - "
-                                          "unexpected ']'; expected string literal");
+    EXPECT_EQ(errorFor("\xEF\xBB\xBF{]"),
+              "test.json:1:2: JSON syntax error: syntax error while parsing object key - "
+              "unexpected ']'; expected string literal");
 }
 
 TEST(SceneLoader, LineAndBlockCommentsAreIgnored) {
@@ -486,9 +507,9 @@ TEST(SceneLoaderRejects, NonFiniteNumbers) {
 // ---------------------------------------------------------------- the supported range (scene.h)
 
 TEST(SceneLoader, AcceptsLengthsAtTheEdgesOfTheSupportedRange) {
-    const Scene scene = parseScene(validSceneWith(R"("center": [0, 0, 0], "radius": 1)",
-                                                  R"("center": [1e50, -1e50, 1e-50], "radius": 1e-50)"),
-                                   "test.json");
+    const Scene scene = parseScene(
+        validSceneWith(R"("center": [0, 0, 0], "radius": 1)", R"("center": [1e50, -1e50, 1e-50], "radius": 1e-50)"),
+        "test.json");
     const Sphere& sphere = std::get<Sphere>(scene.nodes[0].geometry);
     EXPECT_EQ(sphere.center, glm::dvec3(1e50, -1e50, 1e-50));
     EXPECT_EQ(sphere.radius, 1e-50);
@@ -509,14 +530,14 @@ TEST(SceneLoaderRejects, LengthsBeyondTheSupportedRange) {
               "test.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 " + range + " (got 1e+308)");
     EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 9.99e-51)"),
               "test.json: nodes[0].geometry.radius: must be between 1e-50 and 1e+50 " + range + " (got 9.99e-51)");
-    EXPECT_EQ(errorForChange(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})",
-                             R"({"type": "plane", "y": 1e308})"),
-              "test.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 " + range + " (got 1e+308)");
+    EXPECT_EQ(
+        errorForChange(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})", R"({"type": "plane", "y": 1e308})"),
+        "test.json: nodes[0].geometry.y: must be 0 or between 1e-50 and 1e+50 " + range + " (got 1e+308)");
     EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -1.0000001e50])"),
               "test.json: camera.position[2]: must be 0 or between 1e-50 and 1e+50 " + range + " (got -1.0000001e+50)");
-    EXPECT_EQ(errorForChange(R"("center": [0, 0, 0])", R"("center": [0, 1e-300, 0])"),
-              "test.json: nodes[0].geometry.center[1]: must be 0 or between 1e-50 and 1e+50 " + range +
-                  " (got 1e-300)");
+    EXPECT_EQ(
+        errorForChange(R"("center": [0, 0, 0])", R"("center": [0, 1e-300, 0])"),
+        "test.json: nodes[0].geometry.center[1]: must be 0 or between 1e-50 and 1e+50 " + range + " (got 1e-300)");
     EXPECT_EQ(errorForChange(R"("position": [0, 10, 0])", R"("position": [3.5e58, 10, 0])"),
               "test.json: lights[0].position[0]: must be 0 or between 1e-50 and 1e+50 " + range + " (got 3.5e+58)");
     EXPECT_EQ(errorForChange(R"({"type": "lambert", "color": [1, 0, 0]})",
@@ -548,9 +569,9 @@ TEST(SceneLoaderRejects, BadColourArrays) {
     const std::string forms = "[r, g, b] with finite components >= 0, or \"#rrggbb\"";
     EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.1, 0.1])"),
               "test.json: ambient: expected a colour: " + forms + " (got an array of 2 elements)");
-    EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.1, -0.5, 0.1])"),
-              "test.json: ambient[1]: colour component must be a finite number >= 0 (got number -0.5); a colour is " +
-                  forms);
+    EXPECT_EQ(
+        errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.1, -0.5, 0.1])"),
+        "test.json: ambient[1]: colour component must be a finite number >= 0 (got number -0.5); a colour is " + forms);
     EXPECT_EQ(errorForChange(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": 0.1)"),
               "test.json: ambient: expected a colour: " + forms + " (got number 0.1)");
 }
@@ -605,13 +626,16 @@ TEST(SceneLoaderRejects, BadEnumStrings) {
 const std::string kValidNode = R"({"geometry": {"type": "sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"})";
 
 // kValidScene whose only node is replaced by `nodes` (the text between the list's brackets).
-std::string validSceneWithNodes(const std::string& nodes) { return validSceneWith(kValidNode, nodes); }
+std::string validSceneWithNodes(const std::string& nodes) {
+    return validSceneWith(kValidNode, nodes);
+}
 
 // `count` spheres, the i-th at (i, 0, 0), except that node `at` is `replacement`.
 std::string manySpheres(std::size_t count, std::size_t at = std::string::npos, const std::string& replacement = "") {
     std::string nodes;
     for (std::size_t i = 0; i < count; ++i) {
-        if (i > 0) nodes += ",\n";
+        if (i > 0)
+            nodes += ",\n";
         nodes += i == at ? replacement
                          : R"({"geometry": {"type": "sphere", "center": [)" + std::to_string(i) +
                                R"(, 0, 0], "radius": 1}, "shader": "red"})";
@@ -635,8 +659,9 @@ TEST(SceneLoaderNodes, DuplicateKeyDeepInsideALargeFile) {
     const std::string geometry = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "radius": 2})";
     EXPECT_EQ(errorFor(manySpheres(100000, 99990, R"({"geometry": )" + geometry + R"(, "shader": "red"})")),
               "test.json: nodes[99990].geometry.radius: duplicate key");
-    EXPECT_EQ(errorFor(manySpheres(100000, 77777, R"({"shader": "red", "geometry": {"type": "plane", "y": 0},)"
-                                                  R"( "shader": "red"})")),
+    EXPECT_EQ(errorFor(manySpheres(100000, 77777,
+                                   R"({"shader": "red", "geometry": {"type": "plane", "y": 0},)"
+                                   R"( "shader": "red"})")),
               "test.json: nodes[77777].shader: duplicate key");
 }
 
@@ -666,9 +691,11 @@ TEST(SceneLoaderNodes, NodesMayComeBeforeTheShadersTheyName) {
 }
 
 TEST(SceneLoaderNodes, NumbersInEveryJsonFormAreReadAlike) {
-    const Scene scene = parseScene(validSceneWithNodes(
-        R"({"geometry": {"type": "sphere", "center": [1, -2, 3.5e2], "radius": 18446744073709551615}, "shader": "red"},
-           {"geometry": {"type": "plane", "y": -7.25}, "shader": "red"})"), "test.json");
+    const Scene scene = parseScene(
+        validSceneWithNodes(
+            R"({"geometry": {"type": "sphere", "center": [1, -2, 3.5e2], "radius": 18446744073709551615}, "shader": "red"},
+           {"geometry": {"type": "plane", "y": -7.25}, "shader": "red"})"),
+        "test.json");
     const Sphere& sphere = std::get<Sphere>(scene.nodes[0].geometry);
     expectVec(sphere.center, {1, -2, 350});
     EXPECT_EQ(sphere.radius, 18446744073709551615.0);
@@ -682,8 +709,7 @@ TEST(SceneLoaderNodes, EachBadNodeIsNamedWithItsFirstProblem) {
         {R"([])", "nodes[0]: expected an object (got an array of 0 elements)"},
         {R"({"shader": "red"})", "nodes[0].geometry: missing required field"},
         {R"({"geometry": null, "shader": "red"})", "nodes[0].geometry: expected an object (got null)"},
-        {R"({"geometry": {"type": "plane", "y": 0}, "shader": null})",
-         "nodes[0].shader: expected a string (got null)"},
+        {R"({"geometry": {"type": "plane", "y": 0}, "shader": null})", "nodes[0].shader: expected a string (got null)"},
         {R"({"geometry": {"type": "plane", "y": 0}, "shader": "red", "name": "x"})",
          "nodes[0].name: unknown key (allowed: geometry, shader)"},
         {R"({"geometry": {"center": [0, 0, 0], "radius": 1}, "shader": "red"})",
@@ -790,7 +816,8 @@ TEST(SceneFiles, EverySceneUnderScenesLoads) {
     const fs::path scenes = sourceDir() / "scenes";
     ASSERT_TRUE(fs::is_directory(scenes)) << scenes;
     for (const auto& entry : fs::recursive_directory_iterator(scenes)) {
-        if (!entry.is_regular_file() || entry.path().extension() != ".json") continue;
+        if (!entry.is_regular_file() || entry.path().extension() != ".json")
+            continue;
         try {
             loadSceneFile(entry.path());
         } catch (const SceneError& error) {
@@ -833,8 +860,9 @@ TEST(OverrideImageSize, RejectsWithTheSameChecksAndLeavesTheSceneAlone) {
 
 TEST(SamplesPerPixel, DefaultOneReadFromSppAndChecked) {
     EXPECT_EQ(parseScene(kValidScene, "test.json").image.samplesPerPixel, 1u);
-    EXPECT_EQ(parseScene(validSceneWith(R"("width": 8,)", R"("width": 8, "spp": 16,)"), "test.json").image.samplesPerPixel,
-              16u);
+    EXPECT_EQ(
+        parseScene(validSceneWith(R"("width": 8,)", R"("width": 8, "spp": 16,)"), "test.json").image.samplesPerPixel,
+        16u);
     EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, "spp": 0,)"),
               "test.json: image.spp: must be between 1 and 1024 (got 0)");
     EXPECT_EQ(errorForChange(R"("width": 8,)", R"("width": 8, "spp": 2.5,)"),

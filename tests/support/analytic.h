@@ -43,18 +43,40 @@ using Real = long double;
 struct V3 {
     Real x = 0, y = 0, z = 0;
 };
-inline V3 toV3(const glm::dvec3& v) { return {Real(v.x), Real(v.y), Real(v.z)}; }
-inline V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline V3 operator-(V3 a) { return {-a.x, -a.y, -a.z}; }
-inline V3 operator*(V3 a, Real s) { return {a.x * s, a.y * s, a.z * s}; }
-inline V3 operator*(Real s, V3 a) { return a * s; }
-inline Real dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-inline Real length(V3 a) { return std::sqrt(dot(a, a)); }
-inline V3 normalize(V3 a) { return a * (Real(1) / length(a)); }
+inline V3 toV3(const glm::dvec3& v) {
+    return {Real(v.x), Real(v.y), Real(v.z)};
+}
+inline V3 operator+(V3 a, V3 b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline V3 operator-(V3 a, V3 b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline V3 operator-(V3 a) {
+    return {-a.x, -a.y, -a.z};
+}
+inline V3 operator*(V3 a, Real s) {
+    return {a.x * s, a.y * s, a.z * s};
+}
+inline V3 operator*(Real s, V3 a) {
+    return a * s;
+}
+inline Real dot(V3 a, V3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline V3 cross(V3 a, V3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline Real length(V3 a) {
+    return std::sqrt(dot(a, a));
+}
+inline V3 normalize(V3 a) {
+    return a * (Real(1) / length(a));
+}
 // The angle between two vectors, accurate at any angle (acos of a dot product is not near 0).
-inline Real angleBetween(V3 a, V3 b) { return std::atan2(length(cross(a, b)), dot(a, b)); }
+inline Real angleBetween(V3 a, V3 b) {
+    return std::atan2(length(cross(a, b)), dot(a, b));
+}
 
 // ---------------------------------------------------------------- margins
 
@@ -155,9 +177,11 @@ struct PixelTruth {
     std::vector<LightTruth> lights;
     glm::dvec3 color{0.0};  // the model's linear colour, from the decisions above
     bool anyAmbiguous() const {
-        if (nodeAmbiguous || checkerAmbiguous) return true;
+        if (nodeAmbiguous || checkerAmbiguous)
+            return true;
         for (const LightTruth& l : lights) {
-            if (l.ambiguous) return true;
+            if (l.ambiguous)
+                return true;
         }
         return false;
     }
@@ -315,7 +339,8 @@ inline Occlusion segmentOcclusion(const Scene& scene, std::uint32_t ownNode, boo
             ambiguous = true;  // grazing the occluder
         }
         for (Real s : crossings) {
-            if (!std::isfinite(s)) continue;
+            if (!std::isfinite(s))
+                continue;
             const Real edge = std::min(std::fabs(s), std::fabs(s - segment));
             if (edge < margins.relative * scale) {
                 ambiguous = true;
@@ -329,8 +354,10 @@ inline Occlusion segmentOcclusion(const Scene& scene, std::uint32_t ownNode, boo
 }
 
 inline glm::dvec3 albedoOf(const Shader& shader, bool odd) {
-    if (const auto* lambert = std::get_if<LambertShader>(&shader)) return lambert->color;
-    if (const auto* checker = std::get_if<CheckerShader>(&shader)) return odd ? checker->color2 : checker->color1;
+    if (const auto* lambert = std::get_if<LambertShader>(&shader))
+        return lambert->color;
+    if (const auto* checker = std::get_if<CheckerShader>(&shader))
+        return odd ? checker->color2 : checker->color1;
     return std::get<ConstantShader>(shader).color;
 }
 
@@ -517,7 +544,8 @@ CheckCount checkNodes(const ImageTruth& truth, const std::vector<PixelClass>& cl
     CheckCount c{name};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
-        if (!where(p, truth.rays[i])) continue;
+        if (!where(p, truth.rays[i]))
+            continue;
         if (p.nodeAmbiguous) {
             ++c.excluded;
             continue;
@@ -537,12 +565,14 @@ inline CheckCount checkDisc(const ImageTruth& truth, const std::vector<PixelClas
         const PixelTruth& p = truth.pixels[i];
         const bool inTruth = p.node == node;
         const bool inRender = classes[i].node == node;
-        if (!inTruth && !inRender) continue;
+        if (!inTruth && !inRender)
+            continue;
         if (p.nodeAmbiguous) {
             ++c.excluded;
             continue;
         }
-        if (inTruth) ++c.checked;
+        if (inTruth)
+            ++c.checked;
         if (inTruth != inRender) {
             c.violation(i, truth.width, "want " + nodeName(p.node) + " got " + nodeName(classes[i].node));
         }
@@ -555,7 +585,8 @@ inline CheckCount checkCheckerParity(const ImageTruth& truth, const std::vector<
     CheckCount c{"checker"};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
-        if (!p.isPlaneChecker || p.nodeAmbiguous || classes[i].node != p.node) continue;
+        if (!p.isPlaneChecker || p.nodeAmbiguous || classes[i].node != p.node)
+            continue;
         if (p.checkerAmbiguous) {
             ++c.excluded;
             continue;
@@ -577,8 +608,10 @@ CheckCount checkLitBits(const ImageTruth& truth, const std::vector<PixelClass>& 
     CheckCount c{name};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
-        if (p.node == kNoNode || p.nodeAmbiguous || classes[i].node != p.node || light >= p.lights.size()) continue;
-        if (!where(p, truth.rays[i])) continue;
+        if (p.node == kNoNode || p.nodeAmbiguous || classes[i].node != p.node || light >= p.lights.size())
+            continue;
+        if (!where(p, truth.rays[i]))
+            continue;
         if (p.lights[light].ambiguous || p.checkerAmbiguous) {
             ++c.excluded;
             continue;
@@ -600,7 +633,8 @@ inline bool nearlyEqual(const glm::vec3& got, const glm::dvec3& want, double tol
     for (int k = 0; k < 3; ++k) {
         const double difference = std::fabs(double(got[k]) - want[k]);
         worst = std::isnan(difference) ? difference : std::max(worst, difference);
-        if (!(difference <= tolerance * std::max(1.0, std::fabs(want[k])))) ok = false;
+        if (!(difference <= tolerance * std::max(1.0, std::fabs(want[k]))))
+            ok = false;
     }
     return ok;
 }
@@ -620,7 +654,8 @@ CheckCount checkShading(const ImageTruth& truth, const std::vector<PixelClass>& 
     CheckCount c{"shading"};
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
         const PixelTruth& p = truth.pixels[i];
-        if (!where(p, truth.rays[i])) continue;
+        if (!where(p, truth.rays[i]))
+            continue;
         if (p.anyAmbiguous() || classes[i].node != p.node) {
             ++c.excluded;
             continue;
@@ -640,7 +675,8 @@ CheckCount checkUniform(const std::string& name, const Image& image, Where where
                         double tolerance) {
     CheckCount c{name};
     for (std::uint32_t i = 0; i < image.pixels.size(); ++i) {
-        if (!where(i)) continue;
+        if (!where(i))
+            continue;
         ++c.checked;
         if (!nearlyEqual(image.pixels[i], value, tolerance, c.worst)) {
             c.violation(i, image.width, "want " + colorText(value) + " got " + colorText(glm::dvec3(image.pixels[i])));
@@ -653,7 +689,8 @@ inline CheckCount checkAllBackground(const std::vector<PixelClass>& classes, std
     CheckCount c{"all-background"};
     for (std::uint32_t i = 0; i < classes.size(); ++i) {
         ++c.checked;
-        if (classes[i].node != kNoNode) c.violation(i, width, "got " + nodeName(classes[i].node));
+        if (classes[i].node != kNoNode)
+            c.violation(i, width, "got " + nodeName(classes[i].node));
     }
     return c;
 }
@@ -675,7 +712,8 @@ template <typename Where>
 std::uint64_t countPixels(const ImageTruth& truth, Where where) {
     std::uint64_t n = 0;
     for (std::uint32_t i = 0; i < truth.pixels.size(); ++i) {
-        if (where(truth.pixels[i], truth.rays[i])) ++n;
+        if (where(truth.pixels[i], truth.rays[i]))
+            ++n;
     }
     return n;
 }

@@ -32,13 +32,15 @@ struct DecodedPng {
     // The text of the chunk `keyword` (the first), or "" when there is none.
     std::string text(const std::string& keyword) const {
         for (const PngText& chunk : texts) {
-            if (chunk.keyword == keyword) return chunk.text;
+            if (chunk.keyword == keyword)
+                return chunk.text;
         }
         return "";
     }
     void setText(const std::string& keyword, const std::string& text) {
         for (PngText& chunk : texts) {
-            if (chunk.keyword == keyword) chunk.text = text;
+            if (chunk.keyword == keyword)
+                chunk.text = text;
         }
     }
 };

@@ -12,8 +12,8 @@
 namespace hexray::test {
 
 inline std::vector<int> catchableTerminatingSignals() {
-    std::vector<int> signals = {SIGHUP,  SIGINT,  SIGQUIT,   SIGPIPE,  SIGALRM, SIGTERM, SIGUSR1, SIGUSR2,
-                                SIGSTKFLT, SIGIO, SIGPROF, SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR};
+    std::vector<int> signals = {SIGHUP,    SIGINT, SIGQUIT, SIGPIPE,   SIGALRM, SIGTERM, SIGUSR1, SIGUSR2,
+                                SIGSTKFLT, SIGIO,  SIGPROF, SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR};
     for (int signal = SIGRTMIN; signal <= SIGRTMAX; ++signal) {
         signals.push_back(signal);
     }

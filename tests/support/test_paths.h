@@ -28,7 +28,8 @@ inline std::vector<std::filesystem::path> shippedScenes() {
 // A gtest-safe name for a scene: its path under scenes/ with separators and dashes as '_'.
 inline std::string sceneTestName(const std::filesystem::path& scene) {
     std::string name = std::filesystem::relative(scene, sourcePath("scenes")).replace_extension().string();
-    std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+    std::replace_if(
+        name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
     return name;
 }
 

@@ -61,20 +61,23 @@ protected:
 
 TEST_F(TileMergeTest, AStampDeclaringMoreTilesThanTheRendererMakesIsRefusedBeforeAllocation) {
     const std::string piece = writePiece("a.png", {{0, 100000000}, 67, 100000000, 1, "cpu reference", kScene, "0.1.0"});
-    expectRefusedWithinMemory({piece}, "a.png: its stamp declares a 67x100000000 image, larger than hexray renders "
-                                       "(at most 16384x16384)");
+    expectRefusedWithinMemory({piece},
+                              "a.png: its stamp declares a 67x100000000 image, larger than hexray renders "
+                              "(at most 16384x16384)");
 }
 
 TEST_F(TileMergeTest, APieceWiderThanTheRendererMakesIsRefusedBeforeAllocation) {
     const std::string piece = writePiece("wide.png", {{0, 1}, 5000000, 32, 1, "cpu reference", kScene, "0.1.0"});
-    expectRefusedWithinMemory({piece}, "wide.png: its stamp declares a 5000000x32 image, larger than hexray renders "
-                                       "(at most 16384x16384)");
+    expectRefusedWithinMemory({piece},
+                              "wide.png: its stamp declares a 5000000x32 image, larger than hexray renders "
+                              "(at most 16384x16384)");
 }
 
 TEST_F(TileMergeTest, AnOutputLargerThanTheRendererMakesIsRefused) {
     const std::string piece = writePiece("big.png", {{0, 20000}, 20000, 20000, 1, "cpu reference", kScene, "0.1.0"});
-    expectRefusedWithinMemory({piece}, "big.png: its stamp declares a 20000x20000 image, larger than hexray renders "
-                                       "(at most 16384x16384)");
+    expectRefusedWithinMemory({piece},
+                              "big.png: its stamp declares a 20000x20000 image, larger than hexray renders "
+                              "(at most 16384x16384)");
 }
 
 // The pieces are read from the files opened and checked, whatever is at their paths by then.

@@ -14,7 +14,8 @@ namespace {
 TEST(Tile, TilesCoverEveryRowOnceAndDifferInHeightByAtMostOne) {
     for (const std::uint32_t height : {1u, 7u, 53u, 480u, 16384u}) {
         for (const std::uint32_t count : {1u, 2u, 3u, 7u, 8u}) {
-            if (count > height) continue;
+            if (count > height)
+                continue;
             std::uint32_t next = 0;
             for (std::uint32_t index = 0; index < count; ++index) {
                 const RowRange rows = tileRows({index, count}, height);
@@ -30,11 +31,17 @@ TEST(Tile, TilesCoverEveryRowOnceAndDifferInHeightByAtMostOne) {
 }
 
 TEST(TileStamp, ReadsBackExactlyWhatItWrote) {
-    const TileStamp stamp{{3, 8},        640, 480, 4, "gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x",
-                          "0123456789abcdef/99", "0.1.0 (git 0123456789ab)"};
+    const TileStamp stamp{{3, 8},
+                          640,
+                          480,
+                          4,
+                          "gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x",
+                          "0123456789abcdef/99",
+                          "0.1.0 (git 0123456789ab)"};
     const std::string text = formatTileStamp(stamp);
-    EXPECT_EQ(text, "3/8 rows 180-239 of 640x480; spp 4; gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x; "
-                    "scene 0123456789abcdef/99; hexray 0.1.0 (git 0123456789ab)");
+    EXPECT_EQ(text,
+              "3/8 rows 180-239 of 640x480; spp 4; gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x; "
+              "scene 0123456789abcdef/99; hexray 0.1.0 (git 0123456789ab)");
     const std::optional<TileStamp> read = parseTileStamp(text);
     ASSERT_TRUE(read);
     EXPECT_EQ(read->tile, stamp.tile);
@@ -49,19 +56,19 @@ TEST(TileStamp, ReadsBackExactlyWhatItWrote) {
 TEST(TileStamp, AnythingElseIsNoStamp) {
     const std::string version = "; hexray 0.1.0 (git 0123456789ab)";
     for (const std::string& text : std::vector<std::string>{
-             "", "3/8",
-          "3/8 rows 181-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version,
-          "8/8 rows 480-479 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version,
-          "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1 extra" + version,
-          "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdeg/1" + version,
-          "3/8 rows 180-239 of 640x480; spp 4; cpu reference" + version,
-          "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1",
-          "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1; hexray ",
-          "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1; hexray a\tb",
-          "3/9 rows 0-0 of 640x1; spp 4; cpu reference; scene 0123456789abcdef/1" + version}) {
+             "", "3/8", "3/8 rows 181-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version,
+             "8/8 rows 480-479 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version,
+             "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1 extra" + version,
+             "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdeg/1" + version,
+             "3/8 rows 180-239 of 640x480; spp 4; cpu reference" + version,
+             "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1",
+             "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1; hexray ",
+             "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1; hexray a\tb",
+             "3/9 rows 0-0 of 640x1; spp 4; cpu reference; scene 0123456789abcdef/1" + version}) {
         EXPECT_FALSE(parseTileStamp(text)) << text;
     }
-    EXPECT_TRUE(parseTileStamp("3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version));
+    EXPECT_TRUE(
+        parseTileStamp("3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version));
 }
 
 TEST(TileStamp, AnImageTheRendererCannotMakeIsNamed) {
@@ -72,8 +79,9 @@ TEST(TileStamp, AnImageTheRendererCannotMakeIsNamed) {
               "its stamp declares a 16385x16384 image, larger than hexray renders (at most 16384x16384)");
     stamp.width = 16384;
     stamp.samplesPerPixel = 17;  // 16384^2 * 17 > 2^32 samples
-    EXPECT_EQ(beyondRendererLimits(stamp), "its stamp declares 16384x16384 pixels at spp 17, more samples than hexray "
-                                           "renders (spp at most 1024, 4294967296 samples an image)");
+    EXPECT_EQ(beyondRendererLimits(stamp),
+              "its stamp declares 16384x16384 pixels at spp 17, more samples than hexray "
+              "renders (spp at most 1024, 4294967296 samples an image)");
     stamp = {{0, 1}, 4, 4, 1025, "cpu reference", "0123456789abcdef/1", "0.1.0"};
     EXPECT_TRUE(beyondRendererLimits(stamp));
 }

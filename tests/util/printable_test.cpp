@@ -11,7 +11,8 @@ namespace {
 
 TEST(Printable, KeepsPrintableTextOfAnyLanguage) {
     EXPECT_EQ(printable("scenes/lecture demo.json"), "scenes/lecture demo.json");
-    EXPECT_EQ(printable("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8C\x88 \\x1b"), "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8C\x88 \\x1b");
+    EXPECT_EQ(printable("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8C\x88 \\x1b"),
+              "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8C\x88 \\x1b");
     EXPECT_EQ(printable(""), "");
 }
 
@@ -21,14 +22,18 @@ TEST(Printable, EscapesC0ControlsAndDelAsBytes) {
 }
 
 TEST(Printable, EscapesC1ControlsAsCodePoints) {
-    EXPECT_EQ(printable("\xC2\x80\xC2\x9B" "2J\xC2\x9F\xC2\xA0"), "\\u0080\\u009b2J\\u009f\xC2\xA0");  // U+00A0 is printable
+    EXPECT_EQ(printable("\xC2\x80\xC2\x9B"
+                        "2J\xC2\x9F\xC2\xA0"),
+              "\\u0080\\u009b2J\\u009f\xC2\xA0");  // U+00A0 is printable
 }
 
 TEST(Printable, EscapesEveryByteThatIsNotValidUtf8) {
-    EXPECT_EQ(printable("\x9b" "2J"), "\\x9b2J");               // a lone continuation byte (CSI in Latin-1)
-    EXPECT_EQ(printable("\xC3"), "\\xc3");                       // a sequence cut short
-    EXPECT_EQ(printable("\xC0\xAF"), "\\xc0\\xaf");              // an overlong '/'
-    EXPECT_EQ(printable("\xED\xA0\x80"), "\\xed\\xa0\\x80");     // a surrogate
+    EXPECT_EQ(printable("\x9b"
+                        "2J"),
+              "\\x9b2J");                                              // a lone continuation byte (CSI in Latin-1)
+    EXPECT_EQ(printable("\xC3"), "\\xc3");                             // a sequence cut short
+    EXPECT_EQ(printable("\xC0\xAF"), "\\xc0\\xaf");                    // an overlong '/'
+    EXPECT_EQ(printable("\xED\xA0\x80"), "\\xed\\xa0\\x80");           // a surrogate
     EXPECT_EQ(printable("\xF4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80");  // above U+10FFFF
     EXPECT_EQ(printable("\xFF\xFE"), "\\xff\\xfe");
 }

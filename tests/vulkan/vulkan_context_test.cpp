@@ -32,8 +32,8 @@ TEST(VulkanContext, SynchronizationValidationReportsAHazard) {
         const HostVisibleBuffer buffer(context.device(), context.physicalDevice(), 256,
                                        vk::BufferUsageFlagBits::eTransferDst);
         const vk::raii::CommandPool pool(context.device(), vk::CommandPoolCreateInfo({}, context.queueFamily()));
-        vk::raii::CommandBuffers commands(
-            context.device(), vk::CommandBufferAllocateInfo(*pool, vk::CommandBufferLevel::ePrimary, 1));
+        vk::raii::CommandBuffers commands(context.device(),
+                                          vk::CommandBufferAllocateInfo(*pool, vk::CommandBufferLevel::ePrimary, 1));
         commands[0].begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
         commands[0].fillBuffer(*buffer.buffer(), 0, VK_WHOLE_SIZE, 1);
         commands[0].fillBuffer(*buffer.buffer(), 0, VK_WHOLE_SIZE, 2);  // write after write, unsynchronized
