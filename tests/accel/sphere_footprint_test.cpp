@@ -10,13 +10,12 @@
 #include <glm/vec2.hpp>
 
 #include "accel/sphere_footprint.h"
+#include "support/random_uniform.h"
 
 namespace hexray {
 namespace {
 
-double uniform(std::mt19937_64& engine, double low, double high) {
-    return low + (high - low) * double(engine() >> 11) * 0x1.0p-53;
-}
+using test::uniform;
 
 // A view looking along +z, its window the tangent square [-size, size]^2.
 TangentView squareView(double size) {

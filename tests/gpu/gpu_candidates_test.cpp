@@ -20,23 +20,14 @@
 #include "support/floor_scene.h"
 #include "reference_comparison.h"
 #include "validated_vulkan.h"
+#include "support/random_uniform.h"
 
 namespace hexray {
 namespace {
 
-class GpuCandidatesTest : public test::ValidatedVulkanTest, public ::testing::WithParamInterface<Precision> {
-protected:
-    void SetUp() override {
-        test::ValidatedVulkanTest::SetUp();
-        if (GetParam() == Precision::F64 && !context().selected().hasFloat64) {
-            GTEST_SKIP() << context().selected().name << " has no shaderFloat64";
-        }
-    }
-};
+using GpuCandidatesTest = test::PrecisionVulkanTest;
 
-double uniform(std::mt19937_64& engine, double low, double high) {
-    return low + (high - low) * double(engine() >> 11) * 0x1.0p-53;
-}
+using test::uniform;
 
 Scene randomScene(std::uint32_t spheres, std::uint64_t seed) {
     Scene scene = makeRandomSpheresScene(spheres, seed);

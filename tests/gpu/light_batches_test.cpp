@@ -21,23 +21,14 @@
 #include "support/floor_scene.h"
 #include "reference_comparison.h"
 #include "validated_vulkan.h"
+#include "support/random_uniform.h"
 
 namespace hexray {
 namespace {
 
-class LightBatchesTest : public test::ValidatedVulkanTest, public ::testing::WithParamInterface<Precision> {
-protected:
-    void SetUp() override {
-        test::ValidatedVulkanTest::SetUp();
-        if (GetParam() == Precision::F64 && !context().selected().hasFloat64) {
-            GTEST_SKIP() << context().selected().name << " has no shaderFloat64";
-        }
-    }
-};
+using LightBatchesTest = test::PrecisionVulkanTest;
 
-double uniform(std::mt19937_64& engine, double low, double high) {
-    return low + (high - low) * double(engine() >> 11) * 0x1.0p-53;
-}
+using test::uniform;
 
 // The floor seen from above, filling the frame, under `lights` lights spread over it whose terms
 // sum to a mid grey: a share of them dropped shows in every pixel.

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "precision/precision.h"
 #include "vulkan/vulkan_context.h"
 
 namespace hexray::test {
@@ -25,6 +26,17 @@ protected:
 private:
     ValidationLog validation_;
     std::unique_ptr<VulkanContext> context_;
+};
+
+// The same, for a test run once per precision: f64 is skipped on a device without shaderFloat64.
+class PrecisionVulkanTest : public ValidatedVulkanTest, public ::testing::WithParamInterface<Precision> {
+protected:
+    void SetUp() override {
+        ValidatedVulkanTest::SetUp();
+        if (GetParam() == Precision::F64 && !context().selected().hasFloat64) {
+            GTEST_SKIP() << context().selected().name << " has no shaderFloat64";
+        }
+    }
 };
 
 }  // namespace hexray::test
