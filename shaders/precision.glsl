@@ -23,4 +23,7 @@ const float UNIT_ROUNDOFF = FLOAT32_UNIT_ROUNDOFF;
 
 const float FLOAT_MAX = 3.4028235e38;  // colours' largest finite value
 
+// pbrt's gamma(n) in this kernel's precision (unit_roundoff.h): a macro, so that constants can use it.
+#define gamma(n) HEXRAY_GAMMA(real(n), UNIT_ROUNDOFF)
+
 #endif  // HEXRAY_PRECISION_GLSL

@@ -11,6 +11,7 @@
 #define HEXRAY_LIGHT_BATCHES
 
 #include "checker.glsl"
+#include "kernel_policies.glsl"
 #include "lighting.glsl"
 #include "node_tests.glsl"
 #include "scene_data.glsl"
@@ -18,12 +19,6 @@
 #ifdef HEXRAY_CANDIDATES
 #include "candidates.glsl"
 #endif
-
-// On an exact tie the lower node index keeps the hit, as the course specifies ("the earlier
-// node"), in whichever order the nodes are tested; two misses are no tie.
-Hit nearer(Hit hit, real t, uint node) {
-    return t < hit.t || (t == hit.t && t != NO_HIT && node < hit.node) ? Hit(t, node) : hit;
-}
 
 Hit findNearestHit(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
@@ -55,23 +50,24 @@ bool planeBlocks(uint node, LightPath path, vec3r light) {
 #endif
 }
 
-// Whether sphere `node` (centre, radius) lies strictly between the surface of `hit` and the light
-// at `light`. Robust: tested from the light toward the surface, the same origin for every pixel; a
-// sphere the eye sees from outside (`ownLeftOut`: the hit's is one) cannot shadow its own visible
-// points (convexity), and is left out. The textbook test starts at the surface, as a course does.
-bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit, bool ownLeftOut) {
+// Whether sphere `node` (centre, radius) shadows the surface of `hit` from the light at `light`.
+// Robust: tested from the light toward the surface, the same origin for every pixel, and not the
+// hit's own sphere when the eye sees it from outside (`hitSeenFromOutside`, castsShadow). The
+// textbook test starts at the surface, as a course does.
+bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit, bool hitSeenFromOutside) {
 #ifdef HEXRAY_TEXTBOOK
     return sphereDistanceTextbook(path.shadowRay, sphere.xyz, sphere.w) < path.shadowLength;
 #else
     vec3r f = light - sphere.xyz;
-    return !(ownLeftOut && node == hit.node) &&
-           sphereCrossesSegment(f, sphere.w, originPower(f, sphere.w), -path.shadowRay.direction, path.shadowLength);
+    bool crosses =
+        sphereCrossesSegment(f, sphere.w, originPower(f, sphere.w), -path.shadowRay.direction, path.shadowLength);
+    return castsShadow(crosses, node, hit, hitSeenFromOutside);
 #endif
 }
 
 bool isOccluded(uint light, LightPath path, Hit hit) {
     vec3r position = lights[light].position.xyz;
-    bool ownLeftOut = nodes[hit.node].eyePower > 0.0;  // planes: 0
+    bool hitSeenFromOutside = nodes[hit.node].eyePower > 0.0;  // planes: 0
 #ifdef HEXRAY_TEXTBOOK
     bool blocked = false;
 #else
@@ -85,12 +81,12 @@ bool isOccluded(uint light, LightPath path, Hit hit) {
     CandidateRange spheres = lightCandidates(light, vec3(-path.shadowRay.direction), float(path.shadowLength));
     for (uint k = spheres.first; k < spheres.end && !blocked; ++k) {
         CandidateSphere s = candidateSphere(candidateEntry(k));
-        blocked = sphereBlocks(s.node, s.sphere, path, position, hit, ownLeftOut);
+        blocked = sphereBlocks(s.node, s.sphere, path, position, hit, hitSeenFromOutside);
     }
 #else
     for (uint i = 0u; i < frame.nodeCount && !blocked; ++i) {
         blocked = isPlaneNode(i) ? planeBlocks(i, path, position)
-                                 : sphereBlocks(i, nodes[i].geometry, path, position, hit, ownLeftOut);
+                                 : sphereBlocks(i, nodes[i].geometry, path, position, hit, hitSeenFromOutside);
     }
 #endif
     return blocked;
@@ -107,8 +103,7 @@ Surface hitSurface(Ray ray, Hit hit) {
 #else
     real eyePower = nodes[hit.node].eyePower;
     Surface sphere = sphereSurface(ray, geometry, eyePower);
-    // Seen from inside, the sphere is among its own shadow tests: its shadow rays start off it.
-    sphere.shadowOrigin = eyePower > 0.0 ? sphere.shadowOrigin : shadowOriginOffSphere(sphere, geometry);
+    sphere.shadowOrigin = sphereShadowOrigin(sphere, geometry, !(eyePower > 0.0));
     return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
 #endif
 }

@@ -18,7 +18,7 @@ struct Surface {
 // of the coordinates, and too large for contact shadows near the origin.
 const real SHADOW_EPSILON = 1e-4;
 // A bound on the rounding error of a reprojected sphere point, in units of its coordinates.
-const real REPROJECTION_ERROR = 5.0 * UNIT_ROUNDOFF;
+const real REPROJECTION_ERROR = gamma(5);
 
 vec3r planeNormalFacing(Ray ray) {
     return vec3r(0.0, ray.direction.y < 0.0 ? 1.0 : -1.0, 0.0);

@@ -5,6 +5,11 @@
 #ifndef HEXRAY_UNIT_ROUNDOFF_H
 #define HEXRAY_UNIT_ROUNDOFF_H
 
+// pbrt's gamma(n): n u / (1 - n u) bounds the relative error that n successive roundings in unit
+// roundoff u can leave (Higham, Accuracy and Stability of Numerical Algorithms, 3.1), while n u < 1.
+// A macro so that GLSL constants can use it (precision.glsl's gamma(n)).
+#define HEXRAY_GAMMA(n, unitRoundoff) ((n) * (unitRoundoff) / (1.0 - (n) * (unitRoundoff)))
+
 #ifdef __cplusplus
 namespace hexray {
 inline constexpr double FLOAT32_UNIT_ROUNDOFF = 5.9604644775390625e-8;

@@ -134,6 +134,7 @@ private:
         }
         out_ << "#include \"checker.glsl\"\n"
                 "#include \"intersect.glsl\"\n"
+                "#include \"kernel_policies.glsl\"\n"
                 "#include \"lighting.glsl\"\n"
                 "#include \"scene_data.glsl\"\n"
                 "#include \"surface.glsl\"\n\n";
@@ -191,9 +192,9 @@ private:
             if (!code_.nodes[i].cameraTested) {
                 continue;
             }
-            // On an exact tie the earlier node keeps the hit (strict <), as the course specifies.
-            out_ << "    real t" << i << " = " << cameraDistance(i) << ";\n"
-                 << "    hit = t" << i << " < hit.t ? Hit(t" << i << ", " << u(i) << ") : hit;\n";
+            const std::string t = "t" + std::to_string(i);
+            out_ << "    real " << t << " = " << cameraDistance(i) << ";\n"
+                 << "    hit = " << call("nearer", "hit", t, u(i)) << ";\n";
         }
         out_ << "    return hit;\n}\n\n";
     }
@@ -249,14 +250,12 @@ private:
                     "    s.position = vec3r(0.0); s.normal = vec3r(0.0);\n"
                     "    s.outwardNormal = vec3r(0.0); s.shadowOrigin = vec3r(0.0);\n";
         }
-        // Shadow rays leave out a sphere the camera sees from outside (convexity), not one it sees
-        // from inside: from there they start off the sphere.
         const NodeSet inside =
             set & where([](const NodeCode& n) { return n.geometry == gpu::GEOMETRY_SPHERE && !n.cameraOutside; });
         if (inside && !textbook()) {
             select("vec4r", "insideSphere", inside, "GEOMETRY");
-            out_ << "    s.shadowOrigin = " << contains(inside)
-                 << " ? shadowOriginOffSphere(s, insideSphere) : s.shadowOrigin;\n";
+            out_ << "    s.shadowOrigin = " << call("sphereShadowOrigin", "s", "insideSphere", contains(inside))
+                 << ";\n";
         }
         out_ << "    return s;\n}\n\n";
     }
@@ -310,11 +309,10 @@ private:
                 continue;
             }
             const std::string name = "blockedBy" + std::to_string(test.node);
-            out_ << "        bool " << name << " = " << shadowTest(light, test) << ";\n";
-            // A sphere the camera sees from outside cannot shadow its own visible points.
-            const bool ownExcluded = code_.nodes[test.node].cameraOutside;
-            out_ << "        shadowed = shadowed || (" << (ownExcluded ? "hit.node != " + u(test.node) + " && " : "")
-                 << name << ");\n";
+            const char* seenFromOutside = code_.nodes[test.node].cameraOutside ? "true" : "false";
+            out_ << "        bool " << name << " = " << shadowTest(light, test) << ";\n"
+                 << "        shadowed = shadowed || " << call("castsShadow", name, u(test.node), "hit", seenFromOutside)
+                 << ";\n";
         }
         out_ << "        irradiance += lightTerm(" << u(light) << ", vec4r(" << lightValue(light, "POWER")
              << ", 0.0), path, shadowed, flags);\n"
