@@ -7,11 +7,12 @@
 #include <new>
 
 #include "cli/progress.h"
+#include "gpu/plan_refused.h"
 #include "image/image_io.h"
 #include "io/output_error.h"
 #include "io/output_plan.h"
 #include "scene/scene_loader.h"
-#include "tile/tile_stamp.h"
+#include "strip/strip_stamp.h"
 #include "util/out_of_memory.h"
 #include "util/printable.h"
 
@@ -43,11 +44,14 @@ int guarded(const std::function<int()>& command) {
     } catch (const VulkanError& error) {
         printError(error.what());
         return exitCodeFor(error.failure());
+    } catch (const PlanRefused& error) {
+        printError(error.what());
+        return kVulkanUnavailable;  // for this scene
     } catch (const vk::SystemError& error) {
         const VulkanError classified = classify(error, "rendering");
         printError(classified.what());
         return exitCodeFor(classified.failure());
-    } catch (const TileError& error) {
+    } catch (const StripError& error) {
         printError(error.what());
         return kBadInput;
     } catch (const OutputConflict& error) {

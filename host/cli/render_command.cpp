@@ -15,13 +15,14 @@
 #include "cli/render_targets.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
+#include "gpu/plan_refused.h"
 #include "kernels/shader_compiler.h"
 #include "image/aov.h"
 #include "image/image_row_writer.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
-#include "tile/tile_stamp.h"
+#include "strip/strip_stamp.h"
 #include "util/build_version.h"
 #include "util/printable.h"
 
@@ -33,26 +34,26 @@ struct SceneRender {
     const RenderOptions& options;
     const RenderTarget& target;
     Scene scene;
-    RowRange rows;              // the whole image, or the tile's rows
-    std::string sceneIdentity;  // tiles only: recorded in the piece
+    RowRange rows;              // the whole image, or the strip's rows
+    std::string sceneIdentity;  // strips only: recorded in the piece
 
     SceneRender(const RenderOptions& renderOptions, const RenderTarget& renderTarget)
         : options(renderOptions), target(renderTarget) {
-        scene = loadScene(target.scenePath, options.image, options.tile ? &sceneIdentity : nullptr);
-        rows = options.tile ? tileRows(*options.tile, scene.image.height) : RowRange{0, scene.image.height};
+        scene = loadScene(target.scenePath, options.image, options.strip ? &sceneIdentity : nullptr);
+        rows = options.strip ? stripRows(*options.strip, scene.image.height) : RowRange{0, scene.image.height};
     }
 
-    // Opens the output; a tile's records `renderer`, since pieces of one image must share it, and
+    // Opens the output; a strip's records `renderer`, since pieces of one image must share it, and
     // the digest of its stamp and pixels, so that merge can prove it reads what was rendered.
     void open(std::optional<ImageRowWriter>& writer, const std::string& renderer) const {
         std::vector<ImageNote> notes;
         std::optional<DigestNote> digest;
-        if (options.tile) {
-            const TileStamp stamp{*options.tile, scene.image.width, scene.image.height, scene.image.samplesPerPixel,
-                                  renderer,      sceneIdentity,     buildVersion()};
-            const std::string text = formatTileStamp(stamp);
-            notes.push_back({kTileStampKey, text});
-            digest = DigestNote{kTileDigestKey, text};
+        if (options.strip) {
+            const StripStamp stamp{*options.strip, scene.image.width, scene.image.height, scene.image.samplesPerPixel,
+                                   renderer,       sceneIdentity,     buildVersion()};
+            const std::string text = formatStripStamp(stamp);
+            notes.push_back({kStripStampKey, text});
+            digest = DigestNote{kStripDigestKey, text};
         }
         writer.emplace(target.outputPath, *target.format, scene.image.width, rows.count, scene.image.encoding, notes,
                        digest);
@@ -206,12 +207,13 @@ class Fallback {
 public:
     explicit Fallback(Backend backend) : backend_(backend) {}
 
-    bool allowed(const VulkanError& error) {
-        if (backend_ != Backend::Auto || error.failure() == VulkanFailure::Request) {
+    // Whether the CPU takes over after the GPU path gave up for `reason`.
+    bool allowed(const std::string& reason) {
+        if (backend_ != Backend::Auto) {
             return false;
         }
         if (!noted_) {
-            std::fprintf(stderr, "hexray: note: %s; rendering on the CPU reference instead\n", error.reason().c_str());
+            std::fprintf(stderr, "hexray: note: %s; rendering on the CPU reference instead\n", reason.c_str());
             noted_ = true;
         }
         return true;
@@ -222,23 +224,30 @@ private:
     bool noted_ = false;
 };
 
+// After a Vulkan failure on the GPU path: rethrows it unless the CPU may take over.
+void handOver(const VulkanError& failure, GpuSession& gpu, Fallback& fallback) {
+    if (failure.failure() == VulkanFailure::DeviceLost) {
+        gpu.failed(failure);  // not to be used again
+    }
+    if (failure.failure() == VulkanFailure::Request || !fallback.allowed(failure.reason())) {
+        throw failure;
+    }
+}
+
 // Renders one scene into its file on the backend asked for; returns how, for the summary line.
 std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallback,
                         std::optional<ImageRowWriter>& writer, std::optional<StagedAovs>& aovs) {
     if (job.options.backend != Backend::Cpu) {
-        std::optional<VulkanError> failure;
         try {
             return renderOnGpu(job, gpu, writer, aovs);
+        } catch (const PlanRefused& refusal) {
+            if (!fallback.allowed(refusal.reason())) {
+                throw;
+            }
         } catch (const VulkanError& error) {
-            failure = error;
+            handOver(error, gpu, fallback);
         } catch (const vk::SystemError& error) {
-            failure = classify(error, "rendering");
-        }
-        if (failure->failure() == VulkanFailure::DeviceLost) {
-            gpu.failed(*failure);  // not to be used again
-        }
-        if (!fallback.allowed(*failure)) {
-            throw *failure;
+            handOver(classify(error, "rendering"), gpu, fallback);
         }
         writer.reset();  // drops the GPU's partial rows with their temporary file
         aovs.reset();
@@ -257,7 +266,7 @@ int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSes
     writer->finish();
     const ImageSettings& image = job.scene.image;
     std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
-    if (options.tile) {
+    if (options.strip) {
         size = "rows " + std::to_string(job.rows.first) + "-" + std::to_string(job.rows.end() - 1) + " of " + size;
     }
     std::printf("wrote %s (%s) — %s\n", displayName(target.outputPath).c_str(), size.c_str(), how.c_str());
@@ -275,8 +284,8 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
     if (targets.size() > 1 && !options.aovDirectory.empty()) {
         throw SceneError("--aov: AOVs need a single scene");
     }
-    if (options.tile && !options.aovDirectory.empty()) {
-        throw SceneError("--aov: AOVs are of the whole image, not of a tile");
+    if (options.strip && !options.aovDirectory.empty()) {
+        throw SceneError("--aov: AOVs are of the whole image, not of a strip");
     }
     std::vector<const RenderTarget*> rendered;  // a directory that could not be searched fails alone, later
     for (const RenderTarget& target : targets) {

@@ -13,6 +13,7 @@
 #include "camera/camera.h"
 
 #include "gpu/candidate_buffers.h"
+#include "gpu/plan_refused.h"
 #include "layout/gpu_layout.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/scene_constant_values.h"
@@ -447,7 +448,7 @@ std::vector<std::byte> traceRequest(const Scene& scene, std::uint32_t x, std::ui
 // One invocation traces a pixel: its loops cannot be split between dispatches (loop_budget.h).
 void requireTraceWithinLoopLimit(const RenderPlan& plan, const std::string& device) {
     if (plan.tracePasses > plan.loopPassLimit) {
-        throw VulkanError(VulkanFailure::Unsupported,
+        throw PlanRefused(Refusal::PastLoopLimit,
                           "tracing a pixel of this scene may need " + std::to_string(plan.tracePasses) +
                               " loop passes in one invocation, and " + device + " ends a shader's loops after " +
                               std::to_string(plan.loopPassLimit) + " in all: the trace would be wrong",

@@ -96,8 +96,8 @@ public:
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
-    // The plan for `scene` on this device (planRender). Throws VulkanError for F64 on a device
-    // without shaderFloat64.
+    // The plan for `scene` on this device (planRender). Throws PlanRefused where the device
+    // cannot render it as asked.
     RenderPlan plan(const Scene& scene, const PlanRequest& request = {}) const;
 
     GpuRenderResult render(const Scene& scene, const RenderPlan& plan, GpuOutput output);

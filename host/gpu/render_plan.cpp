@@ -12,10 +12,10 @@
 #include "accel/candidate_lists.h"
 #include "kernels/kept_kernels.h"
 #include "kernels/prebuilt_kernels.h"
+#include "gpu/plan_refused.h"
 #include "gpu/tile_classes.h"
 #include "scene/scene_contents.h"
 #include "shader_interface.h"
-#include "vulkan/vulkan_context.h"
 
 namespace hexray {
 namespace {
@@ -198,7 +198,7 @@ void planLoops(const Scene& scene, const PlanRequest& request, const DeviceAbili
         plan.lightBatches = std::move(*batches);
         return;
     }
-    throw VulkanError(VulkanFailure::Unsupported,
+    throw PlanRefused(Refusal::PastLoopLimit,
                       "a pixel of this scene (" + sceneContents(scene) + ") may need " +
                           std::to_string(smallestDispatchPasses(passes)) +
                           " loop passes for a single sample and light (its camera ray and its longest shadow test), "
@@ -222,7 +222,7 @@ Precision resolvePrecision(const Scene& scene, Precision requested, const Device
         return Precision::F64;
     }
     if (requested == Precision::F64 && !device.float64) {
-        throw VulkanError(VulkanFailure::NoFloat64,
+        throw PlanRefused(Refusal::NoFloat64,
                           "--precision f64 needs shaderFloat64, which " + device.name + " does not have",
                           "use --precision f32");
     }

@@ -81,8 +81,8 @@ struct RenderPlan {
     std::vector<std::string> warnings;  // what `render` tells the user: a precision overruled
 };
 
-// Decides everything about how the GPU renders `scene`. Throws VulkanError: NoFloat64 for
-// Precision::F64 on a device without float64, Unsupported for a scene a pixel of which needs more
+// Decides everything about how the GPU renders `scene`. Throws PlanRefused: NoFloat64 for
+// Precision::F64 on a device without float64, PastLoopLimit for a scene a pixel of which needs more
 // loop passes for one sample and one light than the device runs (loop_budget.h).
 RenderPlan planRender(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device);
 

@@ -23,7 +23,6 @@ enum class VulkanFailure {
     DeviceLost,      // lost during the render, or did not finish in time (hung)
     OutOfMemory,     // the driver reported out of device or host memory
     Request,         // what was asked is wrong: an unknown --device, a missing validation layer
-    Unsupported,     // the device cannot render this scene right (lavapipe's loop limit: gpu/loop_budget.h)
 };
 
 // Vulkan cannot be used: no driver, no suitable device, or a call failed.

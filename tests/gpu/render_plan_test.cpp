@@ -16,7 +16,7 @@
 #include "scene/scene_contents.h"
 #include "shader_interface.h"
 #include "support/test_paths.h"
-#include "vulkan/vulkan_context.h"
+#include "gpu/plan_refused.h"
 
 namespace hexray {
 namespace {
@@ -53,7 +53,7 @@ TEST(RenderPlan, PrecisionDecidesWidthFormulationAndPlacement) {
 
 TEST(RenderPlan, F64OnADeviceWithoutItIsRefused) {
     const Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
-    EXPECT_THROW(planRender(scene, {Precision::F64}, DeviceAbilities{"no-f64", false}), VulkanError);
+    EXPECT_THROW(planRender(scene, {Precision::F64}, DeviceAbilities{"no-f64", false}), PlanRefused);
 }
 
 // The camera test is the robust one only for a sphere whose surface the eye is close to (here a
@@ -213,8 +213,8 @@ TEST(RenderPlan, AScenePastTheLimitForOneSampleAndOneLightIsRefused) {
     try {
         planRender(planes, request, kLlvmpipe);
         FAIL() << "planned";
-    } catch (const VulkanError& error) {
-        EXPECT_EQ(error.failure(), VulkanFailure::Unsupported);
+    } catch (const PlanRefused& error) {
+        EXPECT_EQ(error.refusal(), Refusal::PastLoopLimit);
         const std::string message = error.what();
         EXPECT_NE(message.find("may need 72 loop passes"), std::string::npos) << message;
         EXPECT_NE(message.find("after 12"), std::string::npos) << message;
