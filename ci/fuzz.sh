@@ -70,7 +70,7 @@ build-fuzz/tests/fuzz/scene_loader_fuzzer build-fuzz/corpus scenes tests/fuzz/re
   -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet
 # No single allocation above 64 MiB: a valid piece needs at most a band of 64 rows of 16384 pixels
 # (12 MiB), so a larger one was sized from a field nothing checked.
-build-fuzz/tests/fuzz/tile_piece_fuzzer build-fuzz/corpus-pieces tests/fuzz/pieces \
+build-fuzz/tests/fuzz/strip_piece_fuzzer build-fuzz/corpus-pieces tests/fuzz/pieces \
   -max_len=16384 -max_total_time="$piece_seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=64 \
   -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ 2>&1 | quiet
 build-fuzz/tests/fuzz/kernel_cache_fuzzer build-fuzz/kernel-cache-corpus tests/fuzz/kernel_cache_seeds \

@@ -29,7 +29,7 @@ VK_DRIVER_FILES=$(sed -n 's/^HEXRAY_TEST_VULKAN_DRIVER:STRING=//p' build-asan/CM
 repeated="ProgressCliTest.RenderShowsRowsDoneAndTimeLeftOnATerminalOnBothBackends"
 repeated+=":CliTest.ABatchOfMoreScenesThanTheRendererKeepsKernelsForGivesEachTheImageItGetsAlone"
 repeated+=":CliTest.CompareAllPrintsOneTableOfScenesAndPrecisions"
-repeated+=":TileCliTest.MergedGpuTilesWithCullingAreTheSingleRenderPixelForPixel"
+repeated+=":StripCliTest.MergedGpuStripsWithCullingAreTheSingleRenderPixelForPixel"
 
 # One process per core, each a shard of the tests (GoogleTest's own sharding).
 shards=$(nproc)

@@ -27,7 +27,7 @@ int exitCodeFor(VulkanFailure failure);
 int guarded(const std::function<int()>& command);
 
 // Loads the scene with the command line's overrides, showing progress for a large file on a
-// terminal. With `identity`, also the file's identity (tile/tile_stamp.h, sceneTextIdentity).
+// terminal. With `identity`, also the file's identity (strip/strip_stamp.h, sceneTextIdentity).
 Scene loadScene(const std::string& path, const ImageOverride& image, std::string* identity = nullptr);
 
 // The command line's replacements for the scene's image size and samples, checked like the file's.

@@ -9,7 +9,7 @@
 #include "compare/compare.h"
 #include "precision/precision.h"
 #include "gpu/render_plan.h"
-#include "tile/tile.h"
+#include "strip/strip.h"
 
 namespace hexray::cli {
 
@@ -51,9 +51,9 @@ struct RenderOptions {
     // Empty: <scene name>.png in the current directory. One scene: the file, or a directory to
     // put <scene name>.png in; several: that directory.
     std::string outputPath;
-    unsigned threads = 0;      // CPU backend; 0 = all cores
-    std::string aovDirectory;  // empty: no AOVs (see image/aov.h)
-    std::optional<Tile> tile;  // only these rows, recorded in the file for `hexray merge`
+    unsigned threads = 0;        // CPU backend; 0 = all cores
+    std::string aovDirectory;    // empty: no AOVs (see image/aov.h)
+    std::optional<Strip> strip;  // only these rows, recorded in the file for `hexray merge`
 };
 
 struct MergeOptions {

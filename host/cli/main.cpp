@@ -45,7 +45,7 @@ constexpr const char* kCommands = "render, merge, compare, bench, pixel, devices
 struct CommandLine {
     bool validate = false;
     RenderOptions render;
-    std::string renderTile;
+    std::string renderStrip;
     MergeOptions merge;
     CompareOptions compare;
     BenchOptions bench;
@@ -120,16 +120,16 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
         ->check(NotEmpty())
         ->check(AovDirectoryName());
     command
-        ->add_option("--tile", line.renderTile,
-                     "Render only tile I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
-                     "`hexray merge` (default name <scene name>.tile-I-of-N.png)")
-        ->check(TileSpec());
+        ->add_option("--strip", line.renderStrip,
+                     "Render only strip I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
+                     "`hexray merge` (default name <scene name>.strip-I-of-N.png)")
+        ->check(StripSpec());
 }
 
 void addMergeCommand(CLI::App& app, CommandLine& line) {
     CLI::App* command = app.add_subcommand(
         "merge",
-        "Assemble the pieces of `render --tile I/N` into the whole image; refuses missing, overlapping "
+        "Assemble the pieces of `render --strip I/N` into the whole image; refuses missing, overlapping "
         "or mismatched pieces");
     command->add_option("output", line.merge.outputPath, "The whole image (.png, .exr as the pieces, or -)")
         ->required()
@@ -329,7 +329,7 @@ int checkBenchPaths(const BenchOptions& bench) {
 int runRenderCommand(CommandLine& line) {
     RenderOptions& render = line.render;
     render.vulkan.validate = line.validate;
-    render.tile = parseTile(line.renderTile);
+    render.strip = parseStrip(line.renderStrip);
     return runRender(render);
 }
 

@@ -1,4 +1,4 @@
-// `hexray merge OUT PIECES...`: the pieces of a tiled render (`render --tile I/N`) assembled into
+// `hexray merge OUT PIECES...`: the pieces of a render in strips (`render --strip I/N`) assembled into
 // the whole image.
 
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include "cli/command_support.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
-#include "tile/tile_merge.h"
+#include "strip/strip_merge.h"
 
 namespace hexray::cli {
 
@@ -18,9 +18,9 @@ int runMerge(const MergeOptions& options) {
         }
         plan.addFile("the output", options.outputPath);
         plan.check();
-        const TileStamp stamp = mergeTiles(options.outputPath, options.piecePaths);
+        const StripStamp stamp = mergeStrips(options.outputPath, options.piecePaths);
         std::printf("wrote %s (%ux%u) from %u pieces\n", displayName(options.outputPath).c_str(), stamp.width,
-                    stamp.height, stamp.tile.count);
+                    stamp.height, stamp.strip.count);
         return int(kSuccess);
     });
 }

@@ -78,26 +78,27 @@ CLI::Validator AovDirectoryName() {
         "");
 }
 
-std::string tileProblem(const std::string& text) {
+std::string stripProblem(const std::string& text) {
     const std::size_t slash = text.find('/');
     std::uint64_t index = 0;
     std::uint64_t count = 0;
     const bool valid = slash != std::string::npos && parsesWhole(text.substr(0, slash), index) &&
-                       parsesWhole(text.substr(slash + 1), count) && count >= 1 && count <= kMaxTiles && index < count;
-    return valid ? ""
-                 : "must be I/N, tile I of N, with 0 <= I < N <= " + std::to_string(kMaxTiles) + " (got " + text + ")";
+                       parsesWhole(text.substr(slash + 1), count) && count >= 1 && count <= kMaxStrips && index < count;
+    return valid
+               ? ""
+               : "must be I/N, strip I of N, with 0 <= I < N <= " + std::to_string(kMaxStrips) + " (got " + text + ")";
 }
 
-CLI::Validator TileSpec() {
-    return CLI::Validator([](std::string& text) { return tileProblem(text); }, "I/N");
+CLI::Validator StripSpec() {
+    return CLI::Validator([](std::string& text) { return stripProblem(text); }, "I/N");
 }
 
-std::optional<Tile> parseTile(const std::string& text) {
-    if (text.empty() || !tileProblem(text).empty()) {
+std::optional<Strip> parseStrip(const std::string& text) {
+    if (text.empty() || !stripProblem(text).empty()) {
         return std::nullopt;
     }
     const std::size_t slash = text.find('/');
-    return Tile{std::uint32_t(std::stoul(text.substr(0, slash))), std::uint32_t(std::stoul(text.substr(slash + 1)))};
+    return Strip{std::uint32_t(std::stoul(text.substr(0, slash))), std::uint32_t(std::stoul(text.substr(slash + 1)))};
 }
 
 }  // namespace hexray::cli

@@ -12,7 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "tile/tile.h"
+#include "strip/strip.h"
 
 namespace hexray::cli {
 
@@ -44,10 +44,10 @@ CLI::Validator NotEmpty();
 // An --aov directory: not "-", since an AOV set is several files.
 CLI::Validator AovDirectoryName();
 
-// "I/N": tile I of N, 0 <= I < N <= kMaxTiles; "" when `text` is one, else why not.
-std::string tileProblem(const std::string& text);
-CLI::Validator TileSpec();
-// The tile `text` names (checked by TileSpec); nullopt for "".
-std::optional<Tile> parseTile(const std::string& text);
+// "I/N": strip I of N, 0 <= I < N <= kMaxStrips; "" when `text` is one, else why not.
+std::string stripProblem(const std::string& text);
+CLI::Validator StripSpec();
+// The strip `text` names (checked by StripSpec); nullopt for "".
+std::optional<Strip> parseStrip(const std::string& text);
 
 }  // namespace hexray::cli

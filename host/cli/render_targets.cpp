@@ -13,10 +13,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string defaultName(const std::string& scenePath, const std::optional<Tile>& tile) {
+std::string defaultName(const std::string& scenePath, const std::optional<Strip>& strip) {
     std::string name = fs::path(scenePath).stem().string();
-    if (tile) {
-        name += ".tile-" + std::to_string(tile->index) + "-of-" + std::to_string(tile->count);
+    if (strip) {
+        name += ".strip-" + std::to_string(strip->index) + "-of-" + std::to_string(strip->count);
     }
     return name + ".png";
 }
@@ -59,7 +59,7 @@ std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
             targets.push_back({scene.path, "", std::nullopt, scene.problem});
             continue;
         }
-        const std::string output = (directory / defaultName(scene.path, options.tile)).string();
+        const std::string output = (directory / defaultName(scene.path, options.strip)).string();
         const auto [earlier, added] = sceneByOutput.emplace(fs::path(output).lexically_normal().string(), scene.path);
         if (!added) {
             throw SceneError("scenes " + printable(earlier->second) + " and " + printable(scene.path) +

@@ -20,8 +20,8 @@ struct RenderTarget {
 
 // The scenes named (directories expanded to their *.json files), each with its output: `-o` as
 // given for one scene, or, when `-o` is a directory (the only choice for several scenes),
-// <scene name>.png in it; without `-o`, <scene name>.png here. A tile's default name is
-// <scene name>.tile-I-of-N.png. Throws SceneError (exit code 2) for a `-o` several scenes cannot
+// <scene name>.png in it; without `-o`, <scene name>.png here. A strip's default name is
+// <scene name>.strip-I-of-N.png. Throws SceneError (exit code 2) for a `-o` several scenes cannot
 // share, or two scenes whose outputs would have the same name; OutputError (exit code 5) for a
 // `-o` directory that does not exist.
 std::vector<RenderTarget> renderTargets(const RenderOptions& options);

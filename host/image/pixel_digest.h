@@ -1,7 +1,7 @@
 #pragma once
 // The SHA-256 (OpenSSL's libcrypto) of an image's pixels as values, whatever the file's
 // encoding: 8-bit RGB rows as their bytes; float RGB rows as each pixel's R, G, B in IEEE 754
-// binary32, little-endian. A preamble (a tile's stamp) hashed first binds other text to the
+// binary32, little-endian. A preamble (a strip's stamp) hashed first binds other text to the
 // pixels. A writer and a reader that hash the same rows in order agree, whatever bands they use.
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// A range of an image's rows: what a tile (`render --tile`) renders.
+// A range of an image's rows: what a strip (`render --strip`) renders.
 
 #include <cstdint>
 

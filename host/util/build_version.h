@@ -1,6 +1,6 @@
 #pragma once
 // This build of hexray: its version (CMake's project version) and the git revision it was
-// configured from. For `hexray --version`, the kernel cache's keys and the tiles' stamps.
+// configured from. For `hexray --version`, the kernel cache's keys and the strips' stamps.
 
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Text hexray did not write (file names, scene keys and strings, a tile's stamp, words from the
+// Text hexray did not write (file names, scene keys and strings, a strip's stamp, words from the
 // command line), made safe to quote in a message: a control character in it would otherwise
 // reach the terminal and act there (move the cursor, recolour, retitle the window).
 

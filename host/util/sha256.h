@@ -1,6 +1,6 @@
 #pragma once
 // SHA-256 through OpenSSL's libcrypto (the EVP interface): the kernel cache's checksums and file
-// names, the tiles' pixel digests.
+// names, the strips' pixel digests.
 
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// A 64-bit FNV-1a hash: the same value on every run and build, for a tile stamp's scene identity.
+// A 64-bit FNV-1a hash: the same value on every run and build, for a strip stamp's scene identity.
 // Not a guard against collisions or tampering (the kernel cache uses SHA-256, util/sha256.h).
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Text hexray did not write (file names, scene keys and strings, a tile's stamp, a command-line
+// Text hexray did not write (file names, scene keys and strings, a strip's stamp, a command-line
 // word) reaches the terminal with its control characters escaped: a name can neither move the
 // cursor, recolour the terminal nor retitle its window.
 
@@ -83,9 +83,9 @@ TEST_F(ControlCharacterTest, OutputNamesAreEscapedInErrorsAndInTheSummary) {
                   "missing/" + escaped_ + ".png: cannot create output file");
 }
 
-TEST_F(ControlCharacterTest, ATileStampAndPieceNamesAreEscaped) {
+TEST_F(ControlCharacterTest, AStripStampAndPieceNamesAreEscaped) {
     {
-        PngRowWriter piece(dir_ / "piece.png", 1, 1, {{"hexray-tile", "damaged " + raw_}});
+        PngRowWriter piece(dir_ / "piece.png", 1, 1, {{"hexray-strip", "damaged " + raw_}});
         piece.writeRows(std::vector<std::uint8_t>(3, 0));
         piece.finish();
     }

@@ -106,8 +106,9 @@ TEST_F(CliTest, AnExrNameThatIsStandardOutputGetsOpenExrThroughAFileAPipeOrAFifo
     expectSameExr(dir_ / "from-fifo.exr", dir_ / "reference.exr");
     EXPECT_TRUE(fs::is_fifo(fs::symlink_status(dir_ / "fifo.exr")));
     // merge alike.
-    for (const char* tile : {"0", "1"}) {
-        ASSERT_EQ(hexray(std::string("render bright.json --tile ") + tile + "/2 -o piece" + tile + ".exr").exitCode, 0);
+    for (const char* strip : {"0", "1"}) {
+        ASSERT_EQ(hexray(std::string("render bright.json --strip ") + strip + "/2 -o piece" + strip + ".exr").exitCode,
+                  0);
     }
     run = shell("\"$HEXRAY\" merge merged.exr piece0.exr piece1.exr > merged.exr");
     ASSERT_EQ(run.exitCode, 0) << run.err;

@@ -36,41 +36,41 @@ protected:
         ASSERT_EQ(shell("\"$HEXRAY\" render scene.json -o single.png").exitCode, 0);
     }
 
-    // Runs `tileScript` once per index with `variable` set to it, in parallel as the engine
+    // Runs `stripScript` once per index with `variable` set to it, in parallel as the engine
     // would, then `mergeScript`; both with hexray on the PATH.
-    RunResult runSplit(const std::string& variable, const std::string& tileScript, const std::string& mergeScript,
-                       const std::string& tiles) {
+    RunResult runSplit(const std::string& variable, const std::string& stripScript, const std::string& mergeScript,
+                       const std::string& strips) {
         const std::string path = "PATH=\"$(dirname \"$HEXRAY\"):$PATH\" SLURM_CPUS_PER_TASK=1";
-        return shell("n=$(cat " + tiles + "); pids=''; for i in $(seq 0 $((n - 1))); do " + path + " " + variable +
-                     "=$i bash " + tileScript +
+        return shell("n=$(cat " + strips + "); pids=''; for i in $(seq 0 $((n - 1))); do " + path + " " + variable +
+                     "=$i bash " + stripScript +
                      " & pids=\"$pids $!\"; done; for p in $pids; do wait $p || exit 9; "
                      "done; " +
                      path + " bash " + mergeScript);
     }
 };
 
-TEST_F(ScaleOutCliTest, TheIndexedJobsTilesMergeIntoTheSingleRender) {
-    const RunResult run = runSplit("JOB_COMPLETION_INDEX", "k8s-tile.sh", "k8s-merge.sh", "k8s-tiles");
+TEST_F(ScaleOutCliTest, TheIndexedJobsStripsMergeIntoTheSingleRender) {
+    const RunResult run = runSplit("JOB_COMPLETION_INDEX", "k8s-strip.sh", "k8s-merge.sh", "k8s-strips");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    EXPECT_EQ(readFile(dir_ / "k8s-tiles"), "8\n");
+    EXPECT_EQ(readFile(dir_ / "k8s-strips"), "8\n");
     EXPECT_TRUE(fs::exists(dir_ / "pieces" / "piece-7.png"));
     EXPECT_EQ(readPng(dir_ / "frame.png").bytes, readPng(dir_ / "single.png").bytes);
 }
 
-TEST_F(ScaleOutCliTest, TheSlurmArraysTilesMergeIntoTheSingleRender) {
-    const RunResult run = runSplit("SLURM_ARRAY_TASK_ID", "slurm-tile.sh", "slurm-merge.sh", "slurm-tiles");
+TEST_F(ScaleOutCliTest, TheSlurmArraysStripsMergeIntoTheSingleRender) {
+    const RunResult run = runSplit("SLURM_ARRAY_TASK_ID", "slurm-strip.sh", "slurm-merge.sh", "slurm-strips");
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
-    EXPECT_EQ(readFile(dir_ / "slurm-tiles"), "8\n");
+    EXPECT_EQ(readFile(dir_ / "slurm-strips"), "8\n");
     EXPECT_EQ(readPng(dir_ / "frame.png").bytes, readPng(dir_ / "single.png").bytes);
 }
 
-TEST_F(ScaleOutCliTest, AMissingTaskMakesTheMergeFailNamingItsTile) {
+TEST_F(ScaleOutCliTest, AMissingTaskMakesTheMergeFailNamingItsStrip) {
     const RunResult run = shell(
         "for i in 0 1 2 4 5 6 7; do PATH=\"$(dirname \"$HEXRAY\"):$PATH\" "
-        "JOB_COMPLETION_INDEX=$i sh k8s-tile.sh || exit 9; done; "
+        "JOB_COMPLETION_INDEX=$i sh k8s-strip.sh || exit 9; done; "
         "PATH=\"$(dirname \"$HEXRAY\"):$PATH\" sh k8s-merge.sh");
     EXPECT_EQ(run.exitCode, 2) << run.err;
-    EXPECT_NE(run.err.find("missing tile 3/8, rows 16-21"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("missing strip 3/8, rows 16-21"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(dir_ / "frame.png"));
 }
 

@@ -3,9 +3,9 @@
 
 Usage: scale_out_commands.py DOC OUTDIR. Every ```yaml block must parse (PyYAML, Debian's
 python3-yaml), every ```sh or ```bash block and every `sh -c` container command must pass
-`bash -n`. Writes to OUTDIR the tile and merge commands of the Kubernetes Indexed Job and of the
-Slurm array job (k8s-tile.sh, k8s-merge.sh, slurm-tile.sh, slurm-merge.sh) and each engine's
-tile count (k8s-tiles, slurm-tiles), for the test to run them as local processes.
+`bash -n`. Writes to OUTDIR the strip and merge commands of the Kubernetes Indexed Job and of the
+Slurm array job (k8s-strip.sh, k8s-merge.sh, slurm-strip.sh, slurm-merge.sh) and each engine's
+strip count (k8s-strips, slurm-strips), for the test to run them as local processes.
 """
 import os
 import re
@@ -53,14 +53,14 @@ def main(doc, out):
         sys.exit("expected one Indexed Job, one merge Job, one Slurm array script and one Slurm merge script")
     first, last = map(int, re.search(r"#SBATCH --array=(\d+)-(\d+)", arrays[0]).groups())
     if first != 0:
-        sys.exit("the Slurm array must start at 0, as --tile numbers tiles")
+        sys.exit("the Slurm array must start at 0, as --strip numbers strips")
     files = {
-        "k8s-tile.sh": container_command(indexed[0]),
+        "k8s-strip.sh": container_command(indexed[0]),
         "k8s-merge.sh": container_command(merges[0]),
-        "k8s-tiles": str(indexed[0]["spec"]["completions"]),
-        "slurm-tile.sh": arrays[0],
+        "k8s-strips": str(indexed[0]["spec"]["completions"]),
+        "slurm-strip.sh": arrays[0],
         "slurm-merge.sh": slurm_merges[0],
-        "slurm-tiles": str(last + 1),
+        "slurm-strips": str(last + 1),
     }
     for name, content in files.items():
         with open(os.path.join(out, name), "w", encoding="utf-8") as file:

@@ -84,7 +84,7 @@ TEST_F(CliTest, HelpSaysTheTruthAndPointsToNoFileTheUserLacks) {
     EXPECT_EQ(help.find("default 1)"), std::string::npos) << help;
     EXPECT_NE(help.find("default: the scene's image.spp"), std::string::npos) << help;
     EXPECT_NE(help.find(".exr (linear float RGB"), std::string::npos) << help;
-    EXPECT_NE(help.find("--tile"), std::string::npos) << help;
+    EXPECT_NE(help.find("--strip"), std::string::npos) << help;
 }
 
 // Progress lines go to a terminal, and only there: `script` gives the command a pseudo-terminal.

@@ -1,6 +1,6 @@
 #pragma once
 // PNGs taken apart and put together again through libspng, as other tools would re-encode a
-// piece of a tiled render: its pixels decoded to 8-bit RGB and its text chunks kept in their
+// piece of a render in strips: its pixels decoded to 8-bit RGB and its text chunks kept in their
 // places (before or after the pixels), then encoded again, perhaps interlaced (Adam7, as PNG
 // optimisers may) or with other pixels or texts.
 

@@ -1,4 +1,4 @@
-// Tiles' rows and the stamp a piece records: every row in exactly one tile, and a stamp read
+// Strips' rows and the stamp a piece records: every row in exactly one strip, and a stamp read
 // back exactly as written, anything else refused.
 
 #include <string>
@@ -6,19 +6,19 @@
 
 #include <gtest/gtest.h>
 
-#include "tile/tile_stamp.h"
+#include "strip/strip_stamp.h"
 
 namespace hexray {
 namespace {
 
-TEST(Tile, TilesCoverEveryRowOnceAndDifferInHeightByAtMostOne) {
+TEST(Strip, StripsCoverEveryRowOnceAndDifferInHeightByAtMostOne) {
     for (const std::uint32_t height : {1u, 7u, 53u, 480u, 16384u}) {
         for (const std::uint32_t count : {1u, 2u, 3u, 7u, 8u}) {
             if (count > height)
                 continue;
             std::uint32_t next = 0;
             for (std::uint32_t index = 0; index < count; ++index) {
-                const RowRange rows = tileRows({index, count}, height);
+                const RowRange rows = stripRows({index, count}, height);
                 EXPECT_EQ(rows.first, next);
                 EXPECT_GE(rows.count, height / count);
                 EXPECT_LE(rows.count, height / count + 1);
@@ -27,33 +27,33 @@ TEST(Tile, TilesCoverEveryRowOnceAndDifferInHeightByAtMostOne) {
             EXPECT_EQ(next, height);
         }
     }
-    EXPECT_THROW(tileRows({0, 5}, 4), TileError);
+    EXPECT_THROW(stripRows({0, 5}, 4), StripError);
 }
 
-TEST(TileStamp, ReadsBackExactlyWhatItWrote) {
-    const TileStamp stamp{{3, 8},
-                          640,
-                          480,
-                          4,
-                          "gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x",
-                          "0123456789abcdef/99",
-                          "0.1.0 (git 0123456789ab)"};
-    const std::string text = formatTileStamp(stamp);
+TEST(StripStamp, ReadsBackExactlyWhatItWrote) {
+    const StripStamp stamp{{3, 8},
+                           640,
+                           480,
+                           4,
+                           "gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x",
+                           "0123456789abcdef/99",
+                           "0.1.0 (git 0123456789ab)"};
+    const std::string text = formatStripStamp(stamp);
     EXPECT_EQ(text,
               "3/8 rows 180-239 of 640x480; spp 4; gpu f32 on llvmpipe (LLVM 15.0.6, 256 bits); odd; hexray x; "
               "scene 0123456789abcdef/99; hexray 0.1.0 (git 0123456789ab)");
-    const std::optional<TileStamp> read = parseTileStamp(text);
+    const std::optional<StripStamp> read = parseStripStamp(text);
     ASSERT_TRUE(read);
-    EXPECT_EQ(read->tile, stamp.tile);
+    EXPECT_EQ(read->strip, stamp.strip);
     EXPECT_EQ(read->renderer, stamp.renderer);
     EXPECT_EQ(read->version, stamp.version);
     EXPECT_TRUE(read->sameImage(stamp));
-    TileStamp otherBuild = stamp;
+    StripStamp otherBuild = stamp;
     otherBuild.version = "0.1.0 (git 0123456789ac)";
     EXPECT_FALSE(otherBuild.sameImage(stamp));
 }
 
-TEST(TileStamp, AnythingElseIsNoStamp) {
+TEST(StripStamp, AnythingElseIsNoStamp) {
     const std::string version = "; hexray 0.1.0 (git 0123456789ab)";
     for (const std::string& text : std::vector<std::string>{
              "", "3/8", "3/8 rows 181-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version,
@@ -65,14 +65,14 @@ TEST(TileStamp, AnythingElseIsNoStamp) {
              "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1; hexray ",
              "3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1; hexray a\tb",
              "3/9 rows 0-0 of 640x1; spp 4; cpu reference; scene 0123456789abcdef/1" + version}) {
-        EXPECT_FALSE(parseTileStamp(text)) << text;
+        EXPECT_FALSE(parseStripStamp(text)) << text;
     }
     EXPECT_TRUE(
-        parseTileStamp("3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version));
+        parseStripStamp("3/8 rows 180-239 of 640x480; spp 4; cpu reference; scene 0123456789abcdef/1" + version));
 }
 
-TEST(TileStamp, AnImageTheRendererCannotMakeIsNamed) {
-    TileStamp stamp{{0, 1}, 16384, 16384, 16, "cpu reference", "0123456789abcdef/1", "0.1.0"};
+TEST(StripStamp, AnImageTheRendererCannotMakeIsNamed) {
+    StripStamp stamp{{0, 1}, 16384, 16384, 16, "cpu reference", "0123456789abcdef/1", "0.1.0"};
     EXPECT_EQ(beyondRendererLimits(stamp), std::nullopt);
     stamp.width = 16385;
     EXPECT_EQ(beyondRendererLimits(stamp),
@@ -86,7 +86,7 @@ TEST(TileStamp, AnImageTheRendererCannotMakeIsNamed) {
     EXPECT_TRUE(beyondRendererLimits(stamp));
 }
 
-TEST(TileStamp, SceneIdentityIsTheTextsHashAndSize) {
+TEST(StripStamp, SceneIdentityIsTheTextsHashAndSize) {
     EXPECT_EQ(sceneTextIdentity("{}"), sceneTextIdentity(std::string("{}")));
     EXPECT_NE(sceneTextIdentity("{} "), sceneTextIdentity("{}"));
     EXPECT_EQ(sceneTextIdentity("abc").substr(16), "/3");

@@ -1,4 +1,4 @@
-#include "tile/tile_piece.h"
+#include "strip/strip_piece.h"
 
 #include <optional>
 #include <stdexcept>
@@ -20,48 +20,48 @@ struct PieceHeader {
     std::optional<std::string> stamp;
 };
 
-// Runs `call`, turning a reader's failure (whose message names the file) into a TileError.
+// Runs `call`, turning a reader's failure (whose message names the file) into a StripError.
 template <class Call>
 decltype(auto) refusingBadInput(Call&& call) {
     try {
         return call();
     } catch (const ImageIoError& error) {
-        throw TileError(printable(error.what()));
+        throw StripError(printable(error.what()));
     } catch (const InputError& error) {
-        throw TileError(printable(error.what()));
+        throw StripError(printable(error.what()));
     }
 }
 
-std::string rowsText(const TileStamp& stamp) {
+std::string rowsText(const StripStamp& stamp) {
     const RowRange rows = stamp.rows();
     return "rows " + std::to_string(rows.first) + "-" + std::to_string(rows.end() - 1);
 }
 
 // The stamp in `header`, checked: well formed, within the renderer's limits, and of the header's size.
-TileStamp checkedStamp(const std::string& name, const PieceHeader& header) {
+StripStamp checkedStamp(const std::string& name, const PieceHeader& header) {
     if (!header.stamp) {
-        throw TileError(printable(name) + ": not a piece of a tiled render (no " + kTileStampKey +
-                        " stamp: render pieces with --tile I/N)");
+        throw StripError(printable(name) + ": not a piece of a render in strips (no " + kStripStampKey +
+                         " stamp: render pieces with --strip I/N)");
     }
-    const std::optional<TileStamp> stamp = parseTileStamp(*header.stamp);
+    const std::optional<StripStamp> stamp = parseStripStamp(*header.stamp);
     if (!stamp) {
-        throw TileError(printable(name) + ": its " + kTileStampKey + " stamp is damaged (\"" +
-                        printable(*header.stamp) + "\")");
+        throw StripError(printable(name) + ": its " + kStripStampKey + " stamp is damaged (\"" +
+                         printable(*header.stamp) + "\")");
     }
     if (const std::optional<std::string> problem = beyondRendererLimits(*stamp)) {
-        throw TileError(printable(name) + ": " + *problem);
+        throw StripError(printable(name) + ": " + *problem);
     }
     if (header.width != stamp->width || header.height != stamp->rows().count) {
-        throw TileError(printable(name) + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) +
-                        " pixels, but its stamp says " + rowsText(*stamp) + " of " + std::to_string(stamp->width) +
-                        "x" + std::to_string(stamp->height));
+        throw StripError(printable(name) + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                         " pixels, but its stamp says " + rowsText(*stamp) + " of " + std::to_string(stamp->width) +
+                         "x" + std::to_string(stamp->height));
     }
     return *stamp;
 }
 
 }  // namespace
 
-struct TilePiece::Reading {
+struct StripPiece::Reading {
     std::unique_ptr<PngRowReader> png;
     std::unique_ptr<ExrRgbRowReader> exr;
     PixelDigest digest;
@@ -78,71 +78,72 @@ struct TilePiece::Reading {
 
     PieceHeader header() const {
         if (png) {
-            return {png->width(), png->height(), png->text(kTileStampKey)};
+            return {png->width(), png->height(), png->text(kStripStampKey)};
         }
-        return {exr->width(), exr->height(), exr->stringAttribute(kTileStampKey)};
+        return {exr->width(), exr->height(), exr->stringAttribute(kStripStampKey)};
     }
 };
 
-TilePiece::TilePiece(ReadOnlyFile file, ImageFormat format) : file_(std::move(file)), format_(format) {
+StripPiece::StripPiece(ReadOnlyFile file, ImageFormat format) : file_(std::move(file)), format_(format) {
     // The reader lives only for the check: thousands of pieces may wait open to be read.
     const PieceHeader header = refusingBadInput([&] { return Reading(file_, format_, "", 0).header(); });
     stamp_ = checkedStamp(name(), header);
     stampText_ = *header.stamp;
 }
 
-TilePiece::~TilePiece() = default;
-TilePiece::TilePiece(TilePiece&&) noexcept = default;
-TilePiece& TilePiece::operator=(TilePiece&&) noexcept = default;
+StripPiece::~StripPiece() = default;
+StripPiece::StripPiece(StripPiece&&) noexcept = default;
+StripPiece& StripPiece::operator=(StripPiece&&) noexcept = default;
 
-TilePiece::Reading& TilePiece::reading() {
+StripPiece::Reading& StripPiece::reading() {
     if (!reading_) {
         reading_ = refusingBadInput([&] { return std::make_unique<Reading>(file_, format_, stampText_, rowCount()); });
         const PieceHeader header = refusingBadInput([&] { return reading_->header(); });
         if (header.stamp != stampText_ || header.width != stamp_.width || header.height != rowCount()) {
-            throw TileError(printable(name()) + ": changed while being merged (its header is not the one checked)");
+            throw StripError(printable(name()) + ": changed while being merged (its header is not the one checked)");
         }
     }
     return *reading_;
 }
 
-void TilePiece::readRgb8Rows(std::span<std::uint8_t> rgbRows) {
+void StripPiece::readRgb8Rows(std::span<std::uint8_t> rgbRows) {
     Reading& r = reading();
     const std::size_t rowBytes = std::size_t(stamp_.width) * 3;
     if (!r.png || rgbRows.size() % rowBytes != 0 || rgbRows.size() / rowBytes > r.rowsLeft) {
-        throw std::logic_error("TilePiece::readRgb8Rows: not a PNG piece, or not whole rows it has left");
+        throw std::logic_error("StripPiece::readRgb8Rows: not a PNG piece, or not whole rows it has left");
     }
     refusingBadInput([&] { r.png->readRows(rgbRows); });
     r.digest.addRgb8Rows(rgbRows);
     r.rowsLeft -= std::uint32_t(rgbRows.size() / rowBytes);
 }
 
-void TilePiece::readFloatRows(std::uint32_t rows, std::span<float> red, std::span<float> green, std::span<float> blue) {
+void StripPiece::readFloatRows(std::uint32_t rows, std::span<float> red, std::span<float> green,
+                               std::span<float> blue) {
     Reading& r = reading();
     if (!r.exr || rows > r.rowsLeft) {
-        throw std::logic_error("TilePiece::readFloatRows: not an OpenEXR piece, or more rows than it has left");
+        throw std::logic_error("StripPiece::readFloatRows: not an OpenEXR piece, or more rows than it has left");
     }
     refusingBadInput([&] { r.exr->readRows(rows, red, green, blue); });
     r.digest.addFloatRows(red, green, blue);
     r.rowsLeft -= rows;
 }
 
-void TilePiece::verify() {
+void StripPiece::verify() {
     Reading& r = reading();
     if (r.rowsLeft != 0) {
-        throw std::logic_error("TilePiece::verify: rows left unread");
+        throw std::logic_error("StripPiece::verify: rows left unread");
     }
     const std::optional<std::string> recorded = refusingBadInput(
-        [&] { return r.png ? r.png->textAfterPixels(kTileDigestKey) : r.exr->stringAttribute(kTileDigestKey); });
+        [&] { return r.png ? r.png->textAfterPixels(kStripDigestKey) : r.exr->stringAttribute(kStripDigestKey); });
     if (!recorded) {
-        throw TileError(printable(name()) + ": no " + kTileDigestKey + " checksum " +
-                        (r.png ? "after its pixels" : "in its header") +
-                        " (a piece of an older hexray, or cut short): render it again");
+        throw StripError(printable(name()) + ": no " + kStripDigestKey + " checksum " +
+                         (r.png ? "after its pixels" : "in its header") +
+                         " (a piece of an older hexray, or cut short): render it again");
     }
     if (*recorded != r.digest.hex()) {
-        throw TileError(printable(name()) +
-                        ": its pixels are not the ones it was rendered with (their SHA-256 is not the " +
-                        kTileDigestKey + " it records): it was changed or damaged; render it again");
+        throw StripError(printable(name()) +
+                         ": its pixels are not the ones it was rendered with (their SHA-256 is not the " +
+                         kStripDigestKey + " it records): it was changed or damaged; render it again");
     }
     reading_.reset();
 }

@@ -1,4 +1,4 @@
-// `render --tile I/N` and `hexray merge`: the merged pieces are the single render, pixel for
+// `render --strip I/N` and `hexray merge`: the merged pieces are the single render, pixel for
 // pixel, on both backends and with anti-aliasing; pieces that do not make one image are refused.
 
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "image/png_row_reader.h"
 #include "io/read_only_file.h"
 #include "support/png_rewrite.h"
-#include "tile/tile_stamp.h"
+#include "strip/strip_stamp.h"
 
 namespace hexray {
 namespace {
@@ -28,33 +28,33 @@ using test::readFile;
 using test::RunResult;
 namespace fs = std::filesystem;
 
-// An odd size, so the tiles differ in height; several samples a pixel.
+// An odd size, so the strips differ in height; several samples a pixel.
 constexpr const char* kImage = " --width 67 --height 53 --spp 4";
 
-class TileCliTest : public CliTest {
+class StripCliTest : public CliTest {
 protected:
-    // Renders the scene whole and in `tiles` pieces (in reverse order, to show order does not
+    // Renders the scene whole and in `strips` pieces (in reverse order, to show order does not
     // matter), merges them, and returns the merge's run.
-    RunResult renderAndMerge(const std::string& options, std::uint32_t tiles, const std::string& extension) {
+    RunResult renderAndMerge(const std::string& options, std::uint32_t strips, const std::string& extension) {
         const std::string render = "render " + scene("spheres-and-lights.json") + kImage + " " + options;
         EXPECT_EQ(hexray(render + " -o whole" + extension).exitCode, 0);
         std::string pieces;
-        for (std::uint32_t i = tiles; i-- > 0;) {
+        for (std::uint32_t i = strips; i-- > 0;) {
             const std::string piece = "piece-" + std::to_string(i) + extension;
             const RunResult run =
-                hexray(render + " --tile " + std::to_string(i) + "/" + std::to_string(tiles) + " -o " + piece);
+                hexray(render + " --strip " + std::to_string(i) + "/" + std::to_string(strips) + " -o " + piece);
             EXPECT_EQ(run.exitCode, 0) << run.err;
             pieces += " " + piece;
         }
         return hexray("merge merged" + extension + pieces);
     }
 
-    // Renders the CPU reference's `tiles` tiles of a small image as piece-I.EXTENSION.
-    void renderPieces(std::uint32_t tiles, const std::string& extension) {
-        for (std::uint32_t i = 0; i < tiles; ++i) {
+    // Renders the CPU reference's `strips` strips of a small image as piece-I.EXTENSION.
+    void renderPieces(std::uint32_t strips, const std::string& extension) {
+        for (std::uint32_t i = 0; i < strips; ++i) {
             const RunResult run =
-                hexray("render " + scene("spheres-and-lights.json") + kImage + " --backend cpu --tile " +
-                       std::to_string(i) + "/" + std::to_string(tiles) + " -o piece-" + std::to_string(i) + extension);
+                hexray("render " + scene("spheres-and-lights.json") + kImage + " --backend cpu --strip " +
+                       std::to_string(i) + "/" + std::to_string(strips) + " -o piece-" + std::to_string(i) + extension);
             ASSERT_EQ(run.exitCode, 0) << run.err;
         }
     }
@@ -74,28 +74,28 @@ protected:
     }
 };
 
-TEST_F(TileCliTest, MergedGpuTilesAreTheSingleRenderPixelForPixel) {
+TEST_F(StripCliTest, MergedGpuStripsAreTheSingleRenderPixelForPixel) {
     const RunResult merge = renderAndMerge("--backend gpu", 5, ".png");
     ASSERT_EQ(merge.exitCode, 0) << merge.err;
     EXPECT_NE(merge.out.find("wrote merged.png (67x53) from 5 pieces"), std::string::npos) << merge.out;
     EXPECT_EQ(readPng(dir_ / "merged.png").bytes, readPng(dir_ / "whole.png").bytes);
 }
 
-// Tiles of 10 or 11 rows start inside the culling's 8-row screen tiles, whose kernels leave out
+// Strips of 10 or 11 rows start inside the culling's 8-row screen tiles, whose kernels leave out
 // what their own rows cannot see.
-TEST_F(TileCliTest, MergedGpuTilesWithCullingAreTheSingleRenderPixelForPixel) {
+TEST_F(StripCliTest, MergedGpuStripsWithCullingAreTheSingleRenderPixelForPixel) {
     const RunResult merge = renderAndMerge("--backend gpu --culling on", 5, ".png");
     ASSERT_EQ(merge.exitCode, 0) << merge.err;
     EXPECT_EQ(readPng(dir_ / "merged.png").bytes, readPng(dir_ / "whole.png").bytes);
 }
 
-TEST_F(TileCliTest, MergedCpuTilesAreTheSingleRenderPixelForPixel) {
+TEST_F(StripCliTest, MergedCpuStripsAreTheSingleRenderPixelForPixel) {
     const RunResult merge = renderAndMerge("--backend cpu", 4, ".png");
     ASSERT_EQ(merge.exitCode, 0) << merge.err;
     EXPECT_EQ(readPng(dir_ / "merged.png").bytes, readPng(dir_ / "whole.png").bytes);
 }
 
-TEST_F(TileCliTest, MergedOpenExrTilesAreTheSingleRenderValueForValue) {
+TEST_F(StripCliTest, MergedOpenExrStripsAreTheSingleRenderValueForValue) {
     const RunResult merge = renderAndMerge("--backend gpu", 3, ".exr");
     ASSERT_EQ(merge.exitCode, 0) << merge.err;
     const ExrImage merged = readExr(dir_ / "merged.exr");
@@ -105,17 +105,17 @@ TEST_F(TileCliTest, MergedOpenExrTilesAreTheSingleRenderValueForValue) {
     EXPECT_EQ(merged.channels, whole.channels);
 }
 
-TEST_F(TileCliTest, APieceRecordsItsPlaceInATextChunk) {
-    const RunResult run = hexray("render " + scene("lecture-demo.json") + kImage + " --backend cpu --tile 2/5");
+TEST_F(StripCliTest, APieceRecordsItsPlaceInATextChunk) {
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + kImage + " --backend cpu --strip 2/5");
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_NE(run.out.find("wrote lecture-demo.tile-2-of-5.png (rows 21-30 of 67x53) — cpu reference"),
+    EXPECT_NE(run.out.find("wrote lecture-demo.strip-2-of-5.png (rows 21-30 of 67x53) — cpu reference"),
               std::string::npos)
         << run.out;
-    const ReadOnlyFile file((dir_ / "lecture-demo.tile-2-of-5.png").string());
+    const ReadOnlyFile file((dir_ / "lecture-demo.strip-2-of-5.png").string());
     PngRowReader piece(file);
     EXPECT_EQ(piece.width(), 67u);
     EXPECT_EQ(piece.height(), 10u);  // rows floor(2*53/5) = 21 to floor(3*53/5) - 1 = 30
-    const std::string text = piece.text(kTileStampKey).value_or("");
+    const std::string text = piece.text(kStripStampKey).value_or("");
     const std::string sceneText = readFile(test::sourcePath("scenes/lecture-demo.json"));
     EXPECT_EQ(text, "2/5 rows 21-30 of 67x53; spp 4; cpu reference; scene " + sceneTextIdentity(sceneText) +
                         "; hexray " + hexrayVersion())
@@ -125,39 +125,39 @@ TEST_F(TileCliTest, APieceRecordsItsPlaceInATextChunk) {
     piece.readRows(rows);
     PixelDigest digest(text);
     digest.addRgb8Rows(rows);
-    EXPECT_EQ(piece.textAfterPixels(kTileDigestKey), digest.hex());
+    EXPECT_EQ(piece.textAfterPixels(kStripDigestKey), digest.hex());
 }
 
-TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem) {
+TEST_F(StripCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem) {
     const std::string render = "render " + scene("lecture-demo.json") + kImage + " --backend cpu";
-    for (const char* tile : {"0/3", "1/3", "2/3"}) {
-        ASSERT_EQ(hexray(render + " --tile " + tile).exitCode, 0);
+    for (const char* strip : {"0/3", "1/3", "2/3"}) {
+        ASSERT_EQ(hexray(render + " --strip " + strip).exitCode, 0);
     }
     ASSERT_EQ(hexray("render " + scene("lecture-demo.json") +
                      " --width 67 --height 53 --spp 2 --backend cpu "
-                     "--tile 1/3 -o other-spp.png")
+                     "--strip 1/3 -o other-spp.png")
                   .exitCode,
               0);
-    ASSERT_EQ(hexray(render + " --tile 1/4 -o other-count.png").exitCode, 0);
-    ASSERT_EQ(hexray(render + " --tile 1/3 -o again.png").exitCode, 0);
+    ASSERT_EQ(hexray(render + " --strip 1/4 -o other-count.png").exitCode, 0);
+    ASSERT_EQ(hexray(render + " --strip 1/3 -o again.png").exitCode, 0);
     ASSERT_EQ(hexray(render + " -o whole.png").exitCode, 0);
-    const std::string first = " lecture-demo.tile-0-of-3.png";
-    const std::string last = " lecture-demo.tile-2-of-3.png";
-    const std::string middle = " lecture-demo.tile-1-of-3.png";
+    const std::string first = " lecture-demo.strip-0-of-3.png";
+    const std::string last = " lecture-demo.strip-2-of-3.png";
+    const std::string middle = " lecture-demo.strip-1-of-3.png";
     const struct {
         std::string pieces;
         std::string message;
     } cases[] = {
-        {first + last, "missing tile 1/3, rows 17-34 of the image lecture-demo.tile-0-of-3.png belongs to"},
+        {first + last, "missing strip 1/3, rows 17-34 of the image lecture-demo.strip-0-of-3.png belongs to"},
         {first + middle + " again.png" + last,
-         "again.png: overlaps lecture-demo.tile-1-of-3.png (both are tile 1/3, rows 17-34)"},
-        {first + middle + middle + last, "lecture-demo.tile-1-of-3.png: given twice"},
+         "again.png: overlaps lecture-demo.strip-1-of-3.png (both are strip 1/3, rows 17-34)"},
+        {first + middle + middle + last, "lecture-demo.strip-1-of-3.png: given twice"},
         {first + " other-spp.png" + last,
-         "other-spp.png: a tile of another image than lecture-demo.tile-0-of-3.png: spp 2 (not 4)"},
+         "other-spp.png: a strip of another image than lecture-demo.strip-0-of-3.png: spp 2 (not 4)"},
         {first + " other-count.png" + last,
-         "other-count.png: a tile of another image than "
-         "lecture-demo.tile-0-of-3.png: tile count 4 (not 3)"},
-        {first + " whole.png" + last, "whole.png: not a piece of a tiled render (no hexray-tile stamp"},
+         "other-count.png: a strip of another image than "
+         "lecture-demo.strip-0-of-3.png: strip count 4 (not 3)"},
+        {first + " whole.png" + last, "whole.png: not a piece of a render in strips (no hexray-strip stamp"},
         {first + " nothing.png" + last, "nothing.png: cannot open: No such file or directory"},
     };
     for (const auto& [pieces, message] : cases) {
@@ -168,10 +168,10 @@ TEST_F(TileCliTest, MergeRefusesMissingOverlappingAndMismatchedPiecesNamingThem)
     }
 }
 
-TEST_F(TileCliTest, MergeRefusesAnOutputThatIsAPieceAndAPieceOfAnotherFormat) {
+TEST_F(StripCliTest, MergeRefusesAnOutputThatIsAPieceAndAPieceOfAnotherFormat) {
     const std::string render = "render " + scene("lecture-demo.json") + kImage + " --backend cpu";
-    ASSERT_EQ(hexray(render + " --tile 0/2 -o a.png").exitCode, 0);
-    ASSERT_EQ(hexray(render + " --tile 1/2 -o b.exr").exitCode, 0);
+    ASSERT_EQ(hexray(render + " --strip 0/2 -o a.png").exitCode, 0);
+    ASSERT_EQ(hexray(render + " --strip 1/2 -o b.exr").exitCode, 0);
     RunResult run = hexray("merge a.png a.png b.exr");
     EXPECT_EQ(run.exitCode, 2) << run.err;
     EXPECT_NE(run.err.find("the output a.png: the same file as the piece a.png"), std::string::npos) << run.err;
@@ -183,14 +183,14 @@ TEST_F(TileCliTest, MergeRefusesAnOutputThatIsAPieceAndAPieceOfAnotherFormat) {
 
 // What a PNG optimiser may write: the same pixels and text chunks, interlaced. Read as rows, the
 // passes would be a scrambled image.
-TEST_F(TileCliTest, AnInterlacedPieceIsRefusedByName) {
+TEST_F(StripCliTest, AnInterlacedPieceIsRefusedByName) {
     renderPieces(3, ".png");
     test::encodePng(dir_ / "piece-1.png", test::decodePng(dir_ / "piece-1.png"), true);
     expectRefusal("piece-1.png: an interlaced PNG, which merge does not read");
 }
 
 // A piece re-encoded as a valid PNG with its stamp, one pixel changed: only its checksum tells.
-TEST_F(TileCliTest, APieceWhosePixelsChangedIsRefused) {
+TEST_F(StripCliTest, APieceWhosePixelsChangedIsRefused) {
     renderPieces(3, ".png");
     test::DecodedPng piece = test::decodePng(dir_ / "piece-1.png");
     piece.rgb[100] ^= 1;
@@ -198,13 +198,13 @@ TEST_F(TileCliTest, APieceWhosePixelsChangedIsRefused) {
     expectRefusal("piece-1.png: its pixels are not the ones it was rendered with");
 }
 
-TEST_F(TileCliTest, AnOpenExrPieceWhoseValuesChangedIsRefused) {
+TEST_F(StripCliTest, AnOpenExrPieceWhoseValuesChangedIsRefused) {
     renderPieces(2, ".exr");
     ExrImage piece = readExr(dir_ / "piece-1.exr");
     std::vector<ImageNote> notes;
     {
         const ExrRowReader reader(dir_ / "piece-1.exr");
-        for (const char* key : {kTileStampKey, "hexray-tile-sha256"}) {
+        for (const char* key : {kStripStampKey, "hexray-strip-sha256"}) {
             if (const std::optional<std::string> text = reader.stringAttribute(key)) {
                 notes.push_back({key, *text});
             }
@@ -222,23 +222,23 @@ TEST_F(TileCliTest, AnOpenExrPieceWhoseValuesChangedIsRefused) {
 }
 
 // Another build may render other pixels: its pieces are not merged with this one's.
-TEST_F(TileCliTest, PiecesOfTwoVersionsAreRefusedNamingBoth) {
+TEST_F(StripCliTest, PiecesOfTwoVersionsAreRefusedNamingBoth) {
     const std::string ours = hexrayVersion();
     renderPieces(3, ".png");
     test::DecodedPng piece = test::decodePng(dir_ / "piece-1.png");
-    std::string stamp = piece.text(kTileStampKey);
+    std::string stamp = piece.text(kStripStampKey);
     stamp = stamp.substr(0, stamp.find("; hexray ")) + "; hexray 0.0.9 (git 0123456789ab)";
-    piece.setText(kTileStampKey, stamp);
+    piece.setText(kStripStampKey, stamp);
     test::encodePng(dir_ / "piece-1.png", piece);
-    expectRefusal("piece-1.png: a tile of another image than piece-0.png: hexray 0.0.9 (git 0123456789ab) (not " +
+    expectRefusal("piece-1.png: a strip of another image than piece-0.png: hexray 0.0.9 (git 0123456789ab) (not " +
                   ours + ")");
 }
 
 // Every piece stays open from the check to the copy: more pieces than the hard limit on open
 // files are refused up front; a soft limit below it is raised.
-TEST_F(TileCliTest, MorePiecesThanFilesMayBeOpenAreRefusedUpFront) {
+TEST_F(StripCliTest, MorePiecesThanFilesMayBeOpenAreRefusedUpFront) {
     const RunResult render = shell("for i in $(seq 0 29); do \"$HEXRAY\" render " + scene("lecture-demo.json") +
-                                   " --width 8 --height 30 --backend cpu --tile $i/30 -o p-$i.png || exit 1; done");
+                                   " --width 8 --height 30 --backend cpu --strip $i/30 -o p-$i.png || exit 1; done");
     ASSERT_EQ(render.exitCode, 0) << render.err;
     RunResult run = shell("ulimit -n 20 && \"$HEXRAY\" merge merged.png p-*.png");
     EXPECT_EQ(run.exitCode, 2) << run.err;
@@ -250,17 +250,18 @@ TEST_F(TileCliTest, MorePiecesThanFilesMayBeOpenAreRefusedUpFront) {
     EXPECT_TRUE(fs::exists(dir_ / "merged.png"));
 }
 
-TEST_F(TileCliTest, ATileSpecificationOutsideItsRangeIsExitCode2) {
-    for (const char* tile : {"3/3", "-1/3", "1/0", "1", "a/b", "1/20000"}) {
-        const RunResult run = hexray("render " + scene("lecture-demo.json") + " --tile " + tile);
-        EXPECT_EQ(run.exitCode, 2) << tile;
-        EXPECT_NE(run.err.find("--tile: must be I/N, tile I of N, with 0 <= I < N <= 16384 (got " + std::string(tile)),
-                  std::string::npos)
+TEST_F(StripCliTest, AStripSpecificationOutsideItsRangeIsExitCode2) {
+    for (const char* strip : {"3/3", "-1/3", "1/0", "1", "a/b", "1/20000"}) {
+        const RunResult run = hexray("render " + scene("lecture-demo.json") + " --strip " + strip);
+        EXPECT_EQ(run.exitCode, 2) << strip;
+        EXPECT_NE(
+            run.err.find("--strip: must be I/N, strip I of N, with 0 <= I < N <= 16384 (got " + std::string(strip)),
+            std::string::npos)
             << run.err;
     }
-    const RunResult run = hexray("render " + scene("lecture-demo.json") + " --width 8 --height 4 --tile 0/5");
+    const RunResult run = hexray("render " + scene("lecture-demo.json") + " --width 8 --height 4 --strip 0/5");
     EXPECT_EQ(run.exitCode, 2);
-    EXPECT_NE(run.err.find("--tile 0/5: the image has 4 rows, so at most 4 tiles"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--strip 0/5: the image has 4 rows, so at most 4 strips"), std::string::npos) << run.err;
     EXPECT_EQ(createdFiles(), std::vector<std::string>{});
 }
 

@@ -16,8 +16,8 @@
 #include "support/address_space_limit.h"
 #include "support/temporary_directory_test.h"
 #include "support/test_paths.h"
-#include "tile/tile_merge.h"
-#include "tile/tile_stamp.h"
+#include "strip/strip_merge.h"
+#include "strip/strip_stamp.h"
 
 namespace hexray {
 namespace {
@@ -26,14 +26,14 @@ namespace fs = std::filesystem;
 
 constexpr const char* kScene = "0123456789abcdef/1";
 
-class TileMergeTest : public test::TemporaryDirectoryTest {
+class StripMergeTest : public test::TemporaryDirectoryTest {
 protected:
-    // A PNG piece of `stamp`'s tile, every byte `level`, stamped as `hexray render --tile` does.
-    std::string writePiece(const std::string& name, const TileStamp& stamp, std::uint8_t level = 0) const {
+    // A PNG piece of `stamp`'s strip, every byte `level`, stamped as `hexray render --strip` does.
+    std::string writePiece(const std::string& name, const StripStamp& stamp, std::uint8_t level = 0) const {
         const std::string path = (dir_ / name).string();
-        const std::string text = formatTileStamp(stamp);
+        const std::string text = formatStripStamp(stamp);
         ImageRowWriter writer(path, ImageFormat::Png, stamp.width, stamp.rows().count, Encoding::Srgb,
-                              {{kTileStampKey, text}}, DigestNote{kTileDigestKey, text});
+                              {{kStripStampKey, text}}, DigestNote{kStripDigestKey, text});
         const std::vector<std::uint8_t> row(std::size_t(stamp.width) * 3, level);
         for (std::uint32_t y = 0; y < stamp.rows().count; ++y) {
             writer.writeEncoded(row);
@@ -48,9 +48,9 @@ protected:
         const std::string output = (dir_ / "merged.png").string();
         try {
             const test::AddressSpaceLimit limit(std::size_t{256} << 20);
-            mergeTiles(output, pieces);
+            mergeStrips(output, pieces);
             ADD_FAILURE() << "merged";
-        } catch (const TileError& error) {
+        } catch (const StripError& error) {
             EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
         } catch (const std::bad_alloc&) {
             ADD_FAILURE() << "allocated more than 256 MiB from what the piece declares";
@@ -59,21 +59,21 @@ protected:
     }
 };
 
-TEST_F(TileMergeTest, AStampDeclaringMoreTilesThanTheRendererMakesIsRefusedBeforeAllocation) {
+TEST_F(StripMergeTest, AStampDeclaringMoreStripsThanTheRendererMakesIsRefusedBeforeAllocation) {
     const std::string piece = writePiece("a.png", {{0, 100000000}, 67, 100000000, 1, "cpu reference", kScene, "0.1.0"});
     expectRefusedWithinMemory({piece},
                               "a.png: its stamp declares a 67x100000000 image, larger than hexray renders "
                               "(at most 16384x16384)");
 }
 
-TEST_F(TileMergeTest, APieceWiderThanTheRendererMakesIsRefusedBeforeAllocation) {
+TEST_F(StripMergeTest, APieceWiderThanTheRendererMakesIsRefusedBeforeAllocation) {
     const std::string piece = writePiece("wide.png", {{0, 1}, 5000000, 32, 1, "cpu reference", kScene, "0.1.0"});
     expectRefusedWithinMemory({piece},
                               "wide.png: its stamp declares a 5000000x32 image, larger than hexray renders "
                               "(at most 16384x16384)");
 }
 
-TEST_F(TileMergeTest, AnOutputLargerThanTheRendererMakesIsRefused) {
+TEST_F(StripMergeTest, AnOutputLargerThanTheRendererMakesIsRefused) {
     const std::string piece = writePiece("big.png", {{0, 20000}, 20000, 20000, 1, "cpu reference", kScene, "0.1.0"});
     expectRefusedWithinMemory({piece},
                               "big.png: its stamp declares a 20000x20000 image, larger than hexray renders "
@@ -81,16 +81,16 @@ TEST_F(TileMergeTest, AnOutputLargerThanTheRendererMakesIsRefused) {
 }
 
 // The pieces are read from the files opened and checked, whatever is at their paths by then.
-TEST_F(TileMergeTest, APieceReplacedAfterTheCheckDoesNotChangeTheImage) {
-    const TileStamp top{{0, 2}, 5, 4, 1, "cpu reference", kScene, "0.1.0"};
-    TileStamp bottom = top;
-    bottom.tile.index = 1;
+TEST_F(StripMergeTest, APieceReplacedAfterTheCheckDoesNotChangeTheImage) {
+    const StripStamp top{{0, 2}, 5, 4, 1, "cpu reference", kScene, "0.1.0"};
+    StripStamp bottom = top;
+    bottom.strip.index = 1;
     const std::vector<std::string> pieces = {writePiece("a.png", top, 10), writePiece("b.png", bottom, 20)};
-    writePiece("other-b.png", bottom, 200);  // a valid piece of the same tile, other pixels
-    std::vector<TilePiece> tiles = openPieces(pieces, ImageFormat::Png);
+    writePiece("other-b.png", bottom, 200);  // a valid piece of the same strip, other pixels
+    std::vector<StripPiece> strips = openPieces(pieces, ImageFormat::Png);
     fs::rename(dir_ / "other-b.png", dir_ / "b.png");
     fs::remove(dir_ / "a.png");
-    mergePieces((dir_ / "merged.png").string(), tiles);
+    mergePieces((dir_ / "merged.png").string(), strips);
     std::vector<std::uint8_t> expected(5 * 2 * 3, 10);
     expected.resize(5 * 4 * 3, 20);
     EXPECT_EQ(readPng(dir_ / "merged.png").bytes, expected);
@@ -98,7 +98,7 @@ TEST_F(TileMergeTest, APieceReplacedAfterTheCheckDoesNotChangeTheImage) {
 
 // The piece fuzzer's seeds (tests/fuzz/pieces/) are pieces merge verifies; with any single bit of
 // them flipped, merge refuses the piece or reads exactly the same pixels.
-TEST_F(TileMergeTest, EverySingleBitFlipOfAPieceIsRefusedOrChangesNoPixel) {
+TEST_F(StripMergeTest, EverySingleBitFlipOfAPieceIsRefusedOrChangesNoPixel) {
     for (const auto& entry : fs::directory_iterator(test::sourcePath("tests/fuzz/pieces"))) {
         const std::string seed = entry.path().string();
         const ImageFormat format = *imageFormatFor(seed);

@@ -1,4 +1,4 @@
-#include "tile/tile_stamp.h"
+#include "strip/strip_stamp.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,32 +29,32 @@ std::string imageSize(std::uint64_t width, std::uint64_t height) {
 
 }  // namespace
 
-bool TileStamp::sameImage(const TileStamp& other) const {
-    return tile.count == other.tile.count && width == other.width && height == other.height &&
+bool StripStamp::sameImage(const StripStamp& other) const {
+    return strip.count == other.strip.count && width == other.width && height == other.height &&
            samplesPerPixel == other.samplesPerPixel && renderer == other.renderer && scene == other.scene &&
            version == other.version;
 }
 
-std::string formatTileStamp(const TileStamp& stamp) {
+std::string formatStripStamp(const StripStamp& stamp) {
     const RowRange rows = stamp.rows();
     char head[160];
-    std::snprintf(head, sizeof head, "%u/%u rows %u-%u of %ux%u; spp %u; ", stamp.tile.index, stamp.tile.count,
+    std::snprintf(head, sizeof head, "%u/%u rows %u-%u of %ux%u; spp %u; ", stamp.strip.index, stamp.strip.count,
                   rows.first, rows.end() - 1, stamp.width, stamp.height, stamp.samplesPerPixel);
     return head + stamp.renderer + "; scene " + stamp.scene + "; hexray " + stamp.version;
 }
 
-std::optional<TileStamp> parseTileStamp(const std::string& text) {
-    TileStamp stamp;
+std::optional<StripStamp> parseStripStamp(const std::string& text) {
+    StripStamp stamp;
     unsigned first = 0;
     unsigned last = 0;
     int rendererStart = -1;
     const int read =
-        std::sscanf(text.c_str(), "%u/%u rows %u-%u of %ux%u; spp %u; %n", &stamp.tile.index, &stamp.tile.count, &first,
-                    &last, &stamp.width, &stamp.height, &stamp.samplesPerPixel, &rendererStart);
+        std::sscanf(text.c_str(), "%u/%u rows %u-%u of %ux%u; spp %u; %n", &stamp.strip.index, &stamp.strip.count,
+                    &first, &last, &stamp.width, &stamp.height, &stamp.samplesPerPixel, &rendererStart);
     const std::size_t versionAt = text.rfind("; hexray ");
     const std::size_t sceneAt = versionAt == std::string::npos ? versionAt : text.rfind("; scene ", versionAt);
     if (read != 7 || rendererStart < 0 || sceneAt == std::string::npos || sceneAt < std::size_t(rendererStart) ||
-        stamp.tile.count == 0 || stamp.tile.index >= stamp.tile.count || stamp.tile.count > stamp.height) {
+        stamp.strip.count == 0 || stamp.strip.index >= stamp.strip.count || stamp.strip.count > stamp.height) {
         return std::nullopt;
     }
     stamp.renderer = text.substr(std::size_t(rendererStart), sceneAt - std::size_t(rendererStart));
@@ -63,14 +63,14 @@ std::optional<TileStamp> parseTileStamp(const std::string& text) {
     if (!isSceneIdentity(stamp.scene) || !isVersion(stamp.version)) {
         return std::nullopt;
     }
-    // Strict: anything formatTileStamp would not write (other rows, extra text) is not a stamp.
-    if (formatTileStamp(stamp) != text) {
+    // Strict: anything formatStripStamp would not write (other rows, extra text) is not a stamp.
+    if (formatStripStamp(stamp) != text) {
         return std::nullopt;
     }
     return stamp;
 }
 
-std::optional<std::string> beyondRendererLimits(const TileStamp& stamp) {
+std::optional<std::string> beyondRendererLimits(const StripStamp& stamp) {
     if (stamp.width < 1 || stamp.height < 1 || stamp.width > kMaxImageDimension || stamp.height > kMaxImageDimension) {
         return "its stamp declares a " + imageSize(stamp.width, stamp.height) + " image, " +
                (stamp.width < 1 || stamp.height < 1 ? "which has no pixels" : "larger than hexray renders") +

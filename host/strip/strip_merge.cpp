@@ -1,4 +1,4 @@
-#include "tile/tile_merge.h"
+#include "strip/strip_merge.h"
 
 #include <algorithm>
 #include <optional>
@@ -24,22 +24,22 @@ std::string formatName(ImageFormat format) {
     return format == ImageFormat::Exr ? "OpenEXR" : "PNG";
 }
 
-std::string tileText(const TileStamp& stamp) {
+std::string stripText(const StripStamp& stamp) {
     const RowRange rows = stamp.rows();
-    return "tile " + std::to_string(stamp.tile.index) + "/" + std::to_string(stamp.tile.count) + ", rows " +
+    return "strip " + std::to_string(stamp.strip.index) + "/" + std::to_string(stamp.strip.count) + ", rows " +
            std::to_string(rows.first) + "-" + std::to_string(rows.end() - 1);
 }
 
-// How `piece` differs from `first`, a tile of the image being merged.
-std::string differences(const TileStamp& piece, const TileStamp& first) {
+// How `piece` differs from `first`, a strip of the image being merged.
+std::string differences(const StripStamp& piece, const StripStamp& first) {
     std::vector<std::string> parts;
     const auto compare = [&](bool same, const std::string& what, const std::string& mine, const std::string& theirs) {
         if (!same)
             parts.push_back(what + " " + mine + " (not " + theirs + ")");
     };
-    const auto size = [](const TileStamp& s) { return std::to_string(s.width) + "x" + std::to_string(s.height); };
-    compare(piece.tile.count == first.tile.count, "tile count", std::to_string(piece.tile.count),
-            std::to_string(first.tile.count));
+    const auto size = [](const StripStamp& s) { return std::to_string(s.width) + "x" + std::to_string(s.height); };
+    compare(piece.strip.count == first.strip.count, "strip count", std::to_string(piece.strip.count),
+            std::to_string(first.strip.count));
     compare(piece.width == first.width && piece.height == first.height, "image", size(piece), size(first));
     compare(piece.samplesPerPixel == first.samplesPerPixel, "spp", std::to_string(piece.samplesPerPixel),
             std::to_string(first.samplesPerPixel));
@@ -57,29 +57,29 @@ void ensureDescriptorsFor(std::size_t pieces) {
     const std::uint64_t needed = pieces + kSpareDescriptors;
     const std::uint64_t limit = raiseOpenFileLimit(needed);
     if (limit < needed) {
-        throw TileError(std::to_string(pieces) + " pieces, but this process may have only " + std::to_string(limit) +
-                        " files open (ulimit -n), and merge holds every piece open: raise the limit to at least " +
-                        std::to_string(needed));
+        throw StripError(std::to_string(pieces) + " pieces, but this process may have only " + std::to_string(limit) +
+                         " files open (ulimit -n), and merge holds every piece open: raise the limit to at least " +
+                         std::to_string(needed));
     }
 }
 
-TilePiece openPiece(const std::string& path, ImageFormat format) {
+StripPiece openPiece(const std::string& path, ImageFormat format) {
     if (imageFormatFor(path) != format) {
-        throw TileError(printable(path) + ": not a " + formatName(format) + " file (" + extensionOf(format) +
-                        "), as the merged image is");
+        throw StripError(printable(path) + ": not a " + formatName(format) + " file (" + extensionOf(format) +
+                         "), as the merged image is");
     }
     try {
-        return TilePiece(ReadOnlyFile(path), format);
+        return StripPiece(ReadOnlyFile(path), format);
     } catch (const InputError& error) {
-        throw TileError(printable(error.what()));
+        throw StripError(printable(error.what()));
     }
 }
 
-void mergePngs(const std::string& output, std::vector<TilePiece>& tiles) {
-    const TileStamp& stamp = tiles.front().stamp();
+void mergePngs(const std::string& output, std::vector<StripPiece>& strips) {
+    const StripStamp& stamp = strips.front().stamp();
     PngRowWriter writer(output, stamp.width, stamp.height);
     std::vector<std::uint8_t> rows;
-    for (TilePiece& piece : tiles) {
+    for (StripPiece& piece : strips) {
         for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
             rows.resize(std::size_t(std::min(kRowsAtATime, piece.rowCount() - done)) * stamp.width * 3);
             piece.readRgb8Rows(rows);
@@ -90,11 +90,11 @@ void mergePngs(const std::string& output, std::vector<TilePiece>& tiles) {
     writer.finish();
 }
 
-void mergeExrs(const std::string& output, std::vector<TilePiece>& tiles) {
-    const TileStamp& stamp = tiles.front().stamp();
+void mergeExrs(const std::string& output, std::vector<StripPiece>& strips) {
+    const StripStamp& stamp = strips.front().stamp();
     ExrRowWriter writer(output, stamp.width, stamp.height, kExrChannels);
     std::vector<float> red, green, blue;
-    for (TilePiece& piece : tiles) {
+    for (StripPiece& piece : strips) {
         for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
             const std::uint32_t rows = std::min(kRowsAtATime, piece.rowCount() - done);
             for (std::vector<float>* channel : {&red, &green, &blue}) {
@@ -110,71 +110,71 @@ void mergeExrs(const std::string& output, std::vector<TilePiece>& tiles) {
 
 }  // namespace
 
-std::vector<TilePiece> openPieces(const std::vector<std::string>& paths, ImageFormat format) {
+std::vector<StripPiece> openPieces(const std::vector<std::string>& paths, ImageFormat format) {
     ensureDescriptorsFor(paths.size());
-    std::vector<std::optional<TilePiece>> slots;  // sized from a stamp within the renderer's limits
-    std::optional<TileStamp> first;
+    std::vector<std::optional<StripPiece>> slots;  // sized from a stamp within the renderer's limits
+    std::optional<StripStamp> first;
     std::string firstPath;
     for (const std::string& path : paths) {
-        TilePiece piece = openPiece(path, format);
+        StripPiece piece = openPiece(path, format);
         if (!first) {
             first = piece.stamp();
             firstPath = path;
-            slots.resize(first->tile.count);
+            slots.resize(first->strip.count);
         }
         if (!piece.stamp().sameImage(*first)) {
-            throw TileError(printable(path) + ": a tile of another image than " + printable(firstPath) + ": " +
-                            printable(differences(piece.stamp(), *first)));
+            throw StripError(printable(path) + ": a strip of another image than " + printable(firstPath) + ": " +
+                             printable(differences(piece.stamp(), *first)));
         }
-        std::optional<TilePiece>& slot = slots[piece.stamp().tile.index];
+        std::optional<StripPiece>& slot = slots[piece.stamp().strip.index];
         if (slot && slot->name() == path) {
-            throw TileError(printable(path) + ": given twice");
+            throw StripError(printable(path) + ": given twice");
         }
         if (slot) {
-            throw TileError(printable(path) + ": overlaps " + printable(slot->name()) + " (both are " +
-                            tileText(piece.stamp()) + ")");
+            throw StripError(printable(path) + ": overlaps " + printable(slot->name()) + " (both are " +
+                             stripText(piece.stamp()) + ")");
         }
         slot = std::move(piece);
     }
-    std::vector<TilePiece> ordered;
+    std::vector<StripPiece> ordered;
     for (std::uint32_t index = 0; index < slots.size(); ++index) {
         if (!slots[index]) {
-            TileStamp missing = *first;
-            missing.tile.index = index;
-            throw TileError("missing " + tileText(missing) + " of the image " + printable(firstPath) + " belongs to");
+            StripStamp missing = *first;
+            missing.strip.index = index;
+            throw StripError("missing " + stripText(missing) + " of the image " + printable(firstPath) + " belongs to");
         }
         ordered.push_back(std::move(*slots[index]));
     }
     return ordered;
 }
 
-void mergePieces(const std::string& output, std::vector<TilePiece>& tiles) {
-    if (tiles.empty()) {
-        throw TileError("no pieces to merge");
+void mergePieces(const std::string& output, std::vector<StripPiece>& strips) {
+    if (strips.empty()) {
+        throw StripError("no pieces to merge");
     }
-    if (imageFormatFor(output) != tiles.front().format()) {
-        throw TileError(printable(output) + ": not a " + formatName(tiles.front().format()) + " file (" +
-                        extensionOf(tiles.front().format()) + "), as the pieces are");
+    if (imageFormatFor(output) != strips.front().format()) {
+        throw StripError(printable(output) + ": not a " + formatName(strips.front().format()) + " file (" +
+                         extensionOf(strips.front().format()) + "), as the pieces are");
     }
     try {
-        if (tiles.front().format() == ImageFormat::Exr) {
-            mergeExrs(output, tiles);
+        if (strips.front().format() == ImageFormat::Exr) {
+            mergeExrs(output, strips);
         } else {
-            mergePngs(output, tiles);
+            mergePngs(output, strips);
         }
     } catch (const ImageIoError& error) {
-        throw TileError(printable(error.what()));  // a piece damaged past its header
+        throw StripError(printable(error.what()));  // a piece damaged past its header
     }
 }
 
-TileStamp mergeTiles(const std::string& output, const std::vector<std::string>& paths) {
+StripStamp mergeStrips(const std::string& output, const std::vector<std::string>& paths) {
     const std::optional<ImageFormat> format = imageFormatFor(output);
     if (!format) {
-        throw TileError(printable(output) + ": unknown image format (supported: " + kSupportedImageFormats + ")");
+        throw StripError(printable(output) + ": unknown image format (supported: " + kSupportedImageFormats + ")");
     }
-    std::vector<TilePiece> tiles = openPieces(paths, *format);
-    mergePieces(output, tiles);
-    return tiles.front().stamp();
+    std::vector<StripPiece> strips = openPieces(paths, *format);
+    mergePieces(output, strips);
+    return strips.front().stamp();
 }
 
 }  // namespace hexray

@@ -1,4 +1,4 @@
-// libFuzzer target for the reader of `hexray merge`'s pieces (tile/tile_piece.h): any bytes, given
+// libFuzzer target for the reader of `hexray merge`'s pieces (strip/strip_piece.h): any bytes, given
 // as a piece through an in-memory file (a memfd, read as merge reads a piece's descriptor), must
 // be a verified piece or a refusal naming it (piece_judgement.h); in PNG when they start with
 // PNG's signature, else in OpenEXR. A crash, a leak, a sanitizer report, a broken judgement or,
@@ -21,7 +21,7 @@ namespace {
 constexpr char kName[] = "fuzz-piece";
 
 [[noreturn]] void failWith(const char* what, const std::string& detail) {
-    std::fprintf(stderr, "tile_piece_fuzzer: %s: %s\n", what, detail.c_str());
+    std::fprintf(stderr, "strip_piece_fuzzer: %s: %s\n", what, detail.c_str());
     __builtin_trap();
 }
 
