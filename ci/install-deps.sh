@@ -14,7 +14,7 @@ packages=(
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
-  clang-format-14 clang-tidy-14  # ci/lint.sh: the house style (clang-tidy only with --tidy)
+  clang-format-14 clang-tidy-14  # ci/lint.sh: the house style
   git  # ci/lint.sh lists the tracked files; the build records the revision
 )
 case "${1:-}" in

@@ -21,7 +21,7 @@ tests() {
 }
 
 timed "install and build (warnings are errors)" env HEXRAY_WERROR=ON bash ci/build.sh
-timed "style" bash ci/lint.sh
+timed "style (clang-format, function size, clang-tidy)" bash ci/lint.sh
 timed "tests" tests
 timed "sanitizer build and command-line tests" bash ci/sanitize.sh
 timed "fuzzing the readers of untrusted files" bash ci/fuzz.sh 40

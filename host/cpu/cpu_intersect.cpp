@@ -1,4 +1,5 @@
 #include "cpu/cpu_intersect.h"
+#include "cpu/double_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -133,12 +134,6 @@ std::optional<Hit> intersectGeometry(const Ray& ray, const Geometry& geometry) {
 }
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-double largestAbsComponent(const glm::dvec3& v) {
-    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
 
 // The nearest-hit order: smaller t first, and on an exact tie the earlier node.
 bool isBefore(const Hit& hit, std::size_t index, const std::optional<SceneHit>& nearest) {

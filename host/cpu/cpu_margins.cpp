@@ -1,5 +1,6 @@
 #include "cpu/cpu_margins.h"
 #include "unit_roundoff.h"
+#include "cpu/double_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +13,6 @@
 namespace hexray {
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Distance from x to the nearest multiple of size (in x's units).
 double distanceToMultiple(double x, double size) {

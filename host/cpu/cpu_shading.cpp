@@ -10,6 +10,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "image/pixel_class.h"
+#include "cpu/double_math.h"
 
 namespace hexray {
 
@@ -19,10 +20,6 @@ bool isOddInteger(double integral) {
     // fmod is exact, and needs no conversion to an integer type: a cast of a double
     // beyond +-2^63 would be undefined. Doubles that large are all even anyway.
     return std::fmod(integral, 2.0) != 0.0;
-}
-
-double largestAbsComponent(const glm::dvec3& v) {
-    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
 // A point of a sphere seen from inside, whose surface faces a light outside that sphere: the

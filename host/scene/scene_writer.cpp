@@ -8,33 +8,33 @@
 namespace hexray {
 namespace {
 
-using Json = nlohmann::ordered_json;  // keys in the order written, as a person would
+using OrderedJson = nlohmann::ordered_json;  // keys in the order written, as a person would
 
-Json triple(const glm::dvec3& v) {
-    return Json::array({v.x, v.y, v.z});
+OrderedJson triple(const glm::dvec3& v) {
+    return OrderedJson::array({v.x, v.y, v.z});
 }
 
-Json imageJson(const ImageSettings& image) {
-    Json json = {{"width", image.width}, {"height", image.height}};
+OrderedJson imageJson(const ImageSettings& image) {
+    OrderedJson json = {{"width", image.width}, {"height", image.height}};
     json["sampling"] = image.sampling == Sampling::Center ? "center" : "corner";
     json["encoding"] = image.encoding == Encoding::Srgb ? "srgb" : "linear";
     json["spp"] = image.samplesPerPixel;
     return json;
 }
 
-Json cameraJson(const CameraSettings& camera) {
-    Json json = {{"position", triple(camera.position)},
-                 {"yaw", camera.yawDegrees},
-                 {"pitch", camera.pitchDegrees},
-                 {"roll", camera.rollDegrees},
-                 {"fov", camera.fovDegrees}};
+OrderedJson cameraJson(const CameraSettings& camera) {
+    OrderedJson json = {{"position", triple(camera.position)},
+                        {"yaw", camera.yawDegrees},
+                        {"pitch", camera.pitchDegrees},
+                        {"roll", camera.rollDegrees},
+                        {"fov", camera.fovDegrees}};
     if (camera.aspect) {
         json["aspect"] = *camera.aspect;
     }
     return json;
 }
 
-Json shaderJson(const Shader& shader) {
+OrderedJson shaderJson(const Shader& shader) {
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         return {{"type", "constant"}, {"color", triple(constant->color)}};
     }
@@ -48,7 +48,7 @@ Json shaderJson(const Shader& shader) {
             {"size", checker.size}};
 }
 
-Json geometryJson(const Geometry& geometry) {
+OrderedJson geometryJson(const Geometry& geometry) {
     if (const auto* plane = std::get_if<Plane>(&geometry)) {
         return {{"type", "plane"}, {"y", plane->height}};
     }
@@ -71,15 +71,15 @@ std::string arrayLines(const Items& items, ToJson&& toJson) {
 std::string sceneToJson(const Scene& scene) {
     std::string shaders = "{";
     for (std::size_t i = 0; i < scene.shaders.size(); ++i) {
-        shaders += (i ? ",\n    " : "\n    ") + Json(scene.shaderNames.at(i)).dump() + ": " +
+        shaders += (i ? ",\n    " : "\n    ") + OrderedJson(scene.shaderNames.at(i)).dump() + ": " +
                    shaderJson(scene.shaders[i]).dump();
     }
     shaders += scene.shaders.empty() ? "}" : "\n  }";
     const auto light = [](const PointLight& l) {
-        return Json{{"position", triple(l.position)}, {"color", triple(l.color)}, {"intensity", l.intensity}};
+        return OrderedJson{{"position", triple(l.position)}, {"color", triple(l.color)}, {"intensity", l.intensity}};
     };
     const auto node = [&](const Node& n) {
-        return Json{{"geometry", geometryJson(n.geometry)}, {"shader", scene.shaderNames.at(n.shaderIndex)}};
+        return OrderedJson{{"geometry", geometryJson(n.geometry)}, {"shader", scene.shaderNames.at(n.shaderIndex)}};
     };
     return "{\n  \"image\": " + imageJson(scene.image).dump() + ",\n  \"camera\": " + cameraJson(scene.camera).dump() +
            ",\n  \"background\": " + triple(scene.background).dump() +
