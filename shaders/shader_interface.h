@@ -7,7 +7,7 @@
 
 #ifdef __cplusplus
 #include <cstdint>
-namespace hexray::gpu {
+namespace hexray::inline gpu {
 using uint = std::uint32_t;
 #define HEXRAY_CONSTANT inline constexpr
 #else

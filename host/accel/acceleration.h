@@ -2,7 +2,7 @@
 // Whether a renderer uses its acceleration structure: the CPU reference's BVH (bvh.h), the GPU's
 // candidate lists (candidate_lists.h).
 
-namespace hexray {
+namespace hexray::inline accel {
 
 // How a renderer finds what a ray meets. Each renderer's Auto decides when its acceleration
 // structure pays; the others exist for tests and benchmarks, not for users.
@@ -13,4 +13,4 @@ enum class Acceleration {
              // spheres, the GPU's candidate lists (candidate_lists.h)
 };
 
-}  // namespace hexray
+}  // namespace hexray::accel

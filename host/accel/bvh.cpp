@@ -15,7 +15,7 @@
 
 #include <glm/common.hpp>
 
-namespace hexray {
+namespace hexray::inline accel {
 
 namespace {
 
@@ -323,4 +323,4 @@ Bvh buildBvh(const Scene& scene, unsigned threadCount) {
     return bvh;
 }
 
-}  // namespace hexray
+}  // namespace hexray::accel

@@ -16,7 +16,7 @@
 #include "scene/scene.h"
 #include "scene/scene_contents.h"  // countSpheres
 
-namespace hexray {
+namespace hexray::inline accel {
 
 struct BvhNode {
     glm::dvec3 boundsMin{0.0};  // the box around everything below this node
@@ -49,4 +49,4 @@ inline constexpr std::size_t kBvhMinSpheres = 16;
 // Whether a BVH makes the CPU reference faster for this scene (more than kBvhMinSpheres spheres).
 bool bvhPays(const Scene& scene);
 
-}  // namespace hexray
+}  // namespace hexray::accel

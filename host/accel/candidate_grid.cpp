@@ -6,7 +6,7 @@
 #include "accel/candidate_tunables.h"
 #include "util/parallel_parts.h"
 
-namespace hexray {
+namespace hexray::inline accel {
 namespace {
 
 using namespace candidates;  // the tunables
@@ -102,4 +102,4 @@ std::size_t CellBinner::bin(const CandidateGrid& grid, std::span<const std::span
     return next;
 }
 
-}  // namespace hexray
+}  // namespace hexray::accel

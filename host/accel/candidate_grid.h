@@ -10,7 +10,7 @@
 
 #include "accel/sphere_footprint.h"
 
-namespace hexray {
+namespace hexray::inline accel {
 
 // A sphere's box in one view, padded for the shader's look-up and rounded outward to float.
 struct Footprint {
@@ -63,4 +63,4 @@ private:
     std::vector<std::vector<std::uint32_t>> counts_;  // per part: counts, then write cursors
 };
 
-}  // namespace hexray
+}  // namespace hexray::accel

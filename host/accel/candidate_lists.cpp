@@ -18,7 +18,7 @@
 #include "util/parallel_parts.h"
 #include "unit_roundoff.h"
 
-namespace hexray {
+namespace hexray::inline accel {
 namespace {
 
 using namespace candidates;  // the tunables
@@ -603,4 +603,4 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     return lists;
 }
 
-}  // namespace hexray
+}  // namespace hexray::accel

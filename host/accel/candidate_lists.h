@@ -26,7 +26,7 @@
 #include "precision/arithmetic.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline accel {
 
 struct CandidateLists {
     gpu::GpuCandidateAxes cameraAxes{};
@@ -60,4 +60,4 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
                                                   Formulation formulation, unsigned threadCount = 0,
                                                   const CandidateBudget& budget = {});
 
-}  // namespace hexray
+}  // namespace hexray::accel

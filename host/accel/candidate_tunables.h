@@ -7,7 +7,7 @@
 
 #include "unit_roundoff.h"
 
-namespace hexray::candidates {
+namespace hexray::inline accel::candidates {
 
 // --- Size: how fine the grids are, within what the device's buffers hold.
 // At most this many list entries in all (4 bytes each) and as many cells; a scene whose lists do
@@ -53,4 +53,4 @@ inline constexpr double kCellSlack = 0.02;
 // double roundoff of the magnitudes involved, far below any float the shader computes.
 inline constexpr double kFootprintSlack = 1e-12;
 
-}  // namespace hexray::candidates
+}  // namespace hexray::accel::candidates

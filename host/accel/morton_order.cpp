@@ -5,7 +5,7 @@
 
 #include <glm/common.hpp>
 
-namespace hexray {
+namespace hexray::inline accel {
 namespace {
 
 constexpr int kBitsPerAxis = 10;
@@ -64,4 +64,4 @@ std::vector<std::uint32_t> mortonOrder(std::span<const glm::dvec3> points) {
     return order;
 }
 
-}  // namespace hexray
+}  // namespace hexray::accel

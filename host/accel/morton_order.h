@@ -9,10 +9,10 @@
 
 #include <glm/vec3.hpp>
 
-namespace hexray {
+namespace hexray::inline accel {
 
 // The indices of `points`, ordered along a Z-curve through their bounding box (10 bits a
 // coordinate); equal codes keep their index order, so the order is deterministic.
 std::vector<std::uint32_t> mortonOrder(std::span<const glm::dvec3> points);
 
-}  // namespace hexray
+}  // namespace hexray::accel

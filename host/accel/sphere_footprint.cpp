@@ -8,7 +8,7 @@
 
 #include "accel/candidate_tunables.h"
 
-namespace hexray {
+namespace hexray::inline accel {
 namespace {
 
 using namespace candidates;  // the tunables
@@ -83,4 +83,4 @@ std::optional<TangentBox> ballFootprint(const TangentView& view, const glm::dvec
     return box;
 }
 
-}  // namespace hexray
+}  // namespace hexray::accel

@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace hexray {
+namespace hexray::inline accel {
 
 // A direction d shows at tangent coordinates (u, v) = (d . right, d . down) / (d . forward).
 struct TangentBox {
@@ -36,4 +36,4 @@ struct TangentView {
 // ball sees it everywhere: the whole window.
 std::optional<TangentBox> ballFootprint(const TangentView& view, const glm::dvec3& center, double radius);
 
-}  // namespace hexray
+}  // namespace hexray::accel

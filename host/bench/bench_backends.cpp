@@ -11,7 +11,7 @@
 #include "embree/embree_renderer.h"
 #endif
 
-namespace hexray {
+namespace hexray::inline bench {
 namespace {
 
 // The threads lavapipe renders with: Mesa's own override, else one per core.
@@ -146,4 +146,4 @@ std::optional<WorkPerPixel> BenchBackends::work(const Scene& scene, const BenchC
     return workPerPixel(*plan.kernel.code);
 }
 
-}  // namespace hexray
+}  // namespace hexray::bench

@@ -18,9 +18,11 @@
 #include "scene/scene.h"
 #include "vulkan/vulkan_context.h"
 
-namespace hexray {
+namespace hexray::inline embree {
+class EmbreeRenderer;  // embree/embree_renderer.h
+}  // namespace hexray::embree
 
-class EmbreeRenderer;
+namespace hexray::inline bench {
 
 enum class BenchBackend {
     Gpu,             // the renderer, as planRender decides for a precision and culling
@@ -92,4 +94,4 @@ private:
     std::unique_ptr<EmbreeRenderer, EmbreeDeleter> embree_;  // null without Embree
 };
 
-}  // namespace hexray
+}  // namespace hexray::bench

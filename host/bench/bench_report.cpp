@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace hexray {
+namespace hexray::inline bench {
 namespace {
 
 double median(std::vector<double> values) {
@@ -242,4 +242,4 @@ std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<Be
     return csv.str();
 }
 
-}  // namespace hexray
+}  // namespace hexray::bench

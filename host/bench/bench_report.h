@@ -12,7 +12,7 @@
 #include "compare/compare.h"
 #include "cpu/cpu_renderer.h"
 
-namespace hexray {
+namespace hexray::inline bench {
 
 // What a scene's configurations are judged against.
 struct BenchReference {
@@ -58,4 +58,4 @@ void printBenchTables(const std::vector<BenchScene>& scenes, const std::vector<B
 std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
                      const BenchBackends& backends);
 
-}  // namespace hexray
+}  // namespace hexray::bench

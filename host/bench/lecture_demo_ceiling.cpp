@@ -8,7 +8,7 @@ namespace {
 #include "kLectureDemoCeilingSpv.h"
 }  // namespace
 
-namespace hexray {
+namespace hexray::inline bench {
 
 namespace {
 
@@ -54,4 +54,4 @@ RenderPlan lectureDemoCeilingPlan(const GpuRenderer& renderer, const Scene& scen
     return plan;
 }
 
-}  // namespace hexray
+}  // namespace hexray::bench

@@ -7,7 +7,7 @@
 #include "gpu/render_plan.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline bench {
 
 // Whether the kernel renders `scene`: the nodes, shaders, lights, background, ambient and eye
 // of scenes/lecture-demo.json, one sample per pixel. Image size, camera orientation, field of
@@ -18,4 +18,4 @@ bool isLectureDemoScene(const Scene& scene);
 // std::invalid_argument unless isLectureDemoScene(scene).
 RenderPlan lectureDemoCeilingPlan(const GpuRenderer& renderer, const Scene& scene);
 
-}  // namespace hexray
+}  // namespace hexray::bench

@@ -4,7 +4,7 @@
 
 #include <glm/trigonometric.hpp>
 
-namespace hexray {
+namespace hexray::inline camera {
 
 PixelSheet makePixelSheet(const CameraSettings& camera, double aspect) {
     // Unscaled corners are (+-aspect, +-1, 1); scaling by m makes the half-diagonal tan(fov/2).
@@ -46,4 +46,4 @@ glm::dvec3 sampleDirection(const PixelSheet& sheet, const ImageSettings& image, 
     return glm::normalize(sheet.topLeft + sheet.right * s.x + sheet.down * s.y);
 }
 
-}  // namespace hexray
+}  // namespace hexray::camera

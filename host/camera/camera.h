@@ -11,7 +11,7 @@
 #include "scene/camera_angles.h"  // the angles' meaning: the camera's rotation
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline camera {
 
 // The "sheet" at distance 1 in front of the camera, already rotated into world space.
 // The ray through image point (sx, sy) of a W x H image aims at
@@ -47,4 +47,4 @@ glm::dvec2 sheetPosition(const ImageSettings& image, std::uint32_t x, std::uint3
 glm::dvec3 sampleDirection(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
                            std::uint32_t sample);
 
-}  // namespace hexray
+}  // namespace hexray::camera

@@ -12,7 +12,7 @@
 #include "compare/error_accumulator.h"
 #include "compare/render_comparator.h"
 
-namespace hexray {
+namespace hexray::inline compare {
 namespace {
 
 void requireSameSize(std::uint32_t w1, std::uint32_t h1, std::uint32_t w2, std::uint32_t h2) {
@@ -218,4 +218,4 @@ Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const st
     return mask;
 }
 
-}  // namespace hexray
+}  // namespace hexray::compare

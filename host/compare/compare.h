@@ -11,7 +11,7 @@
 #include "image/image_io.h"
 #include "image/pixel_class.h"
 
-namespace hexray {
+namespace hexray::inline compare {
 
 // Per-channel statistics over every channel of the pixels compared. Values are in the
 // images' own units: [0, 1] for linear images (clamped first, as the output is), levels
@@ -144,4 +144,4 @@ Rgb8Image mismatchMask(const std::vector<PixelClass>& referenceClasses, const st
                        const Ambiguities& ambiguity, const Rgb8Image& reference, const Rgb8Image& test,
                        const Image* referenceLinear = nullptr, const Image* testLinear = nullptr);
 
-}  // namespace hexray
+}  // namespace hexray::compare

@@ -7,7 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-namespace hexray {
+namespace hexray::inline compare {
 
 void ErrorAccumulator::addPixel(const glm::dvec3& difference) {
     const glm::dvec3 magnitude = glm::abs(difference);
@@ -42,4 +42,4 @@ glm::dvec3 levelDifference(const Rgb8Image& reference, const Rgb8Image& test, st
     return levels(test) - levels(reference);
 }
 
-}  // namespace hexray
+}  // namespace hexray::compare

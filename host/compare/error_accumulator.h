@@ -7,7 +7,7 @@
 
 #include "compare/compare.h"
 
-namespace hexray {
+namespace hexray::inline compare {
 
 class ErrorAccumulator {
 public:
@@ -35,4 +35,4 @@ glm::dvec3 displayedDifference(const glm::vec3& reference, const glm::vec3& test
 // Pixel `pixel`'s difference in 8-bit levels.
 glm::dvec3 levelDifference(const Rgb8Image& reference, const Rgb8Image& test, std::size_t pixel);
 
-}  // namespace hexray
+}  // namespace hexray::compare

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace hexray {
+namespace hexray::inline compare {
 
 void RenderComparator::add(const RenderBand& reference, const RenderBand& test, const Ambiguities& ambiguity) {
     const std::size_t pixels = reference.image.pixels.size();
@@ -27,4 +27,4 @@ RenderComparison RenderComparator::result() const {
     return {topology_, linear_.result(), encoded_.result(), invalidColours_};
 }
 
-}  // namespace hexray
+}  // namespace hexray::compare

@@ -8,7 +8,7 @@
 #include "compare/compare.h"
 #include "compare/error_accumulator.h"
 
-namespace hexray {
+namespace hexray::inline compare {
 
 // One render's band of rows: its linear colour, classes and 8-bit encoding.
 struct RenderBand {
@@ -30,4 +30,4 @@ private:
     std::uint64_t invalidColours_ = 0;
 };
 
-}  // namespace hexray
+}  // namespace hexray::compare

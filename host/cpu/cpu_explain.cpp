@@ -8,7 +8,7 @@
 #include "cpu/cpu_renderer.h"
 #include "cpu/eye_frame.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 CpuPixelExplanation explainPixel(const Scene& world, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
     const EyeFrameScene frame = inEyeFrame(world);  // traced as renderOnCpu traces, reported in world units
@@ -55,4 +55,4 @@ CpuPixelExplanation explainPixel(const Scene& world, std::uint32_t x, std::uint3
     return out;
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

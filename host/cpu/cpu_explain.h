@@ -14,7 +14,7 @@
 #include "image/pixel_class.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 struct CpuPixelExplanation {
     Ray ray;                                     // of the explained sample
@@ -33,4 +33,4 @@ struct CpuPixelExplanation {
 // Sample `sample` of pixel (x, y); the caller checks the ranges.
 CpuPixelExplanation explainPixel(const Scene& scene, std::uint32_t x, std::uint32_t y, std::uint32_t sample);
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 std::optional<Hit> intersectPlane(const Ray& ray, const Plane& plane) {
     // A parallel ray (d.y = +0 or -0) never meets the plane; dividing would give +-inf or NaN.
@@ -283,4 +283,4 @@ bool hasSphereHitBefore(const Ray& ray, const Scene& scene, double maxT, const B
     return found;
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -10,7 +10,7 @@
 #include "accel/bvh.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 // A half-line origin + t * direction, t > 0. `direction` must have unit length:
 // the sphere test relies on it (a = dot(d, d) = 1) and t is then a distance.
@@ -82,4 +82,4 @@ void forEachPlane(const Scene& scene, const Bvh* bvh, Visit&& visit) {
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 namespace {
 
@@ -206,4 +206,4 @@ double facingMargin(double cosTheta, double normalRoundoff, double directionRoun
     return std::abs(cosTheta) / (normalRoundoff + directionRoundoff);
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -22,7 +22,7 @@
 #include "precision/decision_roundoff.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 // How far roundoff can move the unit direction of a camera ray as the shader forms it, in units
 // of roundoff: topLeft + right * s.x + down * s.y (`sheetPosition` = s) from float copies of the
@@ -177,4 +177,4 @@ inline constexpr double kLightTermTolerance = 0x1p-8;
 inline constexpr double kLightTermUnits = 4.0;
 double lightTermMargin(double normalRoundoff, double directionRoundoff, double unitRoundoff);
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -23,7 +23,7 @@
 #include "util/out_of_memory.h"
 #include "unit_roundoff.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 Ray cameraRay(const PixelSheet& sheet, const ImageSettings& image, std::uint32_t x, std::uint32_t y,
               std::uint32_t sample) {
@@ -482,4 +482,4 @@ float pixelMargin(const Scene& world, std::uint32_t x, std::uint32_t y) {
     return renderPixel({scene, frame.eye, bvh ? &*bvh : nullptr, sheet, DecisionRoundoff{}}, x, y).margin;
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

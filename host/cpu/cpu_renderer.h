@@ -17,7 +17,7 @@
 #include "image/pixel_class.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 struct CpuRender {
     Image image;
@@ -93,4 +93,4 @@ CpuRender renderOnCpu(const Scene& scene, unsigned threadCount, Acceleration acc
 // The margin renderOnCpu would give pixel (x, y) (in float32 terms), without rendering the others.
 float pixelMargin(const Scene& scene, std::uint32_t x, std::uint32_t y);
 
-}  // namespace hexray
+}  // namespace hexray::cpu

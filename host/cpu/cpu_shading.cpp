@@ -12,7 +12,7 @@
 #include "image/pixel_class.h"
 #include "cpu/double_math.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 namespace {
 
@@ -180,4 +180,4 @@ ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const B
     return shaded;
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

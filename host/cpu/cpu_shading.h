@@ -12,7 +12,7 @@
 #include "cpu/cpu_intersect.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 // 0 when floor(u/size) + floor(v/size) is even (color1's cells), 1 when odd (color2's).
 // Correct through negative coordinates and for |u/size| beyond the range of any integer type.
@@ -89,4 +89,4 @@ struct ShadedHit {
 ShadedHit shadeHit(const Scene& scene, const Node& node, const Hit& hit, const Bvh* bvh = nullptr,
                    std::vector<LightTerm>* lightTerms = nullptr, const glm::dvec3& frameOrigin = glm::dvec3(0.0));
 
-}  // namespace hexray
+}  // namespace hexray::cpu

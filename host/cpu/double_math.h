@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -16,4 +16,4 @@ inline double largestAbsComponent(const glm::dvec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -2,7 +2,7 @@
 
 #include <variant>
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 EyeFrameScene inEyeFrame(const Scene& world) {
     EyeFrameScene frame{world, world.camera.position};
@@ -21,4 +21,4 @@ EyeFrameScene inEyeFrame(const Scene& world) {
     return frame;
 }
 
-}  // namespace hexray
+}  // namespace hexray::cpu

@@ -9,7 +9,7 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline cpu {
 
 struct EyeFrameScene {
     Scene scene;     // the camera at the origin
@@ -18,4 +18,4 @@ struct EyeFrameScene {
 
 EyeFrameScene inEyeFrame(const Scene& world);
 
-}  // namespace hexray
+}  // namespace hexray::cpu

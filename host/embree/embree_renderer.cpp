@@ -21,7 +21,7 @@
 #include "cpu/cpu_shading.h"
 #include "util/milliseconds_since.h"
 
-namespace hexray {
+namespace hexray::inline embree {
 
 namespace {
 
@@ -532,4 +532,4 @@ EmbreeRender EmbreeRenderer::render(const Scene& scene, EmbreeTracing tracing) c
     return render;
 }
 
-}  // namespace hexray
+}  // namespace hexray::embree

@@ -20,7 +20,7 @@
 #include "image/pixel_class.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline embree {
 
 struct EmbreeRender {
     Image image;                      // linear, like the CPU reference's
@@ -59,4 +59,4 @@ private:
     unsigned threadCount_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::embree

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline gpu {
 namespace {
 
 template <typename T>
@@ -67,4 +67,4 @@ void CandidateBuffers::abandon() {
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::gpu

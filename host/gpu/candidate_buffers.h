@@ -12,7 +12,7 @@
 #include "accel/candidate_lists.h"
 #include "vulkan/host_visible_buffer.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 
 class CandidateBuffers {
 public:
@@ -42,4 +42,4 @@ private:
     std::array<TexelBuffer, 4> buffers_;  // in kBindings' order
 };
 
-}  // namespace hexray
+}  // namespace hexray::gpu

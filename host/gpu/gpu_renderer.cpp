@@ -24,7 +24,7 @@
 #include "vulkan/fault_injection.h"
 #include "vulkan/host_visible_buffer.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 namespace {
 
 using gpu::GpuBand;
@@ -855,4 +855,4 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::gpu

@@ -20,7 +20,7 @@
 #include "util/lru_map.h"
 #include "vulkan/vulkan_context.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 
 struct GpuTiming {
     double renderMilliseconds = 0;         // all bands, measured after the warm-up dispatch
@@ -206,4 +206,4 @@ private:
     std::uint64_t timestampMask_ = ~std::uint64_t{0};
 };
 
-}  // namespace hexray
+}  // namespace hexray::gpu

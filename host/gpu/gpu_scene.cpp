@@ -9,7 +9,7 @@
 #include "camera/camera.h"
 #include "precision/precision.h"
 
-namespace hexray::gpu {
+namespace hexray::inline gpu {
 namespace {
 
 template <typename Real>

@@ -9,7 +9,7 @@
 #include "gpu/render_plan.h"
 #include "scene/scene.h"
 
-namespace hexray::gpu {
+namespace hexray::inline gpu {
 
 template <typename Real>
 struct GpuScene {

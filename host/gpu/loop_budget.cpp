@@ -7,7 +7,7 @@
 #include "scene/scene_contents.h"
 #include "shader_interface.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 namespace {
 
 // A loop over `count` items: a pass each and the pass that ends it.
@@ -119,4 +119,4 @@ std::optional<LightBatches> planLightBatches(const LoopPasses& passes, std::uint
     return batches;
 }
 
-}  // namespace hexray
+}  // namespace hexray::gpu

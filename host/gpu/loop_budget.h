@@ -23,9 +23,11 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
-
+namespace hexray::inline accel {
 struct CandidateLists;  // accel/candidate_lists.h
+}  // namespace hexray::accel
+
+namespace hexray::inline gpu {
 
 // The passes lavapipe runs in one invocation.
 inline constexpr std::uint64_t kLavapipeLoopPasses = 65535;
@@ -80,4 +82,4 @@ std::optional<LightBatches> planLightBatches(const LoopPasses& passes, std::uint
 // not split further.
 std::uint64_t smallestDispatchPasses(const LoopPasses& passes);
 
-}  // namespace hexray
+}  // namespace hexray::gpu

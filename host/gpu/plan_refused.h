@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline gpu {
 
 enum class Refusal {
     NoFloat64,     // --precision f64 on a device without shaderFloat64
@@ -28,4 +28,4 @@ private:
     std::string reason_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::gpu

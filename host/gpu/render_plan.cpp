@@ -17,7 +17,7 @@
 #include "scene/scene_contents.h"
 #include "shader_interface.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 namespace {
 
 // ---------------------------------------------------------------- tunables
@@ -287,4 +287,4 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
     return plan;
 }
 
-}  // namespace hexray
+}  // namespace hexray::gpu

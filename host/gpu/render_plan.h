@@ -19,9 +19,11 @@
 #include "precision/precision.h"
 #include "scene/scene.h"
 
-namespace hexray {
-
+namespace hexray::inline accel {
 struct CandidateLists;  // accel/candidate_lists.h
+}  // namespace hexray::accel
+
+namespace hexray::inline gpu {
 
 // How the scene's data reaches the kernel.
 enum class SceneLayout {
@@ -111,4 +113,4 @@ bool isLightHiddenFromView(const Scene& scene, const PointLight& light);
 // and so gets a generated kernel.
 bool isSmallScene(const Scene& scene);
 
-}  // namespace hexray
+}  // namespace hexray::gpu

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace hexray {
+namespace hexray::inline gpu {
 namespace {
 
 using Field = SceneConstant::Field;
@@ -77,4 +77,4 @@ template std::vector<std::byte> sceneConstantValues<float>(const std::vector<Sce
 template std::vector<std::byte> sceneConstantValues<double>(const std::vector<SceneConstant>&,
                                                             const gpu::GpuScene<double>&);
 
-}  // namespace hexray
+}  // namespace hexray::gpu

@@ -8,7 +8,7 @@
 #include "gpu/gpu_scene.h"
 #include "kernels/scene_constants.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 
 // The constants' values as the driver takes them: each component a Real (the scene's packed
 // width) or a float, in order, no padding.
@@ -16,4 +16,4 @@ template <typename Real>
 std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& constants,
                                            const gpu::GpuScene<Real>& scene);
 
-}  // namespace hexray
+}  // namespace hexray::gpu

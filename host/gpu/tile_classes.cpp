@@ -12,7 +12,7 @@
 #include "camera/camera.h"
 #include "shader_interface.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 namespace {
 
 // ---------------------------------------------------------------- tunables
@@ -292,4 +292,4 @@ WorkPerPixel workPerPixel(const SceneCode& code, const TileClassification& class
     return {total.primaryTests / pixels, total.shadowRays / pixels, total.shadowTests / pixels};
 }
 
-}  // namespace hexray
+}  // namespace hexray::gpu

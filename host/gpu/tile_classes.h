@@ -13,7 +13,7 @@
 #include "gpu/render_plan.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline gpu {
 
 // A tile's work: bit i of `primary` when a camera ray of the tile may hit node i; per light, bit i
 // of `shadow` when sphere node i may shadow a point the tile sees (planes are never culled: their
@@ -52,4 +52,4 @@ struct WorkPerPixel {
 WorkPerPixel workPerPixel(const SceneCode& code);  // the unculled kernel
 WorkPerPixel workPerPixel(const SceneCode& code, const TileClassification& classification, const ImageSettings& image);
 
-}  // namespace hexray
+}  // namespace hexray::gpu

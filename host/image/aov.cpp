@@ -14,7 +14,7 @@
 #include "io/temporary_names.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline image {
 namespace {
 
 namespace fs = std::filesystem;
@@ -134,4 +134,4 @@ std::vector<fs::path> StagedAovs::commit() {
     return committed;
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -28,10 +28,13 @@
 
 #include "image/pixel_class.h"
 
-namespace hexray {
+namespace hexray::inline io {
+class RemovedOnSignal;  // io/removed_on_signal.h
+}  // namespace hexray::io
+
+namespace hexray::inline image {
 
 class AovSetWriter;
-class RemovedOnSignal;
 
 // What a set holds.
 struct AovLayout {
@@ -88,4 +91,4 @@ private:
     std::unique_ptr<AovSetWriter> writer_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -7,7 +7,7 @@
 
 #include "image/exr_row_reader.h"
 
-namespace hexray {
+namespace hexray::inline image {
 namespace {
 
 using Rgb = std::array<std::uint8_t, 3>;
@@ -230,4 +230,4 @@ std::vector<std::string> AovSetWriter::finish() {
     return names;
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -14,7 +14,7 @@
 #include "image/exr_row_writer.h"
 #include "image/image_io.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 class AovSetWriter {
 public:
@@ -52,4 +52,4 @@ private:
     float farthest_ = 0.0f;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -5,7 +5,7 @@
 #include "image/exr_row_reader.h"
 #include "image/exr_row_writer.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 void writeExr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
               const std::vector<ExrChannel>& channels) {
@@ -31,4 +31,4 @@ ExrImage readExr(const std::filesystem::path& path) {
     return image;
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

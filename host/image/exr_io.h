@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline image {
 
 struct ExrChannel {
     std::string name;           // e.g. "Y", or "R", "G", "B"
@@ -29,4 +29,4 @@ struct ExrImage {
 // Throws ImageIoError naming the file.
 ExrImage readExr(const std::filesystem::path& path);
 
-}  // namespace hexray
+}  // namespace hexray::image

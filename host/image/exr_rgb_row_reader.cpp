@@ -11,7 +11,7 @@
 #include "image/image_io.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline image {
 namespace {
 
 constexpr std::array<const char*, 3> kChannels = {"R", "G", "B"};
@@ -230,4 +230,4 @@ void ExrRgbRowReader::readRows(std::uint32_t rows, std::span<float> red, std::sp
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -16,7 +16,7 @@
 
 #include "io/read_only_file.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 inline constexpr int kMaxExrChannels = 8;
 
@@ -46,4 +46,4 @@ private:
     std::uint32_t height_ = 0;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -10,7 +10,7 @@
 
 #include "image/image_io.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 struct ExrRowReader::Decoder {
     Imf::InputFile file;
@@ -65,4 +65,4 @@ void ExrRowReader::readRows(const std::string& channel, std::uint32_t firstRow, 
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline image {
 
 class ExrRowReader {
 public:
@@ -37,4 +37,4 @@ private:
     std::uint32_t height_ = 0;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

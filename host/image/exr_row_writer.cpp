@@ -18,7 +18,7 @@
 #include "io/output_error.h"
 #include "io/output_file.h"
 
-namespace hexray {
+namespace hexray::inline image {
 namespace {
 
 // OpenEXR's output stream over a stdio stream: the OutputFile's own, or a scratch copy of it.
@@ -215,4 +215,4 @@ void ExrRowWriter::finish(const std::vector<ImageNote>& replacements) {
     e.file.commit();
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -17,7 +17,7 @@
 
 #include "image/image_io.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 class ExrRowWriter {
 public:
@@ -40,4 +40,4 @@ private:
     std::unique_ptr<Encoder> encoder_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

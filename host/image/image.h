@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace hexray {
+namespace hexray::inline image {
 
 struct Image {
     std::uint32_t width = 0;
@@ -21,4 +21,4 @@ struct Image {
     const glm::vec3& at(std::uint32_t x, std::uint32_t y) const { return pixels[std::size_t(y) * width + x]; }
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -8,7 +8,7 @@
 
 #include "io/standard_output.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 std::optional<ImageFormat> imageFormatFor(const std::string& path) {
     // The extension the user wrote decides, wherever the path leads: standard output included.
@@ -36,4 +36,4 @@ const char* extensionOf(ImageFormat format) {
     return format == ImageFormat::Exr ? ".exr" : ".png";
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

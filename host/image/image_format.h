@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline image {
 
 enum class ImageFormat {
     Png,  // 8-bit RGB, encoded as the scene says (sRGB or linear)
@@ -23,4 +23,4 @@ std::optional<ImageFormat> imageFormatFor(const std::string& path);
 // ".png" or ".exr".
 const char* extensionOf(ImageFormat format);
 
-}  // namespace hexray
+}  // namespace hexray::image

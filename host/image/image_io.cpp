@@ -15,7 +15,7 @@
 
 #include "io/output_file.h"
 
-namespace hexray {
+namespace hexray::inline image {
 namespace {
 
 float srgbFromLinear(float linear) {
@@ -158,4 +158,4 @@ Rgb8Image readPng(const std::filesystem::path& path) {
                      std::vector<std::uint8_t>(pixels.get(), pixels.get() + size)};
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

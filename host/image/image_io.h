@@ -12,7 +12,7 @@
 #include "image/image.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 class ImageIoError : public std::runtime_error {
 public:
@@ -65,4 +65,4 @@ void writePng(const std::filesystem::path& path, const Rgb8Image& image);
 
 Rgb8Image readPng(const std::filesystem::path& path);
 
-}  // namespace hexray
+}  // namespace hexray::image

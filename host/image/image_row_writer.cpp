@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace hexray {
+namespace hexray::inline image {
 
 namespace {
 
@@ -71,4 +71,4 @@ void ImageRowWriter::finish() {
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -16,7 +16,7 @@
 #include "image/image_io.h"
 #include "image/pixel_digest.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 // A note whose text is the SHA-256 of the pixels as written (pixel_digest.h), hashed after
 // `preamble`. It is known only once every row is written: a PNG has it in a text chunk after the
@@ -49,4 +49,4 @@ private:
     std::optional<PixelDigest> digest_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

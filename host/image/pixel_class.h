@@ -7,7 +7,7 @@
 
 #include "shader_interface.h"  // the encoding, shared with the shader
 
-namespace hexray {
+namespace hexray::inline image {
 
 struct PixelClass {
     static constexpr std::uint32_t kBackground = gpu::BACKGROUND;
@@ -48,4 +48,4 @@ struct PixelAmbiguity {
     bool operator==(const PixelAmbiguity&) const = default;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

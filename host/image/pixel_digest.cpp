@@ -3,7 +3,7 @@
 #include <bit>
 #include <stdexcept>
 
-namespace hexray {
+namespace hexray::inline image {
 
 PixelDigest::PixelDigest(std::string_view preamble) {
     hash_.add(preamble);
@@ -39,4 +39,4 @@ std::string PixelDigest::hex() {
     return hexText(hash_.finish());
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

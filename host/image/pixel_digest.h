@@ -13,7 +13,7 @@
 
 #include "util/sha256.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 inline constexpr std::size_t kPixelDigestHexLength = 64;
 
@@ -33,4 +33,4 @@ private:
     std::vector<std::uint8_t> bytes_;  // float rows in their hashed form, reused
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

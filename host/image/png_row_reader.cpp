@@ -9,7 +9,7 @@
 
 #include "image/image_io.h"
 
-namespace hexray {
+namespace hexray::inline image {
 namespace {
 
 // Ancillary chunks are kept in memory: a text chunk of up to 1 MiB, 4 MiB of them in all, far
@@ -154,4 +154,4 @@ std::optional<std::string> PngRowReader::textAfterPixels(const std::string& key)
     return d.find(d.textsAfter, key, "after");
 }
 
-}  // namespace hexray
+}  // namespace hexray::image

@@ -15,7 +15,7 @@
 
 #include "io/read_only_file.h"
 
-namespace hexray {
+namespace hexray::inline image {
 
 class PngRowReader {
 public:
@@ -47,4 +47,4 @@ private:
     std::uint32_t height_ = 0;
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

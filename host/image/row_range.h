@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-namespace hexray {
+namespace hexray::inline image {
 
 // Rows [first, first + count); the default is every row.
 struct RowRange {
@@ -13,4 +13,4 @@ struct RowRange {
     std::uint32_t end() const { return count > UINT32_MAX - first ? UINT32_MAX : first + count; }
 };
 
-}  // namespace hexray
+}  // namespace hexray::image

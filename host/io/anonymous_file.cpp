@@ -9,7 +9,7 @@
 #include "io/removed_on_signal.h"
 #include "io/temporary_names.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 // A named temporary (registered for removal on signals until then), removed at once.
@@ -47,4 +47,4 @@ FilePointer openAnonymousFile() {
     return file;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

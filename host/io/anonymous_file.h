@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline io {
 
 struct CloseFile {
     void operator()(std::FILE* file) const { std::fclose(file); }
@@ -21,4 +21,4 @@ std::string scratchDirectory();
 // failure.
 FilePointer openAnonymousFile();
 
-}  // namespace hexray
+}  // namespace hexray::io

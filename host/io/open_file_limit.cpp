@@ -4,7 +4,7 @@
 
 #include <limits>
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 std::uint64_t count(rlim_t limit) {
@@ -28,4 +28,4 @@ std::uint64_t raiseOpenFileLimit(std::uint64_t needed) {
     return count(limit.rlim_cur);
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -4,10 +4,10 @@
 
 #include <cstdint>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // Raises the soft limit to the hard one when it is below `needed`; returns the soft limit then in
 // force (which may still be below `needed`).
 std::uint64_t raiseOpenFileLimit(std::uint64_t needed);
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -4,11 +4,11 @@
 
 #include <stdexcept>
 
-namespace hexray {
+namespace hexray::inline io {
 
 class OutputError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -14,7 +14,7 @@
 #include "io/standard_output.h"
 #include "io/temporary_names.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 std::string systemError() {
@@ -126,4 +126,4 @@ void OutputFile::fail(const std::string& what, const std::string& why) const {
     throw OutputError(name_ + ": " + what + ": " + why);
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -15,7 +15,7 @@
 
 #include "io/output_target.h"
 
-namespace hexray {
+namespace hexray::inline io {
 
 class RemovedOnSignal;
 
@@ -52,4 +52,4 @@ private:
     std::FILE* file_ = nullptr;
 };
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -11,7 +11,7 @@
 #include "io/standard_output.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -124,4 +124,4 @@ void OutputPlan::check() const {
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // An output that would destroy an input or another output of the same command. Exit code 2.
 class OutputConflict : public std::runtime_error {
@@ -67,4 +67,4 @@ private:
     std::vector<Output> outputs_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -10,7 +10,7 @@
 #include "io/standard_output.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -95,4 +95,4 @@ OutputTarget resolveOutputTarget(const std::string& given) {
     return target;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

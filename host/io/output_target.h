@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline io {
 
 enum class OutputKind {
     StandardOutput,  // "-", or a path to the file standard output already is
@@ -40,4 +40,4 @@ std::string unwritableDirectoryReason(const std::filesystem::path& directory);
 // Throws OutputError as resolveOutputTarget does for a link that cannot be read or a loop.
 std::filesystem::path followSymlinks(const std::string& given);
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <utility>
 
-namespace hexray {
+namespace hexray::inline io {
 
 ReadOnlyFile::ReadOnlyFile(const std::string& path)
     : descriptor_(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY)), name_(path) {
@@ -65,4 +65,4 @@ std::size_t ReadOnlyFile::readAt(std::uint64_t offset, std::span<std::byte> byte
     return done;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // A file that cannot be opened or read; what() names it.
 class InputError : public std::runtime_error {
@@ -40,4 +40,4 @@ private:
     std::string name_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 constexpr int kMaxDepth = 32;
@@ -66,4 +66,4 @@ bool removeWithoutFollowing(const std::filesystem::path& directory, const std::s
     return removed;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // Removes `name` (one path component) from `directory`. Returns false when something could not
 // be removed (permissions, a tree deeper than 32 levels); nothing there counts as removed.
 bool removeWithoutFollowing(const std::filesystem::path& directory, const std::string& name);
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -19,7 +19,7 @@
 
 #include "io/temporary_names.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 // The handler may only make async-signal-safe calls, so the paths sit in fixed buffers that it
@@ -212,4 +212,4 @@ RegisteredTemporary createTemporary(const std::string& pattern, RemovedOnSignal:
     return failed;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

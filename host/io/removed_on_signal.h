@@ -17,7 +17,7 @@
 #include <memory>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline io {
 
 class RemovedOnSignal {
 public:
@@ -47,4 +47,4 @@ struct RegisteredTemporary {
 // machine's speed; any other non-empty value throws std::invalid_argument.
 RegisteredTemporary createTemporary(const std::string& pattern, RemovedOnSignal::Kind kind);
 
-}  // namespace hexray
+}  // namespace hexray::io

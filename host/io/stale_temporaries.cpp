@@ -9,7 +9,7 @@
 
 #include "io/temporary_names.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -65,4 +65,4 @@ void removeStaleTemporaries(const fs::path& directory, fs::file_time_type before
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

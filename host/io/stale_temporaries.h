@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // When this process started (when the program was loaded).
 std::filesystem::file_time_type runStart();
@@ -20,4 +20,4 @@ void holdAsLive(int descriptor);
 void removeStaleTemporaries(const std::filesystem::path& directory,
                             std::filesystem::file_time_type before = runStart());
 
-}  // namespace hexray
+}  // namespace hexray::io

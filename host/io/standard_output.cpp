@@ -11,7 +11,7 @@
 #include "io/output_error.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 int dataDescriptor = STDOUT_FILENO;
@@ -56,4 +56,4 @@ int standardOutputDescriptor() {
     return dataDescriptor;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

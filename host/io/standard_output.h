@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // Whether writing to `path` means writing to this process's standard output: "-", or a path
 // to the same file or pipe (/dev/stdout, /proc/self/fd/1, the file stdout is redirected to). A
@@ -25,4 +25,4 @@ void reserveStandardOutputForData(const std::vector<std::string>& outputs);
 // The descriptor that data for standard output goes to: the original standard output.
 int standardOutputDescriptor();
 
-}  // namespace hexray
+}  // namespace hexray::io

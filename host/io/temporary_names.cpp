@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <random>
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 constexpr std::string_view kRandomSuffix = ".XXXXXX";
@@ -51,4 +51,4 @@ std::string partialFilePattern(const std::filesystem::path& directory, const std
     return (directory / name).string();
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace hexray {
+namespace hexray::inline io {
 
 // `.hexray-partial-<target name>.XXXXXX`: an output being written, renamed over the target
 // when complete.
@@ -23,4 +23,4 @@ std::string randomName(const std::string& pattern);
 // directory's file-name limit, so a target of any valid length gets a temporary.
 std::string partialFilePattern(const std::filesystem::path& directory, const std::string& targetName);
 
-}  // namespace hexray
+}  // namespace hexray::io

@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace hexray {
+namespace hexray::inline io {
 namespace {
 
 std::string kindOf(mode_t mode) {
@@ -97,4 +97,4 @@ bool UntrustedFile::stillNamedBy(const std::filesystem::path& path) const {
            now.st_ino == status_.st_ino;
 }
 
-}  // namespace hexray
+}  // namespace hexray::io

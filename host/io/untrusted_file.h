@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline io {
 
 class UntrustedFile {
 public:
@@ -41,4 +41,4 @@ private:
     std::string problem_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::io

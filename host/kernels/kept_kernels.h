@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // Pipelines (a kernel with its specialization: a generated kernel's are the scene's values, so an
 // animation makes one per frame). One render holds all of its tile classes' at once, so this
@@ -17,4 +17,4 @@ inline constexpr std::size_t kKeptPipelines = 16;
 // Generated kernels' SPIR-V, by source (the data-driven kernels are built in and always there).
 inline constexpr std::size_t kKeptGeneratedKernels = 16;
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -8,7 +8,7 @@
 
 #include "kernels/scene_code.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // The program a plan runs: GLSL written for the scene (compiled at run time and cached), or
 // SPIR-V built with hexray (the data-driven kernels, or a caller's own, such as the bench's
@@ -19,4 +19,4 @@ struct Kernel {
     std::span<const std::uint32_t> spirv;   // else: the program itself
 };
 
-}  // namespace hexray
+}  // namespace hexray::kernels

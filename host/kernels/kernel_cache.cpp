@@ -16,7 +16,7 @@
 #include "io/untrusted_file.h"
 #include "util/sha256.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 namespace {
 
 namespace fs = std::filesystem;
@@ -195,4 +195,4 @@ KernelCache::Usage KernelCache::clear() const {
     return removed;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

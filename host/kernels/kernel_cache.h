@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // HEXRAY_KERNEL_CACHE_MAX_SIZE holds something other than a size.
 class KernelCacheSettingError : public std::invalid_argument {
@@ -81,4 +81,4 @@ private:
     Reporter report_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::kernels

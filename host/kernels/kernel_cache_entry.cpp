@@ -6,7 +6,7 @@
 #include "kernels/spirv_validation.h"
 #include "util/sha256.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 namespace {
 
 void appendCount(std::string& bytes, std::uint64_t count) {
@@ -85,4 +85,4 @@ KernelCacheEntry openKernelCacheEntry(std::string_view bytes, const std::string&
     return entry;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

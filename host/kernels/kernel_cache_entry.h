@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 inline constexpr std::string_view kKernelCacheMagic = "HXKERNL2";
 inline constexpr std::size_t kKernelCacheDigestOffset = kKernelCacheMagic.size();
@@ -31,4 +31,4 @@ struct KernelCacheEntry {
 };
 KernelCacheEntry openKernelCacheEntry(std::string_view bytes, const std::string& key);
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <system_error>
 
-namespace hexray {
+namespace hexray::inline kernels {
 namespace {
 
 namespace fs = std::filesystem;
@@ -47,4 +47,4 @@ KernelCacheFiles listKernelCacheFiles(const fs::path& directory) {
     return files;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

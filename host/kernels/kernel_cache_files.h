@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 struct KernelCacheFile {
     std::string name;
@@ -24,4 +24,4 @@ struct KernelCacheFiles {
 // A directory that cannot be read lists nothing.
 KernelCacheFiles listKernelCacheFiles(const std::filesystem::path& directory);
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -7,7 +7,7 @@
 #include "util/build_version.h"
 #include "util/milliseconds_since.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 std::string kernelCacheKey(const std::string& source) {
     return "hexray " + buildVersion() + "\n" + shaderCompilerFingerprint() + "\n" + source;
@@ -80,4 +80,4 @@ bool KernelCompiler::fromDiskCache(const std::uint32_t* spirv) const {
     return found;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

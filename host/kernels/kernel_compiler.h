@@ -13,7 +13,7 @@
 #include "kernels/kernel.h"
 #include "util/lru_map.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // What getting a kernel's SPIR-V took, for `render`'s report.
 struct KernelBuild {
@@ -68,4 +68,4 @@ private:
     std::uint64_t lastId_ = 0;
 };
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -11,7 +11,7 @@
 #include "kernels/scene_constants.h"
 #include "shader_interface.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 namespace {
 
 // A set of node indices as a bit mask: a generated kernel has at most SMALL_SCENE_CAPACITY (32)
@@ -366,4 +366,4 @@ std::string generateKernel(const SceneCode& code) {
     return KernelWriter(code).write();
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

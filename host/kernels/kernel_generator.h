@@ -9,8 +9,8 @@
 
 #include "kernels/scene_code.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 std::string generateKernel(const SceneCode& code);
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -10,7 +10,7 @@ namespace {
 #include "kRenderF64StorageSpv.h"
 }  // namespace
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 std::span<const std::uint32_t> dataDrivenKernel(FloatWidth width, Formulation formulation, bool candidates) {
     if (width == FloatWidth::F64) {
@@ -28,4 +28,4 @@ std::string dataDrivenKernelName(FloatWidth width, Formulation formulation, bool
     return name + (candidates ? " candidates" : " storage");
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

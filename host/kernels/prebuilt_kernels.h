@@ -8,9 +8,9 @@
 
 #include "precision/arithmetic.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 std::span<const std::uint32_t> dataDrivenKernel(FloatWidth width, Formulation formulation, bool candidates);
 std::string dataDrivenKernelName(FloatWidth width, Formulation formulation, bool candidates);
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -7,7 +7,7 @@
 
 #include "precision/arithmetic.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // How a camera ray meets one sphere (generated kernels).
 enum class SphereTest {
@@ -61,4 +61,4 @@ struct SceneCode {
     bool tileList = false;    // a tile class's kernel: it renders the tiles listed for it
 };
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -2,7 +2,7 @@
 
 #include "shader_interface.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 namespace {
 
 using Field = SceneConstant::Field;
@@ -46,4 +46,4 @@ std::vector<SceneConstant> sceneConstants(const SceneCode& code) {
     return constants;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

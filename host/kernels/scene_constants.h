@@ -12,7 +12,7 @@
 
 #include "kernels/scene_code.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 struct SceneConstant {
     enum class Field {
@@ -37,4 +37,4 @@ struct SceneConstant {
 
 std::vector<SceneConstant> sceneConstants(const SceneCode& code);
 
-}  // namespace hexray
+}  // namespace hexray::kernels

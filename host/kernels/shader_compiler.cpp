@@ -11,7 +11,7 @@
 #include "shader_library.h"
 #include "util/sha256.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 namespace {
 
 // What compileComputeShader targets (its setEnvClient and setEnvTarget), for the fingerprint; the
@@ -78,4 +78,4 @@ const std::string& shaderCompilerFingerprint() {
     return fingerprint;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

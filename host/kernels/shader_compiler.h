@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 class ShaderCompileError : public std::runtime_error {
 public:
@@ -39,4 +39,4 @@ private:
 // kernel cache key.
 const std::string& shaderCompilerFingerprint();
 
-}  // namespace hexray
+}  // namespace hexray::kernels

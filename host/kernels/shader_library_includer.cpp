@@ -4,7 +4,7 @@
 
 #include "shader_library.h"
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 glslang::TShader::Includer::IncludeResult* ShaderLibraryIncluder::find(const char* name) {
     for (const shader_library::File& file : shader_library::kFiles) {
@@ -15,4 +15,4 @@ glslang::TShader::Includer::IncludeResult* ShaderLibraryIncluder::find(const cha
     return nullptr;  // glslang reports the include as not found
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -4,7 +4,7 @@
 
 #include <glslang/Public/ShaderLang.h>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // Every include, local or system, is a file of the embedded library; anything else is not found.
 class ShaderLibraryIncluder : public glslang::TShader::Includer {
@@ -17,4 +17,4 @@ private:
     static IncludeResult* find(const char* name);
 };
 
-}  // namespace hexray
+}  // namespace hexray::kernels

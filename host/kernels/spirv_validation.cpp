@@ -2,7 +2,7 @@
 
 #include <spirv-tools/libspirv.hpp>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 std::optional<std::string> spirvValidationProblem(std::span<const std::uint32_t> spirv) {
     spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
@@ -20,4 +20,4 @@ std::optional<std::string> spirvValidationProblem(std::span<const std::uint32_t>
     return firstMessage.empty() ? "invalid SPIR-V" : firstMessage;
 }
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -9,9 +9,9 @@
 #include <span>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline kernels {
 
 // Nothing when `spirv` is valid; else the validator's first message. Thread-safe.
 std::optional<std::string> spirvValidationProblem(std::span<const std::uint32_t> spirv);
 
-}  // namespace hexray
+}  // namespace hexray::kernels

@@ -17,7 +17,7 @@
 
 #include "shader_interface.h"  // the constants both sides agree on
 
-namespace hexray::gpu {
+namespace hexray::inline gpu {
 
 template <typename Real>
 struct alignas(4 * sizeof(Real)) RealVec4 : glm::vec<4, Real> {

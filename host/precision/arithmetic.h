@@ -4,7 +4,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace hexray {
+namespace hexray::inline precision {
 
 // The shader's arithmetic for positions and distances (colours are always float).
 enum class FloatWidth { F32, F64 };
@@ -27,4 +27,4 @@ struct Placement {
     double length(double world) const { return world / scale; }
 };
 
-}  // namespace hexray
+}  // namespace hexray::precision

@@ -1,6 +1,6 @@
 #include "precision/decision_roundoff.h"
 
-namespace hexray {
+namespace hexray::inline precision {
 
 DecisionRoundoff decisionRoundoff(Precision precision) {
     if (precision == Precision::F64) {
@@ -9,4 +9,4 @@ DecisionRoundoff decisionRoundoff(Precision precision) {
     return {};
 }
 
-}  // namespace hexray
+}  // namespace hexray::precision

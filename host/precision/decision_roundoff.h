@@ -4,7 +4,7 @@
 #include "precision/precision.h"
 #include "unit_roundoff.h"
 
-namespace hexray {
+namespace hexray::inline precision {
 
 // The unit roundoff of the arithmetic a comparison tests, per kind of decision: float32's 2^-24
 // by default; double's 2^-53 for what a float64 shader computes in double.
@@ -18,4 +18,4 @@ struct DecisionRoundoff {
 // (GLSL has no double atan, so they stay float); f32 and f32-naive compute in float.
 DecisionRoundoff decisionRoundoff(Precision precision);
 
-}  // namespace hexray
+}  // namespace hexray::precision

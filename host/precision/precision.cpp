@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace hexray {
+namespace hexray::inline precision {
 namespace {
 
 constexpr std::array<std::pair<Precision, std::string_view>, 4> kNames = {{
@@ -116,4 +116,4 @@ Precision choosePrecision(const Scene& scene, bool deviceHasFloat64) {
     return float32Suffices || !deviceHasFloat64 ? Precision::F32 : Precision::F64;
 }
 
-}  // namespace hexray
+}  // namespace hexray::precision

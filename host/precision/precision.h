@@ -7,7 +7,7 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline precision {
 
 enum class Precision {
     Auto,      // chosen per scene by choosePrecision
@@ -58,4 +58,4 @@ std::optional<std::string> float32RangeProblem(const Scene& scene);
 // scene's lengths, else F64 (or F32 when the device has no float64, which the caller reports).
 Precision choosePrecision(const Scene& scene, bool deviceHasFloat64);
 
-}  // namespace hexray
+}  // namespace hexray::precision

@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 glm::dmat3 cameraRotation(const CameraSettings& camera) {
     const glm::dmat4 identity(1.0);
@@ -36,4 +36,4 @@ CameraAngles lookAtAngles(const glm::dvec3& position, const glm::dvec3& target, 
     return angles;
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

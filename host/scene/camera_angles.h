@@ -8,7 +8,7 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // Roll first, then pitch, then yaw: rotate(-yaw, Y) * rotate(-pitch, X) * rotate(-roll, Z).
 glm::dmat3 cameraRotation(const CameraSettings& camera);
@@ -27,4 +27,4 @@ struct CameraAngles {
 // the course's angles. The caller rejects a target at the position and an `up` along the view.
 CameraAngles lookAtAngles(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up);
 
-}  // namespace hexray
+}  // namespace hexray::scene

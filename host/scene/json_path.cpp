@@ -7,7 +7,7 @@
 
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 namespace {
 
 bool isIdentifier(std::string_view key) {
@@ -42,4 +42,4 @@ std::string displayPath(const std::string& path) {
     return path.empty() ? "(root)" : path;
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // Longer user strings are cut in messages, so a huge key or name cannot flood the terminal.
 inline constexpr std::size_t kMaxShown = 40;
@@ -23,4 +23,4 @@ std::string elementPath(const std::string& parent, std::size_t index);
 // The root's path is empty; messages call it (root).
 std::string displayPath(const std::string& path);
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 std::string formatNumber(double value) {
     if (std::isnan(value))
@@ -56,4 +56,4 @@ std::string rangeProblem(std::int64_t min, std::int64_t max, const std::string& 
     return "must be between " + std::to_string(min) + " and " + std::to_string(max) + " (got " + got + ")";
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

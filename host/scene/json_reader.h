@@ -18,7 +18,7 @@
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 using Json = nlohmann::json;
 
@@ -312,4 +312,4 @@ private:
     std::size_t index_ = 0;               // or else this index in an array
 };
 
-}  // namespace hexray
+}  // namespace hexray::scene

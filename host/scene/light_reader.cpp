@@ -2,7 +2,7 @@
 
 #include <utility>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 PointLight readLight(const JsonReader& light) {
     light.rejectUnknownKeys({"position", "color", "intensity"});
@@ -29,4 +29,4 @@ std::vector<PointLight> LightReader::take() && {
     return std::move(lights_).take();
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

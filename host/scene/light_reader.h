@@ -10,7 +10,7 @@
 #include "scene/scene.h"
 #include "util/chunked_list.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // Reading stops at the first bad light, and its problem is raised only by take(), which the scene
 // reader calls where it reaches the lights, so problems are reported in the same order as if the
@@ -37,4 +37,4 @@ private:
 // One light, checked as the format requires.
 PointLight readLight(const JsonReader& light);
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <utility>
 
-namespace hexray {
+namespace hexray::inline scene {
 namespace {
 
 enum class GeometryType { Plane, Sphere };
@@ -174,4 +174,4 @@ bool UsualNodeShortcut::readGeometry() {
     return true;
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -14,7 +14,7 @@
 #include "scene/scene_json_parser.h"
 #include "util/chunked_list.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // The nodes, which may come before the shaders they name: a node keeps its shader as an index
 // into the names seen so far until the scene's shaders are known. Reading stops at the first
@@ -94,4 +94,4 @@ private:
     std::optional<Geometry> geometry_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 namespace {
 
@@ -57,4 +57,4 @@ Scene makeRandomSpheresScene(std::uint32_t count, std::uint64_t seed) {
     return scene;
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

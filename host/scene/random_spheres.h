@@ -5,7 +5,7 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // `count` spheres of radii 0.5 to 2.5 scattered (overlaps allowed) over a square of a checkered
 // floor plane y = 0, whose side grows as sqrt(count) so the density stays the same; nodes[0] is
@@ -14,4 +14,4 @@ namespace hexray {
 // (std::mt19937_64 with its own mapping to [0, 1); <random>'s distributions are not portable).
 Scene makeRandomSpheresScene(std::uint32_t count, std::uint64_t seed);
 
-}  // namespace hexray
+}  // namespace hexray::scene

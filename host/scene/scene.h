@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 using Color = glm::dvec3;  // linear RGB, not clamped
 
@@ -112,4 +112,4 @@ inline double sheetAspect(const Scene& scene) {
     return scene.camera.aspect.value_or(double(scene.image.width) / double(scene.image.height));
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -9,7 +9,7 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 inline std::size_t countSpheres(const Scene& scene) {
     return static_cast<std::size_t>(std::count_if(scene.nodes.begin(), scene.nodes.end(), [](const Node& node) {
@@ -26,4 +26,4 @@ inline std::string sceneContents(const Scene& scene) {
            " and " + counted(scene.lights.size(), "light", "lights");
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

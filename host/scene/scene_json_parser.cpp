@@ -10,7 +10,7 @@
 #include "scene/scene_loader.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 namespace {
 
 using Json = nlohmann::json;
@@ -341,4 +341,4 @@ std::optional<Json> parseSceneJson(const std::string& text, const std::string& s
     return builder.takeDocument();
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

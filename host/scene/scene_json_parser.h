@@ -14,7 +14,7 @@
 
 #include "scene/scene_loader.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // Receives each element of one of the root object's arrays read an element at a time ("nodes"
 // and "lights"), with its index, as soon as the parser has read it whole. The element is not kept:
@@ -36,4 +36,4 @@ std::optional<nlohmann::json> parseSceneJson(const std::string& text, const std:
                                              NodeShortcut& shortcut, const ElementSink& takeLight,
                                              const ParseProgress& progress = {});
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -25,7 +25,7 @@
 #include "scene/text_encoding.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 namespace {
 
 // Hand-written scenes are kilobytes; a million spheres take some 100 MB, 130 MB with every
@@ -263,4 +263,4 @@ void overrideSamplesPerPixel(Scene& scene, std::int64_t samples, const std::stri
     scene.image.samplesPerPixel = std::uint32_t(samples);
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -11,7 +11,7 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // A rejected scene. what() names the source, the place (line:column for syntax errors,
 // the JSON path such as nodes[3].geometry.radius otherwise) and the reason.
@@ -35,4 +35,4 @@ void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, co
 // Replaces the samples per pixel, with the same check as the file's "spp".
 void overrideSamplesPerPixel(Scene& scene, std::int64_t samples, const std::string& source);
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace hexray {
+namespace hexray::inline scene {
 namespace {
 
 using OrderedJson = nlohmann::ordered_json;  // keys in the order written, as a person would
@@ -87,4 +87,4 @@ std::string sceneToJson(const Scene& scene) {
            ",\n  \"shaders\": " + shaders + ",\n  \"nodes\": " + arrayLines(scene.nodes, node) + "\n}\n";
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

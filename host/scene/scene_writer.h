@@ -6,10 +6,10 @@
 
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // The scene as JSON text in the format scene_loader.h reads (one node per line, so that a
 // large scene stays readable and a diff of two shows the node that changed).
 std::string sceneToJson(const Scene& scene);
 
-}  // namespace hexray
+}  // namespace hexray::scene

@@ -1,6 +1,6 @@
 #include "scene/text_encoding.h"
 
-namespace hexray {
+namespace hexray::inline scene {
 namespace {
 
 struct WideEncoding {
@@ -51,4 +51,4 @@ std::optional<std::string> wideEncodingProblem(std::string_view text) {
            "iconv -f " + encoding->iconvName + " -t UTF-8";
 }
 
-}  // namespace hexray
+}  // namespace hexray::scene

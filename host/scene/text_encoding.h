@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace hexray {
+namespace hexray::inline scene {
 
 // For text in UTF-16 or UTF-32: "the file is UTF-16 (little-endian) text, and scene files are
 // UTF-8: convert it, ..." Recognised by a byte order mark or, without one, by the NUL bytes of
@@ -15,4 +15,4 @@ namespace hexray {
 // anything else: the parser judges that.
 std::optional<std::string> wideEncodingProblem(std::string_view text);
 
-}  // namespace hexray
+}  // namespace hexray::scene

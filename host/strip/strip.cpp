@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace hexray {
+namespace hexray::inline strip {
 
 RowRange stripRows(Strip strip, std::uint32_t height) {
     if (strip.count > height) {
@@ -15,4 +15,4 @@ RowRange stripRows(Strip strip, std::uint32_t height) {
     return RowRange{first, boundary(strip.index + 1) - first};
 }
 
-}  // namespace hexray
+}  // namespace hexray::strip

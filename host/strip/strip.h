@@ -8,7 +8,7 @@
 
 #include "image/row_range.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 
 // A piece that cannot be part of a merged image, or a strip the image cannot have. Exit code 2.
 class StripError : public std::runtime_error {
@@ -29,4 +29,4 @@ struct Strip {
 // strips.
 RowRange stripRows(Strip strip, std::uint32_t height);
 
-}  // namespace hexray
+}  // namespace hexray::strip

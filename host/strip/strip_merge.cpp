@@ -8,7 +8,7 @@
 #include "io/open_file_limit.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 namespace {
 
 // Rows copied at a time: memory grows with the width only.
@@ -177,4 +177,4 @@ StripStamp mergeStrips(const std::string& output, const std::vector<std::string>
     return strips.front().stamp();
 }
 
-}  // namespace hexray
+}  // namespace hexray::strip

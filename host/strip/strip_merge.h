@@ -11,7 +11,7 @@
 #include "strip/strip_piece.h"
 #include "strip/strip_stamp.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 
 // Opens every piece in `paths` (raising the soft limit on open files to the hard one if they need
 // it) and checks that they are the N strips of one image (the same stamp but for the index), each
@@ -27,4 +27,4 @@ void mergePieces(const std::string& output, std::vector<StripPiece>& strips);
 // Both, in the format `output`'s name asks for. Returns the stamp of the first strip.
 StripStamp mergeStrips(const std::string& output, const std::vector<std::string>& paths);
 
-}  // namespace hexray
+}  // namespace hexray::strip

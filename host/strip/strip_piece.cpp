@@ -10,7 +10,7 @@
 #include "image/png_row_reader.h"
 #include "util/printable.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 namespace {
 
 // What a piece's header says about it.
@@ -148,4 +148,4 @@ void StripPiece::verify() {
     reading_.reset();
 }
 
-}  // namespace hexray
+}  // namespace hexray::strip

@@ -17,7 +17,7 @@
 #include "io/read_only_file.h"
 #include "strip/strip_stamp.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 
 class StripPiece {
 public:
@@ -51,4 +51,4 @@ private:
     std::unique_ptr<Reading> reading_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::strip

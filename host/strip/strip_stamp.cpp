@@ -6,7 +6,7 @@
 #include "util/stable_hash.h"
 #include "scene/scene.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 namespace {
 
 // What sceneTextIdentity writes: 16 hex digits, '/', a decimal size.
@@ -91,4 +91,4 @@ std::string sceneTextIdentity(std::string_view text) {
     return hash.hex() + "/" + std::to_string(text.size());
 }
 
-}  // namespace hexray
+}  // namespace hexray::strip

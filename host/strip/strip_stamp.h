@@ -14,7 +14,7 @@
 
 #include "strip/strip.h"
 
-namespace hexray {
+namespace hexray::inline strip {
 
 inline constexpr const char* kStripStampKey = "hexray-strip";
 inline constexpr const char* kStripDigestKey = "hexray-strip-sha256";
@@ -45,4 +45,4 @@ std::optional<std::string> beyondRendererLimits(const StripStamp& stamp);
 // A scene file's text as "<64-bit FNV-1a in hex>/<size in bytes>".
 std::string sceneTextIdentity(std::string_view text);
 
-}  // namespace hexray
+}  // namespace hexray::strip

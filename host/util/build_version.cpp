@@ -1,6 +1,6 @@
 #include "util/build_version.h"
 
-namespace hexray {
+namespace hexray::inline util {
 
 const char* hexrayVersion() {
     return HEXRAY_VERSION;
@@ -14,4 +14,4 @@ std::string buildVersion() {
     return std::string(hexrayVersion()) + " (git " + hexrayGitRevision() + ")";
 }
 
-}  // namespace hexray
+}  // namespace hexray::util

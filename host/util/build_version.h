@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace hexray {
+namespace hexray::inline util {
 
 const char* hexrayVersion();
 const char* hexrayGitRevision();
@@ -12,4 +12,4 @@ const char* hexrayGitRevision();
 // Both as `hexray --version` prints them: "0.1.0 (git 9317900a2b4c)".
 std::string buildVersion();
 
-}  // namespace hexray
+}  // namespace hexray::util

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline util {
 
 template <typename T>
 class ChunkedList {
@@ -52,4 +52,4 @@ private:
     std::size_t size_ = 0;
 };
 
-}  // namespace hexray
+}  // namespace hexray::util

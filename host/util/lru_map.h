@@ -8,7 +8,7 @@
 #include <map>
 #include <utility>
 
-namespace hexray {
+namespace hexray::inline util {
 
 template <typename Key, typename Value>
 class LruMap {
@@ -78,4 +78,4 @@ private:
     std::map<Key, typename Entries::iterator> index_;
 };
 
-}  // namespace hexray
+}  // namespace hexray::util

@@ -3,10 +3,10 @@
 
 #include <chrono>
 
-namespace hexray {
+namespace hexray::inline util {
 
 inline double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace hexray
+}  // namespace hexray::util

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-namespace hexray {
+namespace hexray::inline util {
 
 class OutOfMemory : public std::bad_alloc {
 public:
@@ -32,4 +32,4 @@ decltype(auto) holding(const Describe& describe, Work&& work) {
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::util

@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-namespace hexray {
+namespace hexray::inline util {
 
 // How many threads runParts has started in this process: what the tests count, since work split
 // by something that grows with the input (a thread per light) would show there.
@@ -67,4 +67,4 @@ inline unsigned threadsFor(unsigned requested) {
     return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
-}  // namespace hexray
+}  // namespace hexray::util

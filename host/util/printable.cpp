@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace hexray {
+namespace hexray::inline util {
 namespace {
 
 // The length of the valid UTF-8 sequence at the start of `text` (RFC 3629: no overlong forms, no
@@ -70,4 +70,4 @@ std::string printable(std::string_view text) {
     return out;
 }
 
-}  // namespace hexray
+}  // namespace hexray::util

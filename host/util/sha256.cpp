@@ -5,7 +5,7 @@
 
 #include <openssl/evp.h>
 
-namespace hexray {
+namespace hexray::inline util {
 namespace {
 
 void check(int openSslResult) {
@@ -61,4 +61,4 @@ std::string sha256Hex(std::string_view bytes) {
     return hexText(sha256(bytes));
 }
 
-}  // namespace hexray
+}  // namespace hexray::util

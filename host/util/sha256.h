@@ -10,7 +10,7 @@
 
 struct evp_md_ctx_st;
 
-namespace hexray {
+namespace hexray::inline util {
 
 using Sha256Digest = std::array<std::uint8_t, 32>;
 
@@ -36,4 +36,4 @@ Sha256Digest sha256(std::string_view bytes);
 std::string hexText(const Sha256Digest& digest);
 std::string sha256Hex(std::string_view bytes);
 
-}  // namespace hexray
+}  // namespace hexray::util

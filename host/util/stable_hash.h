@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace hexray {
+namespace hexray::inline util {
 
 class StableHash {
 public:
@@ -28,4 +28,4 @@ private:
     std::uint64_t value_ = 0xcbf29ce484222325ull;
 };
 
-}  // namespace hexray
+}  // namespace hexray::util

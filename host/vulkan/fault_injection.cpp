@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace hexray {
+namespace hexray::inline vulkan {
 namespace {
 
 InjectedFault parse(const char* value) {
@@ -41,4 +41,4 @@ bool injectedOnce(InjectedFault fault) {
     return injected(fault) && !happened.exchange(true);
 }
 
-}  // namespace hexray
+}  // namespace hexray::vulkan

@@ -12,7 +12,7 @@
 
 #include <string_view>
 
-namespace hexray {
+namespace hexray::inline vulkan {
 
 enum class InjectedFault {
     None,
@@ -34,4 +34,4 @@ inline bool injected(InjectedFault fault) {
 // True the first time it is asked in this process when `fault` is the one injected. Thread-safe.
 bool injectedOnce(InjectedFault fault);
 
-}  // namespace hexray
+}  // namespace hexray::vulkan

@@ -6,7 +6,7 @@
 #include "vulkan/fault_injection.h"
 #include "vulkan/vulkan_context.h"
 
-namespace hexray {
+namespace hexray::inline vulkan {
 namespace {
 
 // A memory type that is host-visible and coherent (no flushes needed), cached if possible
@@ -56,4 +56,4 @@ HostVisibleBuffer::HostVisibleBuffer(const vk::raii::Device& device, const vk::r
     }
 }
 
-}  // namespace hexray
+}  // namespace hexray::vulkan

@@ -10,7 +10,7 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
-namespace hexray {
+namespace hexray::inline vulkan {
 
 class HostVisibleBuffer {
 public:
@@ -42,4 +42,4 @@ private:
     std::byte* mapped_ = nullptr;  // stays mapped for the buffer's life; unmapped with the memory
 };
 
-}  // namespace hexray
+}  // namespace hexray::vulkan

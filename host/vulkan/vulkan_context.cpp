@@ -8,7 +8,7 @@
 
 #include "vulkan/fault_injection.h"
 
-namespace hexray {
+namespace hexray::inline vulkan {
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
@@ -286,4 +286,4 @@ std::vector<DeviceInfo> VulkanContext::devices() const {
     return describeAll(vk::raii::PhysicalDevices(instance_));
 }
 
-}  // namespace hexray
+}  // namespace hexray::vulkan

@@ -12,7 +12,7 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
-namespace hexray {
+namespace hexray::inline vulkan {
 
 // Why the GPU path cannot render. Decides the exit code and whether `render --backend auto`
 // may fall back to the CPU reference (every kind but Request).
@@ -125,4 +125,4 @@ private:
 // "discrete GPU", "integrated GPU", "virtual GPU", "CPU" or "other".
 std::string deviceTypeName(vk::PhysicalDeviceType type);
 
-}  // namespace hexray
+}  // namespace hexray::vulkan

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace hexray::bench {
+namespace hexray::inline bench {
 
 inline double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
