@@ -391,60 +391,6 @@ GpuRenderResult GpuRenderer::renderEncodedRows(const Scene& scene, const RenderP
 
 namespace {
 
-template <typename Real>
-GpuPixelTrace unpackTrace(const Scene& scene, const std::byte* bytes, const Placement& placement) {
-    gpu::GpuTraceHeader<Real> header;
-    std::memcpy(&header, bytes, sizeof header);
-    if (header.result.x != 1) {
-        throw std::runtime_error("internal error: the trace dispatch wrote nothing");
-    }
-    const double scale = placement.scale;
-    const auto world = [&](const gpu::RealVec4<Real>& p) { return placement.origin + scale * glm::dvec3(p); };
-    // The shader's NO_HIT is REAL_MAX: 1e300 in f64, FLT_MAX in f32.
-    const double miss = std::is_same_v<Real, double> ? 1e299 : 1e38;
-    const auto distance = [&](Real t) {
-        return double(t) >= miss ? std::numeric_limits<double>::infinity() : double(t) * scale;
-    };
-    GpuPixelTrace trace;
-    trace.cameraRelative = placement.cameraRelative;
-    trace.scale = scale;
-    trace.rayOrigin = world(header.rayOrigin);
-    trace.rayDirection = glm::dvec3(header.rayDirection);
-    trace.node = header.result.y;
-    trace.flags = header.result.z;
-    trace.t = distance(header.hitPosition.w);
-    trace.position = world(header.hitPosition);
-    trace.normal = glm::dvec3(header.hitNormal);
-    trace.shadowOrigin = world(header.shadowOrigin);
-    trace.albedo = glm::vec3(header.albedo);
-    trace.sampleColor = glm::vec3(header.sampleColor);
-    trace.pixelColor = glm::vec3(header.pixelColor);
-    const std::byte* entries = bytes + sizeof header;
-    const auto entry = [&](std::size_t i) {
-        gpu::GpuTraceEntry<Real> e;
-        std::memcpy(&e, entries + i * sizeof e, sizeof e);
-        return e;
-    };
-    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
-        trace.candidates.push_back(distance(entry(i).values.x));
-    }
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        const gpu::GpuTraceEntry<Real> e = entry(scene.nodes.size() + i);
-        trace.lights.push_back(GpuTraceLight{e.status.x, double(e.values.x), double(e.values.y) * scale * scale,
-                                             double(e.values.z) * scale, glm::vec3(e.color)});
-    }
-    return trace;
-}
-
-template <typename Real>
-std::vector<std::byte> traceRequest(const Scene& scene, std::uint32_t x, std::uint32_t y, std::uint32_t sample) {
-    std::vector<std::byte> bytes(sizeof(gpu::GpuTraceHeader<Real>) +
-                                 (scene.nodes.size() + scene.lights.size()) * sizeof(gpu::GpuTraceEntry<Real>));
-    const glm::uvec4 request(x, y, sample, 0);
-    std::memcpy(bytes.data(), &request, sizeof request);
-    return bytes;
-}
-
 // One invocation traces a pixel: its loops cannot be split between dispatches (loop_budget.h).
 void requireTraceWithinLoopLimit(const RenderPlan& plan, const std::string& device) {
     if (plan.tracePasses > plan.loopPassLimit) {
@@ -475,15 +421,10 @@ std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) 
 GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,
                                       std::uint32_t sample) {
     requireTraceWithinLoopLimit(plan, context_.selected().name);
-    const bool f64 = plan.width == FloatWidth::F64;
-    const std::vector<std::byte> request =
-        f64 ? traceRequest<double>(scene, x, y, sample) : traceRequest<float>(scene, x, y, sample);
+    const std::vector<std::byte> request = traceRequest(scene, plan.width, x, y, sample);
     GpuPixelTrace trace;
     GpuRenderResult bands;
-    const auto unpack = [&](const Band& band) {
-        trace = f64 ? unpackTrace<double>(scene, band.trace, plan.placement)
-                    : unpackTrace<float>(scene, band.trace, plan.placement);
-    };
+    const auto unpack = [&](const Band& band) { trace = unpackTrace(scene, plan.width, band.trace, plan.placement); };
     renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, RowRange{}, request);
     trace.precision = plan.precision;
     trace.usedCandidateLists = bands.usedCandidateLists;

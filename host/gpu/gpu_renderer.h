@@ -11,6 +11,7 @@
 #include "layout/gpu_layout.h"
 #include "kernels/kernel_compiler.h"
 #include "precision/precision.h"
+#include "gpu/pixel_trace.h"
 #include "gpu/render_plan.h"
 #include "image/image.h"
 #include "image/image_io.h"
@@ -35,38 +36,6 @@ struct GpuTiming {
 // LinearClassesAndAov adds, from each pixel's first sample, the hit distance and the shading
 // normal (for `render --aov`).
 enum class GpuOutput { LinearAndClasses, Encoded8, LinearClassesAndAov };
-
-// One light at a traced sample, as the shader saw it.
-struct GpuTraceLight {
-    std::uint32_t status = gpu::TRACE_LIGHT_NOT_EVALUATED;  // gpu::TRACE_LIGHT_*
-    double cosTheta = 0;
-    double distanceSquared = 0;  // world units²
-    double shadowLength = 0;     // world units
-    glm::vec3 contribution{0};   // colour × intensity × cos θ / r²
-};
-
-// One pixel explained by the shader itself (OUTPUT_TRACE). Everything is converted back to
-// world units: the placement's eye is added back and lengths multiplied by its scale, in
-// double, from the shader's f32 or f64 values.
-struct GpuPixelTrace {
-    Precision precision = Precision::F32;
-    bool cameraRelative = true;
-    double scale = 1.0;  // the placement's power of two (1 for world placement)
-    glm::dvec3 rayOrigin{0};
-    glm::dvec3 rayDirection{0};
-    std::vector<double> candidates;  // per node: t in world units, +inf for a miss
-    std::uint32_t node = PixelClass::kBackground;
-    std::uint32_t flags = 0;  // as PixelClass::flags
-    double t = 0;
-    glm::dvec3 position{0};
-    glm::dvec3 normal{0};  // shading normal
-    glm::dvec3 shadowOrigin{0};
-    glm::vec3 albedo{0};
-    glm::vec3 sampleColor{0};  // the traced sample's linear colour
-    glm::vec3 pixelColor{0};   // the pixel's (average of its samples)
-    std::vector<GpuTraceLight> lights;
-    bool usedCandidateLists = false;  // the trace followed the candidate lists, as the scene's render does
-};
 
 struct GpuRenderResult {
     Image image;                      // LinearAndClasses
