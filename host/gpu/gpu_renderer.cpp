@@ -207,13 +207,14 @@ struct LeakIfAbandoned {
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes, KernelCache kernelCache)
+GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes, KernelCache kernelCache,
+                         KeptKernels kept)
     : context_(context),
       maxBandBytes_(maxBandBytes),
-      kernels_(std::move(kernelCache)),
+      kernels_(std::move(kernelCache), kept.generatedKernels),
       uniformScene_{createSetLayout(context.device(), true), nullptr},
       storageScene_{createSetLayout(context.device(), false), nullptr},
-      pipelines_(kKeptPipelines),
+      pipelines_(kept.pipelines),
       commandPool_(context.device(), vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                                context.queueFamily())),
       timestamps_(nullptr) {

@@ -60,7 +60,7 @@ public:
     static constexpr std::uint64_t kDefaultMaxBandBytes = std::uint64_t{256} << 20;
 
     explicit GpuRenderer(const VulkanContext& context, std::uint64_t maxBandBytes = kDefaultMaxBandBytes,
-                         KernelCache kernelCache = KernelCache(KernelCache::defaultDirectory()));
+                         KernelCache kernelCache = KernelCache(KernelCache::defaultDirectory()), KeptKernels kept = {});
     ~GpuRenderer();
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;

@@ -17,4 +17,11 @@ inline constexpr std::size_t kKeptPipelines = 16;
 // Generated kernels' SPIR-V, by source (the data-driven kernels are built in and always there).
 inline constexpr std::size_t kKeptGeneratedKernels = 16;
 
+// The bounds one renderer keeps to: these by default; more for a caller that knows it cycles
+// through more kernels than that (the bench's interleaved configurations).
+struct KeptKernels {
+    std::size_t pipelines = kKeptPipelines;
+    std::size_t generatedKernels = kKeptGeneratedKernels;
+};
+
 }  // namespace hexray::kernels
