@@ -18,10 +18,24 @@
 
 namespace hexray::cli {
 
+namespace {
+
+std::vector<std::string>& printedErrors() {
+    static std::vector<std::string> errors;
+    return errors;
+}
+
+}  // namespace
+
 void printError(const std::string& message) {
     // Where the text a message quotes is escaped already, this changes nothing; it catches any
     // that is not (a library's message quoting a path).
-    std::fprintf(stderr, "hexray: error: %s\n", printable(message).c_str());
+    printedErrors().push_back(printable(message));
+    std::fprintf(stderr, "hexray: error: %s\n", printedErrors().back().c_str());
+}
+
+const std::vector<std::string>& errorsPrinted() {
+    return printedErrors();
 }
 
 int exitCodeFor(VulkanFailure failure) {

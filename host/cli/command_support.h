@@ -5,6 +5,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "util/milliseconds_since.h"
 #include "cli/commands.h"
@@ -17,7 +18,10 @@ namespace hexray::cli {
 // reference, compare, AOVs): memory grows with the image's width, not its area.
 inline constexpr std::size_t kBandBytes = std::size_t{32} << 20;
 
+// Prints "hexray: error: …" on standard error and keeps the message for errorsPrinted().
 void printError(const std::string& message);
+// Every message printError has printed in this process, in order (for --json's "exit").
+const std::vector<std::string>& errorsPrinted();
 
 // The exit code for a Vulkan failure of this kind.
 int exitCodeFor(VulkanFailure failure);

@@ -60,6 +60,13 @@ protected:
         return result;
     }
 
+    // Checks a --json document (a path in the test's directory, or absolute) against
+    // docs/schemas/hexray-results.schema.json: exit code 0 and no output when it is valid.
+    RunResult validateJson(const std::string& document) const {
+        return shell("/usr/bin/python3 '" + sourcePath("tests/cli/validate_json.py").string() + "' '" +
+                     sourcePath("docs/schemas/hexray-results.schema.json").string() + "' '" + document + "'");
+    }
+
     // Starts hexray in the test's directory with every signal at its default action (a shell's
     // background job would ignore SIGINT and SIGQUIT) and `environment` ("NAME=value") added to
     // this process's; stdout and stderr go to the usual files.
