@@ -12,6 +12,7 @@ packages=(
   libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
   libssl-dev  # OpenSSL's libcrypto: SHA-256 of the kernel cache's files and the strips' pixels
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
+  python3-jsonschema  # validates every command's --json output against docs/schemas/ in the tests
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
   clang-format-14 clang-tidy-14  # ci/lint.sh: the house style
