@@ -75,4 +75,16 @@ void writeJson(const std::string& path, const nlohmann::json& document) {
     file.commit();
 }
 
+int finishJson(const std::string& path, nlohmann::json& document, int code) {
+    if (path.empty()) {
+        return code;
+    }
+    recordExit(document, code);
+    const int written = guarded([&] {
+        writeJson(path, document);
+        return int(kSuccess);
+    });
+    return written == kSuccess ? code : written;
+}
+
 }  // namespace hexray::cli

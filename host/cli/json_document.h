@@ -38,4 +38,9 @@ double processMilliseconds();
 // not at all (io/output_file.h).
 void writeJson(const std::string& path, const nlohmann::json& document);
 
+// The end of a command run with `--json PATH` (nothing when PATH is empty): records `code` and
+// writes the document. Returns `code`, or the failure's exit code (kOutputFailed) when the
+// document cannot be written.
+int finishJson(const std::string& path, nlohmann::json& document, int code);
+
 }  // namespace hexray::cli
