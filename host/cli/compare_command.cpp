@@ -337,8 +337,9 @@ void printComparison(const ComparisonRecord& record, const BandedComparison& com
 // all read (and checked) before any comparison.
 class ExpectationsInUse {
 public:
-    ExpectationsInUse(const CompareOptions& options, const std::vector<SceneFile>& files) {
-        if (options.noExpectations) {
+    ExpectationsInUse(const CompareOptions& options, const std::vector<SceneFile>& files)
+        : disabled_(options.noExpectations) {
+        if (disabled_) {
             return;
         }
         if (!options.expectationsPath.empty()) {
@@ -354,6 +355,9 @@ public:
     }
 
     const Expectations* forScene(const std::string& scenePath) const {
+        if (disabled_) {
+            return nullptr;
+        }
         if (named_) {
             return &*named_;
         }
@@ -374,6 +378,7 @@ public:
     }
 
 private:
+    bool disabled_;
     std::optional<Expectations> named_;
     std::map<std::string, Expectations> byPath_;
 };

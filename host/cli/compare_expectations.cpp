@@ -142,7 +142,8 @@ std::string_view expectedName(Expected expected) {
 
 Expectations readExpectations(const std::string& path) {
     const Json document = parseFile(path);
-    const JsonReader root(document, printable(path), "");
+    const std::string source = printable(path);  // the readers keep a reference to it
+    const JsonReader root(document, source, "");
     root.rejectUnknownKeys({"schema", "expectations"});
     const JsonReader schemaField = root.at("schema");
     const std::string schema = schemaField.text();
@@ -156,7 +157,7 @@ Expectations readExpectations(const std::string& path) {
     const JsonReader entries = root.at("expectations");  // the elements' parent: it must outlive them
     for (const JsonReader& entry : entries.elements()) {
         expectations.entries.push_back(readEntry(entry, scenes));
-        expectations.entries.back().place = printable(path) + ": " + displayPath(entry.path());
+        expectations.entries.back().place = source + ": " + displayPath(entry.path());
     }
     return expectations;
 }
