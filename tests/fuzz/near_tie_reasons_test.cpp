@@ -84,6 +84,40 @@ TEST(NearTieReasons, EdgesThroughTheEye) {
     EXPECT_EQ(reasonsOf(onTheEquator), "a checker edge of node 1 passes through the eye; ");
 }
 
+// Differential seed 151461335713: an eye 5e43 outside a sphere of radius 1e50 and 3e43 below its
+// equator, where the float atan blurs a checker edge over about 1.5e45 (1e-5 rad of the sphere):
+// all the eye sees of the sphere lies within that of the equator (half the image near-tied).
+Scene nearAHugeSpheresEquator() {
+    Scene scene;
+    scene.image.width = 32;
+    scene.image.height = 24;
+    scene.camera.position = {5e43, -3e43, 0.0};
+    scene.shaderNames = {"halves"};
+    scene.shaders = {CheckerShader{Color(1.0), Color(0.0), 2.2}};
+    scene.nodes = {Node{Sphere{{-1e50, 0.0, 0.0}, 1e50}, 0}};
+    return scene;
+}
+
+// The blur seen from the eye spans a pixel or more: a band of near-tied pixels along the edge. Against
+// the CPU reference (hexray compare --precision f64), the scene above with its eye 2e46 below the
+// equator is near-tied on 6 % of its pixels (the band is 4 pixels wide), at 8e46 on none.
+TEST(NearTieReasons, ASpheresEdgeBlurredOverPixelsByTheFloatAtan) {
+    const std::string blurred = "a checker edge of node 0 is blurred over pixels by float atan; ";
+    EXPECT_EQ(reasonsOf(nearAHugeSpheresEquator()), blurred);
+    Scene offTheEquator = nearAHugeSpheresEquator();
+    offTheEquator.camera.position.y = -2e46;
+    EXPECT_EQ(reasonsOf(offTheEquator), blurred);
+    offTheEquator.camera.position.y = -1e47;
+    EXPECT_EQ(reasonsOf(offTheEquator), "");
+    Scene farFromTheSphere = nearAHugeSpheresEquator();
+    farFromTheSphere.camera.position.x = 1e47;
+    EXPECT_EQ(reasonsOf(farFromTheSphere), "");
+    // Beside a meridian (here 90.2 degrees, 41 cells of 2.2), far off the equator.
+    Scene besideAMeridian = nearAHugeSpheresEquator();
+    besideAMeridian.camera.position = {-5.5593e45, -1e48, -3.4905e47};
+    EXPECT_EQ(reasonsOf(besideAMeridian), blurred);
+}
+
 // A light far from the plane's rounding but close to it against the scene's extent is on it.
 TEST(NearTieReasons, ALightNearAPlaneIsOnItAgainstTheScenesExtent) {
     Scene scene = clearScene();
