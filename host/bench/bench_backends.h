@@ -64,6 +64,8 @@ public:
     bool hasEmbree() const { return embree_ != nullptr; }
     std::string embreeVersion() const;
     Precision autoPrecision(const Scene& scene) const { return gpu_.resolve(scene, Precision::Auto); }
+    // The GPU renderer's pipelines made so far (GpuRenderer::pipelinesCreated).
+    std::uint64_t gpuPipelinesCreated() const { return gpu_.pipelinesCreated(); }
 
     // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree single rays", "embree 8-ray packets".
     std::string name(BenchBackend backend) const;

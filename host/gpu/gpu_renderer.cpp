@@ -274,6 +274,7 @@ const vk::raii::Pipeline& GpuRenderer::pipeline(std::span<const std::uint32_t> s
         return *found;
     }
     const SpecializationData data = specializationData(specialization, sceneValues, sceneSizes);
+    ++pipelinesCreated_;
     return pipelines_.insert(std::move(key),
                              createPipeline(context_.device(), bindings(layout).pipelineLayout, spirv, data));
 }

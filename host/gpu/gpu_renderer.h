@@ -113,6 +113,8 @@ public:
 
     // How many pipelines, and generated kernels' SPIR-V, are held now.
     std::size_t keptPipelines() const { return pipelines_.size(); }
+    // Pipelines made so far (kept or since dropped): a kernel made again after eviction counts again.
+    std::uint64_t pipelinesCreated() const { return pipelinesCreated_; }
     std::size_t keptGeneratedKernels() const { return kernels_.keptKernels(); }
 
 private:
@@ -169,6 +171,7 @@ private:
     SceneBindings uniformScene_;  // small scenes: scene data in uniform buffers
     SceneBindings storageScene_;  // larger ones: in storage buffers, with or without a BVH
     LruMap<PipelineKey, vk::raii::Pipeline> pipelines_;
+    std::uint64_t pipelinesCreated_ = 0;
     vk::raii::CommandPool commandPool_;
     vk::raii::QueryPool timestamps_;  // null when the queue cannot write timestamps
     double nanosecondsPerTick_ = 1.0;
