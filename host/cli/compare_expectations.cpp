@@ -48,8 +48,8 @@ bool matches(const std::vector<std::string>& patterns, const std::string& relati
 }
 
 ToleranceChanges readTolerance(const JsonReader& tolerance) {
-    tolerance.rejectUnknownKeys({"max_topology_mismatches", "max_bad_pixels_percent", "max_rmse_levels",
-                                 "max_ambiguous_percent"});
+    tolerance.rejectUnknownKeys(
+        {"max_topology_mismatches", "max_bad_pixels_percent", "max_rmse_levels", "max_ambiguous_percent"});
     ToleranceChanges changes;
     if (const auto value = tolerance.find("max_topology_mismatches")) {
         changes.maxTopologyMismatches = std::uint64_t(value->integer(0, std::numeric_limits<std::int64_t>::max()));
@@ -185,9 +185,9 @@ SceneExpectation expectationFor(const Expectations* expectations, const std::str
     if (expectations) {
         const std::string relative = relativeScenePath(expectations->directory, scenePath);
         for (const ExpectationEntry& entry : expectations->entries) {
-            const bool precisionApplies = entry.precisions.empty() || std::find(entry.precisions.begin(),
-                                                                                entry.precisions.end(),
-                                                                                used) != entry.precisions.end();
+            const bool precisionApplies =
+                entry.precisions.empty() ||
+                std::find(entry.precisions.begin(), entry.precisions.end(), used) != entry.precisions.end();
             if (!precisionApplies || !matches(entry.patterns, relative)) {
                 continue;
             }
@@ -243,7 +243,8 @@ bool onlyTooAmbiguous(const Verdict& verdict) {
 
 JudgedOutcome outcomeOf(const Verdict& verdict, bool judged, const SceneExpectation& expectation) {
     if (!judged) {
-        return {Outcome::NotJudged, "shown, not judged (the textbook formulation, kept to show what the robust one buys)"};
+        return {Outcome::NotJudged,
+                "shown, not judged (the textbook formulation, kept to show what the robust one buys)"};
     }
     const bool passed = verdict.passed();
     switch (expectation.expect) {
@@ -253,14 +254,15 @@ JudgedOutcome outcomeOf(const Verdict& verdict, bool judged, const SceneExpectat
             }
             return {Outcome::Failed, passed ? "passed, but " + expectation.place +
                                                   " expects it too ambiguous: narrow or remove that entry"
-                                            : "exceeded " + exceededLimits(verdict) + ", where " +
-                                                  expectation.place + " expects only the ambiguous share"};
+                                            : "exceeded " + exceededLimits(verdict) + ", where " + expectation.place +
+                                                  " expects only the ambiguous share"};
         case Expected::Fail:
             if (!passed) {
-                return {Outcome::Expected,
-                        "exceeded " + exceededLimits(verdict) + ", as " + expectation.place + " expects: " + expectation.why};
+                return {Outcome::Expected, "exceeded " + exceededLimits(verdict) + ", as " + expectation.place +
+                                               " expects: " + expectation.why};
             }
-            return {Outcome::Failed, "passed, but " + expectation.place + " expects a failure: narrow or remove that entry"};
+            return {Outcome::Failed,
+                    "passed, but " + expectation.place + " expects a failure: narrow or remove that entry"};
         default:
             return passed ? JudgedOutcome{Outcome::Passed, "within tolerance"}
                           : JudgedOutcome{Outcome::Failed, "exceeded " + exceededLimits(verdict)};

@@ -128,7 +128,8 @@ void writeJunit(const std::string& path, const std::vector<ComparisonRecord>& re
     out.start("testsuite");
     writeCounts(out);
     out.start("properties");
-    for (const auto& [name, value] : {std::pair<const char*, std::string>{"hexray", buildVersion()}, {"device", device}}) {
+    for (const auto& [name, value] :
+         {std::pair<const char*, std::string>{"hexray", buildVersion()}, {"device", device}}) {
         out.start("property");
         out.attribute("name", name);
         out.attribute("value", value);

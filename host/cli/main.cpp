@@ -137,6 +137,28 @@ void addMergeCommand(CLI::App& app, CommandLine& line) {
     command->add_option("pieces", line.merge.piecePaths, "Every piece, in any order")->required();
 }
 
+// compare's results for CI: the expectations file and the machine-readable outputs.
+void addCompareGateOptions(CLI::App& command, CompareOptions& compare) {
+    CLI::Option* expectations =
+        command
+            .add_option("--expectations", compare.expectationsPath,
+                        "Read tolerances and expected failures from this file instead of each scene's nearest "
+                        "hexray-expectations.json (docs/compare-expectations.md); command-line tolerances win")
+            ->check(NotEmpty());
+    command.add_flag("--no-expectations", compare.noExpectations, "Ignore every hexray-expectations.json")
+        ->excludes(expectations);
+    command
+        .add_option("--json", compare.jsonPath,
+                    "Write the results as JSON (- for standard output; "
+                    "docs/json-output.md)")
+        ->check(NotEmpty());
+    command
+        .add_option("--junit", compare.junitPath,
+                    "Write the results as JUnit XML: one test case per scene "
+                    "and precision")
+        ->check(NotEmpty());
+}
+
 void addCompareCommand(CLI::App& app, CommandLine& line) {
     CompareOptions& compare = line.compare;
     CLI::App* command = app.add_subcommand(
@@ -190,20 +212,7 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
                      "reference's decision margin as DIR/cpu/margin.exr")
         ->check(NotEmpty())
         ->check(AovDirectoryName());
-    CLI::Option* expectations =
-        command
-            ->add_option("--expectations", compare.expectationsPath,
-                         "Read tolerances and expected failures from this file instead of each scene's nearest "
-                         "hexray-expectations.json (docs/compare-expectations.md); command-line tolerances win")
-            ->check(NotEmpty());
-    command->add_flag("--no-expectations", compare.noExpectations, "Ignore every hexray-expectations.json")
-        ->excludes(expectations);
-    command->add_option("--json", compare.jsonPath, "Write the results as JSON (- for standard output; "
-                                                    "docs/json-output.md)")
-        ->check(NotEmpty());
-    command->add_option("--junit", compare.junitPath, "Write the results as JUnit XML: one test case per scene "
-                                                      "and precision")
-        ->check(NotEmpty());
+    addCompareGateOptions(*command, compare);
 }
 
 // The tolerance options given on compare's command line, which win over an expectations file's.

@@ -41,7 +41,8 @@ protected:
     static std::string lastLine(const std::string& text) {
         const std::size_t end = text.find_last_not_of('\n');
         const std::size_t start = text.rfind('\n', end);
-        return text.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
+        return text.substr(start == std::string::npos ? 0 : start + 1,
+                           end - (start == std::string::npos ? 0 : start + 1) + 1);
     }
 };
 
@@ -51,8 +52,7 @@ constexpr const char* kExpectLightOnPlaneAmbiguous = R"({"schema": "hexray-expec
     {"scenes": ["light-on-plane.json"], "expect": "too_ambiguous", "why": "a light in the floor"}]})";
 
 TEST_F(CompareGateCliTest, TheShippedScenesPassWithTheirExpectations) {
-    const test::RunResult run =
-        hexray("compare --all " + scene("") + " --json out.json --junit out.xml");
+    const test::RunResult run = hexray("compare --all " + scene("") + " --json out.json --junit out.xml");
     EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
     EXPECT_EQ(lastLine(run.out).rfind("PASS: ", 0), 0u) << lastLine(run.out);
     EXPECT_NE(run.out.find("| hard/light-on-plane | f32 | ✓ |"), std::string::npos) << run.out;
