@@ -45,7 +45,6 @@ std::string differences(const StripStamp& piece, const StripStamp& first) {
             std::to_string(first.samplesPerPixel));
     compare(piece.renderer == first.renderer, "renderer", piece.renderer, first.renderer);
     compare(piece.scene == first.scene, "scene file", piece.scene, first.scene);
-    compare(piece.version == first.version, "hexray", piece.version, first.version);
     std::string text;
     for (const std::string& part : parts)
         text += (text.empty() ? "" : ", ") + part;
@@ -121,6 +120,12 @@ std::vector<StripPiece> openPieces(const std::vector<std::string>& paths, ImageF
             first = piece.stamp();
             firstPath = path;
             slots.resize(first->strip.count);
+        }
+        if (piece.stamp().version != first->version) {
+            throw StripError(printable(path) + ": rendered by hexray " + printable(piece.stamp().version) + ", but " +
+                             printable(firstPath) + " by hexray " + printable(first->version) +
+                             ": pieces of two builds are not merged (another build may render other pixels); "
+                             "render them again with one");
         }
         if (!piece.stamp().sameImage(*first)) {
             throw StripError(printable(path) + ": a strip of another image than " + printable(firstPath) + ": " +
