@@ -14,9 +14,11 @@
 #include "gpu/gpu_renderer.h"
 #include "image/aov.h"
 #include "image/image_io.h"
+#include "image/provenance.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
+#include "util/build_version.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -116,23 +118,50 @@ void printFailedRow(const std::string& scene) {
                 printable(scene).c_str());
 }
 
+// What the GPU render of a comparison records (image/provenance.h); its heat map and mask record
+// the backend "gpu vs cpu", the CPU reference's AOVs the CPU's.
+Provenance gpuProvenance(const Scene& scene, const std::string& sceneIdentity, const std::string& device,
+                         Precision precision) {
+    return Provenance{.version = hexrayVersion(),
+                      .gitRevision = hexrayGitRevision(),
+                      .image = {},  // each file names its own
+                      .scene = sceneIdentity,
+                      .backend = "gpu",
+                      .device = device,
+                      .precision = std::string(precisionName(precision)),
+                      .samplesPerPixel = scene.image.samplesPerPixel,
+                      .width = scene.image.width,
+                      .height = scene.image.height};
+}
+
+Provenance withImage(Provenance provenance, const std::string& image, const std::string& backend) {
+    provenance.image = image;
+    provenance.backend = backend;
+    if (backend == "cpu") {
+        provenance.device = "cpu reference";
+        provenance.precision = std::string(precisionName(Precision::F64));
+    }
+    return provenance;
+}
+
 // The files a single-scene comparison writes besides its report: the heat map, the mask and
 // both backends' AOVs, opened before the renders and written a band at a time.
 class BandOutputs {
 public:
-    BandOutputs(const CompareOptions& options, const Scene& scene) : options_(options) {
+    BandOutputs(const CompareOptions& options, const Scene& scene, const Provenance& gpu) : options_(options) {
         const std::uint32_t width = scene.image.width;
         const std::uint32_t height = scene.image.height;
         if (!options.diffPath.empty()) {
-            diff_.emplace(options.diffPath, width, height);
+            diff_.emplace(options.diffPath, width, height, withImage(gpu, "diff heat map", "gpu vs cpu").notes());
         }
         if (!options.maskPath.empty()) {
-            mask_.emplace(options.maskPath, width, height);
+            mask_.emplace(options.maskPath, width, height, withImage(gpu, "mismatch mask", "gpu vs cpu").notes());
         }
         if (!options.aovDirectory.empty()) {
             const fs::path directory(options.aovDirectory);
-            gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()});
-            cpuAovs_.emplace(directory / "cpu", AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin});
+            gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()}, gpu);
+            cpuAovs_.emplace(directory / "cpu", AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin},
+                             withImage(gpu, "", "cpu"));
         }
     }
 
@@ -248,10 +277,11 @@ void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& fil
 }
 
 // A table's scene that cannot be loaded is a failed row, not the end of the table.
-std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table) {
+std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table,
+                                       std::string& identity) {
     try {
         requireReadable(file);
-        return loadScene(file.path, image);
+        return loadScene(file.path, image, &identity);
     } catch (const SceneError& error) {
         if (!table) {
             throw;
@@ -319,12 +349,14 @@ Row rowFor(const BandedComparison& compared, Precision automatic, const CompareO
 // Compares one scene in each precision asked for: a table row, or the detailed report (and its
 // files), for each.
 void compareScene(GpuRenderer& renderer, const VulkanContext& context, const SceneFile& file, const Scene& scene,
-                  const CompareOptions& options, bool table, Verdicts& verdicts) {
+                  const std::string& sceneIdentity, const CompareOptions& options, bool table, Verdicts& verdicts) {
     const Precision automatic = renderer.resolve(scene, Precision::Auto);
     for (const Precision requested : precisionsToCompare(options, context)) {
         std::optional<BandOutputs> outputs;
         if (!table) {
-            outputs.emplace(options, scene);
+            outputs.emplace(
+                options, scene,
+                gpuProvenance(scene, sceneIdentity, context.selected().name, renderer.resolve(scene, requested)));
         }
         const BandedComparison compared =
             compareInBands(renderer, file.path, scene, requested, options.threads, outputs ? &*outputs : nullptr);
@@ -361,10 +393,11 @@ int runCompare(const CompareOptions& options) {
         }
         Verdicts verdicts;
         for (const SceneFile& file : files) {
-            const std::optional<Scene> scene = loadForComparison(file, options.image, table);
+            std::string sceneIdentity;
+            const std::optional<Scene> scene = loadForComparison(file, options.image, table, sceneIdentity);
             verdicts.allLoaded = verdicts.allLoaded && scene.has_value();
             if (scene) {
-                compareScene(renderer, context, file, *scene, options, table, verdicts);
+                compareScene(renderer, context, file, *scene, sceneIdentity, options, table, verdicts);
             }
         }
         if (table) {

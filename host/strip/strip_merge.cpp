@@ -6,6 +6,7 @@
 #include "image/exr_row_writer.h"
 #include "image/image_io.h"
 #include "io/open_file_limit.h"
+#include "strip/strip_provenance.h"
 #include "util/printable.h"
 
 namespace hexray::inline strip {
@@ -76,7 +77,7 @@ StripPiece openPiece(const std::string& path, ImageFormat format) {
 
 void mergePngs(const std::string& output, std::vector<StripPiece>& strips) {
     const StripStamp& stamp = strips.front().stamp();
-    PngRowWriter writer(output, stamp.width, stamp.height);
+    PngRowWriter writer(output, stamp.width, stamp.height, mergedProvenance(stamp).notes());
     std::vector<std::uint8_t> rows;
     for (StripPiece& piece : strips) {
         for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
@@ -91,7 +92,7 @@ void mergePngs(const std::string& output, std::vector<StripPiece>& strips) {
 
 void mergeExrs(const std::string& output, std::vector<StripPiece>& strips) {
     const StripStamp& stamp = strips.front().stamp();
-    ExrRowWriter writer(output, stamp.width, stamp.height, kExrChannels);
+    ExrRowWriter writer(output, stamp.width, stamp.height, kExrChannels, mergedProvenance(stamp).notes());
     std::vector<float> red, green, blue;
     for (StripPiece& piece : strips) {
         for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
