@@ -20,9 +20,11 @@
 #include "gpu/gpu_renderer.h"
 #include "image/aov.h"
 #include "image/image_io.h"
+#include "image/provenance.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
+#include "util/build_version.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -135,23 +137,50 @@ void printCountLine(const OutcomeCounts& counts) {
     std::printf("\n");
 }
 
+// What the GPU render of a comparison records (image/provenance.h); its heat map and mask record
+// the backend "gpu vs cpu", the CPU reference's AOVs the CPU's.
+Provenance gpuProvenance(const Scene& scene, const std::string& sceneIdentity, const std::string& device,
+                         Precision precision) {
+    return Provenance{.version = hexrayVersion(),
+                      .gitRevision = hexrayGitRevision(),
+                      .image = {},  // each file names its own
+                      .scene = sceneIdentity,
+                      .backend = "gpu",
+                      .device = device,
+                      .precision = std::string(precisionName(precision)),
+                      .samplesPerPixel = scene.image.samplesPerPixel,
+                      .width = scene.image.width,
+                      .height = scene.image.height};
+}
+
+Provenance withImage(Provenance provenance, const std::string& image, const std::string& backend) {
+    provenance.image = image;
+    provenance.backend = backend;
+    if (backend == "cpu") {
+        provenance.device = "cpu reference";
+        provenance.precision = std::string(precisionName(Precision::F64));
+    }
+    return provenance;
+}
+
 // The files a single-scene comparison writes besides its report: the heat map, the mask and
 // both backends' AOVs, opened before the renders and written a band at a time.
 class BandOutputs {
 public:
-    BandOutputs(const CompareOptions& options, const Scene& scene) : options_(options) {
+    BandOutputs(const CompareOptions& options, const Scene& scene, const Provenance& gpu) : options_(options) {
         const std::uint32_t width = scene.image.width;
         const std::uint32_t height = scene.image.height;
         if (!options.diffPath.empty()) {
-            diff_.emplace(options.diffPath, width, height);
+            diff_.emplace(options.diffPath, width, height, withImage(gpu, "diff heat map", "gpu vs cpu").notes());
         }
         if (!options.maskPath.empty()) {
-            mask_.emplace(options.maskPath, width, height);
+            mask_.emplace(options.maskPath, width, height, withImage(gpu, "mismatch mask", "gpu vs cpu").notes());
         }
         if (!options.aovDirectory.empty()) {
             const fs::path directory(options.aovDirectory);
-            gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()});
-            cpuAovs_.emplace(directory / "cpu", AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin});
+            gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()}, gpu);
+            cpuAovs_.emplace(directory / "cpu", AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin},
+                             withImage(gpu, "", "cpu"));
         }
     }
 
@@ -277,11 +306,12 @@ void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& fil
 }
 
 // A scene that cannot be loaded is a failed record (and a table's row), not the end of the command.
+// `identity`: the scene file's (strip/strip_stamp.h), for the images' provenance.
 std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table,
-                                       std::vector<ComparisonRecord>& records) {
+                                       std::vector<ComparisonRecord>& records, std::string& identity) {
     try {
         requireReadable(file);
-        return loadScene(file.path, image);
+        return loadScene(file.path, image, &identity);
     } catch (const SceneError& error) {
         printError(error.what());
         if (table) {
@@ -419,12 +449,15 @@ struct CompareSession {
 
 // Compares one scene in each precision asked for: a table row, or the detailed report (and its
 // files), for each.
-void compareScene(const CompareSession& session, const SceneFile& file, const Scene& scene) {
+void compareScene(const CompareSession& session, const SceneFile& file, const Scene& scene,
+                  const std::string& sceneIdentity) {
     const Precision automatic = session.renderer.resolve(scene, Precision::Auto);
     for (const Precision requested : precisionsToCompare(session.options, session.context)) {
         std::optional<BandOutputs> outputs;
         if (!session.table) {
-            outputs.emplace(session.options, scene);
+            outputs.emplace(session.options, scene,
+                            gpuProvenance(scene, sceneIdentity, session.context.selected().name,
+                                          session.renderer.resolve(scene, requested)));
         }
         const BandedComparison compared = compareInBands(session.renderer, file.path, scene, requested,
                                                          session.options.threads, outputs ? &*outputs : nullptr);
@@ -486,10 +519,11 @@ int runCompare(const CompareOptions& options) {
         const CompareSession session{options, renderer, context, expectations, table, records};
         bool allLoaded = true;
         for (const SceneFile& file : files) {
-            const std::optional<Scene> scene = loadForComparison(file, options.image, table, records);
+            std::string sceneIdentity;
+            const std::optional<Scene> scene = loadForComparison(file, options.image, table, records, sceneIdentity);
             allLoaded = allLoaded && scene.has_value();
             if (scene) {
-                compareScene(session, file, *scene);
+                compareScene(session, file, *scene, sceneIdentity);
             }
         }
         const OutcomeCounts counts = countOutcomes(records);

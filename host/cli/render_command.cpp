@@ -19,9 +19,11 @@
 #include "kernels/shader_compiler.h"
 #include "image/aov.h"
 #include "image/image_row_writer.h"
+#include "image/provenance.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene_loader.h"
+#include "strip/strip_provenance.h"
 #include "strip/strip_stamp.h"
 #include "util/build_version.h"
 #include "util/printable.h"
@@ -35,34 +37,55 @@ struct SceneRender {
     const RenderTarget& target;
     Scene scene;
     RowRange rows;              // the whole image, or the strip's rows
-    std::string sceneIdentity;  // strips only: recorded in the piece
+    std::string sceneIdentity;  // recorded in the image, and in a strip's stamp
 
     SceneRender(const RenderOptions& renderOptions, const RenderTarget& renderTarget)
         : options(renderOptions), target(renderTarget) {
-        scene = loadScene(target.scenePath, options.image, options.strip ? &sceneIdentity : nullptr);
+        scene = loadScene(target.scenePath, options.image, &sceneIdentity);
         rows = options.strip ? stripRows(*options.strip, scene.image.height) : RowRange{0, scene.image.height};
     }
 
-    // Opens the output; a strip's records `renderer`, since pieces of one image must share it, and
-    // the digest of its stamp and pixels, so that merge can prove it reads what was rendered.
-    void open(std::optional<ImageRowWriter>& writer, const std::string& renderer) const {
+    // What the image records of how it was made (image/provenance.h).
+    Provenance provenance(const std::string& backend, const std::string& device, const std::string& precision) const {
+        return Provenance{.version = hexrayVersion(),
+                          .gitRevision = hexrayGitRevision(),
+                          .image = "render",
+                          .scene = sceneIdentity,
+                          .backend = backend,
+                          .device = device,
+                          .precision = precision,
+                          .samplesPerPixel = scene.image.samplesPerPixel,
+                          .width = scene.image.width,
+                          .height = scene.image.height};
+    }
+
+    // Opens the output, recording `provenance`; a strip's also records its stamp, since pieces of
+    // one image must share it, and the digest of its stamp and pixels, so that merge can prove it
+    // reads what was rendered.
+    void open(std::optional<ImageRowWriter>& writer, const Provenance& provenance) const {
         std::vector<ImageNote> notes;
         std::optional<DigestNote> digest;
         if (options.strip) {
-            const StripStamp stamp{*options.strip, scene.image.width, scene.image.height, scene.image.samplesPerPixel,
-                                   renderer,       sceneIdentity,     buildVersion()};
+            const StripStamp stamp{*options.strip,
+                                   scene.image.width,
+                                   scene.image.height,
+                                   scene.image.samplesPerPixel,
+                                   stripRenderer(provenance),
+                                   sceneIdentity,
+                                   buildVersion()};
             const std::string text = formatStripStamp(stamp);
             notes.push_back({kStripStampKey, text});
             digest = DigestNote{kStripDigestKey, text};
         }
-        writer.emplace(target.outputPath, *target.format, scene.image.width, rows.count, scene.image.encoding, notes,
-                       digest);
+        writer.emplace(target.outputPath, *target.format, scene.image.width, rows.count, scene.image.encoding,
+                       provenance, notes, digest);
     }
 
     // With --aov, starts the AOV set.
-    void stageAovs(std::optional<StagedAovs>& aovs) const {
+    void stageAovs(std::optional<StagedAovs>& aovs, const Provenance& provenance) const {
         if (!options.aovDirectory.empty()) {
-            aovs.emplace(options.aovDirectory, AovLayout{scene.image.width, scene.image.height, scene.lights.size()});
+            aovs.emplace(options.aovDirectory, AovLayout{scene.image.width, scene.image.height, scene.lights.size()},
+                         provenance);
         }
     }
 
@@ -145,9 +168,10 @@ std::string renderOnGpu(const SceneRender& job, GpuSession& gpu, std::optional<I
     }
     const std::string device = gpu.context().selected().name;
     const std::string precision(precisionName(plan.precision));
-    job.open(writer, "gpu " + precision + " on " + device);
+    const Provenance provenance = job.provenance("gpu", device, precision);
+    job.open(writer, provenance);
     const GpuRenderResult result = renderImageOnGpu(job, gpu, plan, *writer);
-    job.stageAovs(aovs);
+    job.stageAovs(aovs, provenance);
     if (aovs) {
         gpu.linearRenderer().renderLinearRows(
             job.scene, plan, GpuOutput::LinearClassesAndAov, [&](std::uint32_t, const GpuRenderResult& band) {
@@ -179,8 +203,9 @@ std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& w
                         std::optional<StagedAovs>& aovs) {
     const CpuBandRenderer renderer(job.scene, job.options.threads, Acceleration::Auto,
                                    !job.options.aovDirectory.empty());
-    job.open(writer, "cpu reference");
-    job.stageAovs(aovs);
+    const Provenance provenance = job.provenance("cpu", "cpu reference", std::string(precisionName(Precision::F64)));
+    job.open(writer, provenance);
+    job.stageAovs(aovs, provenance);
     Progress progress = job.progress();
     const std::uint32_t bandRows = cpuBandRows(renderer, job.rows.count);
     CpuRender band;

@@ -45,7 +45,8 @@ bool isAovFileName(const std::string& name) {
            std::all_of(stem.begin() + light.size(), stem.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
-StagedAovs::StagedAovs(const fs::path& directory, const AovLayout& layout) : directory_(directory) {
+StagedAovs::StagedAovs(const fs::path& directory, const AovLayout& layout, const Provenance& provenance)
+    : directory_(directory) {
     try {
         createDirectory();
         removeStaleTemporaries(directory_);
@@ -59,7 +60,7 @@ StagedAovs::StagedAovs(const fs::path& directory, const AovLayout& layout) : dir
         removal_ = std::move(staging.removal);
         stagingLock_ = staging.descriptor;
         holdAsLive(stagingLock_);
-        writer_ = std::make_unique<AovSetWriter>(staging_, layout);
+        writer_ = std::make_unique<AovSetWriter>(staging_, layout, provenance);
     } catch (...) {
         discard();  // a constructor that throws gets no destructor call
         throw;

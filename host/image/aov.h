@@ -27,6 +27,7 @@
 #include <glm/vec3.hpp>
 
 #include "image/pixel_class.h"
+#include "image/provenance.h"
 
 namespace hexray::inline io {
 class RemovedOnSignal;  // io/removed_on_signal.h
@@ -69,7 +70,8 @@ bool isAovFileName(const std::string& name);
 class StagedAovs {
 public:
     // Creates `directory` if needed; throws OutputError when it or a file cannot be written.
-    StagedAovs(const std::filesystem::path& directory, const AovLayout& layout);
+    // Every file records `provenance` (aov_set_writer.h).
+    StagedAovs(const std::filesystem::path& directory, const AovLayout& layout, const Provenance& provenance);
     ~StagedAovs();
     StagedAovs(const StagedAovs&) = delete;
     StagedAovs& operator=(const StagedAovs&) = delete;

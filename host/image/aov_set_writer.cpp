@@ -80,8 +80,9 @@ bool isBackground(const PixelClass& pixel) {
 
 }  // namespace
 
-AovSetWriter::AovSetWriter(const std::filesystem::path& directory, const AovLayout& layout)
-    : directory_(directory), layout_(layout) {
+AovSetWriter::AovSetWriter(const std::filesystem::path& directory, const AovLayout& layout,
+                           const Provenance& provenance)
+    : directory_(directory), layout_(layout), provenance_(provenance) {
     open("depth", {"Y"}, false);
     open("normal", {"R", "G", "B"});
     open("object-id", {"Y"});
@@ -96,12 +97,20 @@ AovSetWriter::AovSetWriter(const std::filesystem::path& directory, const AovLayo
 
 AovSetWriter::~AovSetWriter() = default;
 
+std::vector<ImageNote> AovSetWriter::notesFor(const std::string& image) const {
+    Provenance provenance = provenance_;
+    provenance.image = image;
+    return provenance.notes();
+}
+
 void AovSetWriter::open(const std::string& name, const std::vector<std::string>& channels, bool withPreview) {
     File file{name,
-              std::make_unique<ExrRowWriter>(directory_ / (name + ".exr"), layout_.width, layout_.height, channels),
+              std::make_unique<ExrRowWriter>(directory_ / (name + ".exr"), layout_.width, layout_.height, channels,
+                                             notesFor("aov " + name)),
               nullptr};
     if (withPreview) {
-        file.preview = std::make_unique<PngRowWriter>(directory_ / (name + ".png"), layout_.width, layout_.height);
+        file.preview = std::make_unique<PngRowWriter>(directory_ / (name + ".png"), layout_.width, layout_.height,
+                                                      notesFor("aov " + name + " preview"));
     }
     files_.push_back(std::move(file));
 }
@@ -198,7 +207,7 @@ void AovSetWriter::writeMargins(const AovBand& band) {
 void AovSetWriter::drawDepthPreview() {
     const std::filesystem::path depth = directory_ / "depth.exr";
     ExrRowReader reader(depth);
-    PngRowWriter preview(directory_ / "depth.png", layout_.width, layout_.height);
+    PngRowWriter preview(directory_ / "depth.png", layout_.width, layout_.height, notesFor("aov depth preview"));
     // Log scale: a floor reaches to the horizon, which would flatten a linear ramp.
     const double range = farthest_ > nearest_ ? std::log(double(farthest_) / nearest_) : 1.0;
     const std::uint32_t bandRows =

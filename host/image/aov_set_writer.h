@@ -13,13 +13,15 @@
 #include "image/aov.h"
 #include "image/exr_row_writer.h"
 #include "image/image_io.h"
+#include "image/provenance.h"
 
 namespace hexray::inline image {
 
 class AovSetWriter {
 public:
-    // Opens every file; throws OutputError when one cannot be created.
-    AovSetWriter(const std::filesystem::path& directory, const AovLayout& layout);
+    // Opens every file; throws OutputError when one cannot be created. Each records `provenance`,
+    // its image named for the AOV ("aov depth", "aov depth preview").
+    AovSetWriter(const std::filesystem::path& directory, const AovLayout& layout, const Provenance& provenance);
     ~AovSetWriter();
     AovSetWriter(const AovSetWriter&) = delete;
     AovSetWriter& operator=(const AovSetWriter&) = delete;
@@ -44,9 +46,11 @@ private:
     void writeLights(const AovBand& band);
     void writeMargins(const AovBand& band);
     void drawDepthPreview();
+    std::vector<ImageNote> notesFor(const std::string& image) const;
 
     std::filesystem::path directory_;
     AovLayout layout_;
+    Provenance provenance_;
     std::vector<File> files_;  // depth, normal, object-id, light-0, light-1, ..., margin
     float nearest_ = std::numeric_limits<float>::infinity();
     float farthest_ = 0.0f;

@@ -12,21 +12,22 @@ const std::string kDigestPlaceholder(kPixelDigestHexLength, '-');
 }  // namespace
 
 ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, ImageFormat format, std::uint32_t width,
-                               std::uint32_t height, Encoding encoding, const std::vector<ImageNote>& notes,
-                               const std::optional<DigestNote>& digest)
+                               std::uint32_t height, Encoding encoding, const Provenance& provenance,
+                               const std::vector<ImageNote>& notes, const std::optional<DigestNote>& digest)
     : encoding_(encoding) {
     if (digest) {
         digestKey_ = digest->key;
         digest_.emplace(digest->preamble);
     }
+    std::vector<ImageNote> headerNotes = provenance.notes();
+    headerNotes.insert(headerNotes.end(), notes.begin(), notes.end());
     if (format == ImageFormat::Exr) {
-        std::vector<ImageNote> headerNotes = notes;
         if (digest) {
             headerNotes.push_back({digest->key, kDigestPlaceholder});
         }
         exr_.emplace(path, width, height, std::vector<std::string>{"R", "G", "B"}, headerNotes);
     } else {
-        png_.emplace(path, width, height, notes);
+        png_.emplace(path, width, height, headerNotes);
     }
 }
 

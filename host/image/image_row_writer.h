@@ -15,6 +15,7 @@
 #include "image/image_format.h"
 #include "image/image_io.h"
 #include "image/pixel_digest.h"
+#include "image/provenance.h"
 
 namespace hexray::inline image {
 
@@ -28,9 +29,10 @@ struct DigestNote {
 
 class ImageRowWriter {
 public:
-    // `encoding`: how linear rows become a PNG's 8 bits. Throws OutputError.
+    // `encoding`: how linear rows become a PNG's 8 bits; `provenance` is recorded before `notes`.
+    // Throws OutputError.
     ImageRowWriter(const std::filesystem::path& path, ImageFormat format, std::uint32_t width, std::uint32_t height,
-                   Encoding encoding, const std::vector<ImageNote>& notes = {},
+                   Encoding encoding, const Provenance& provenance, const std::vector<ImageNote>& notes = {},
                    const std::optional<DigestNote>& digest = std::nullopt);
 
     // Whether the format keeps linear colour (OpenEXR): then only writeLinear may be used.

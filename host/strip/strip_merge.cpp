@@ -6,6 +6,7 @@
 #include "image/exr_row_writer.h"
 #include "image/image_io.h"
 #include "io/open_file_limit.h"
+#include "strip/strip_provenance.h"
 #include "util/printable.h"
 
 namespace hexray::inline strip {
@@ -45,7 +46,6 @@ std::string differences(const StripStamp& piece, const StripStamp& first) {
             std::to_string(first.samplesPerPixel));
     compare(piece.renderer == first.renderer, "renderer", piece.renderer, first.renderer);
     compare(piece.scene == first.scene, "scene file", piece.scene, first.scene);
-    compare(piece.version == first.version, "hexray", piece.version, first.version);
     std::string text;
     for (const std::string& part : parts)
         text += (text.empty() ? "" : ", ") + part;
@@ -77,7 +77,7 @@ StripPiece openPiece(const std::string& path, ImageFormat format) {
 
 void mergePngs(const std::string& output, std::vector<StripPiece>& strips) {
     const StripStamp& stamp = strips.front().stamp();
-    PngRowWriter writer(output, stamp.width, stamp.height);
+    PngRowWriter writer(output, stamp.width, stamp.height, mergedProvenance(stamp).notes());
     std::vector<std::uint8_t> rows;
     for (StripPiece& piece : strips) {
         for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
@@ -92,7 +92,7 @@ void mergePngs(const std::string& output, std::vector<StripPiece>& strips) {
 
 void mergeExrs(const std::string& output, std::vector<StripPiece>& strips) {
     const StripStamp& stamp = strips.front().stamp();
-    ExrRowWriter writer(output, stamp.width, stamp.height, kExrChannels);
+    ExrRowWriter writer(output, stamp.width, stamp.height, kExrChannels, mergedProvenance(stamp).notes());
     std::vector<float> red, green, blue;
     for (StripPiece& piece : strips) {
         for (std::uint32_t done = 0; done < piece.rowCount(); done += kRowsAtATime) {
@@ -121,6 +121,12 @@ std::vector<StripPiece> openPieces(const std::vector<std::string>& paths, ImageF
             first = piece.stamp();
             firstPath = path;
             slots.resize(first->strip.count);
+        }
+        if (piece.stamp().version != first->version) {
+            throw StripError(printable(path) + ": rendered by hexray " + printable(piece.stamp().version) + ", but " +
+                             printable(firstPath) + " by hexray " + printable(first->version) +
+                             ": pieces of two builds are not merged (another build may render other pixels); "
+                             "render them again with one");
         }
         if (!piece.stamp().sameImage(*first)) {
             throw StripError(printable(path) + ": a strip of another image than " + printable(firstPath) + ": " +

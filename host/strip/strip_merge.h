@@ -20,8 +20,9 @@ namespace hexray::inline strip {
 std::vector<StripPiece> openPieces(const std::vector<std::string>& paths, ImageFormat format);
 
 // Writes the image of `strips` (openPieces') to `output` (atomically, see io/output_file.h), in
-// the strips' format. Throws StripError naming a piece whose pixels are not what it recorded, and
-// then no output is left.
+// the strips' format, recording what their stamps share (mergedProvenance, strip_provenance.h).
+// Throws StripError naming a piece whose pixels are not what it recorded, and then no output is
+// left.
 void mergePieces(const std::string& output, std::vector<StripPiece>& strips);
 
 // Both, in the format `output`'s name asks for. Returns the stamp of the first strip.

@@ -45,7 +45,7 @@ struct AovValues {
     }
 
     std::vector<fs::path> commitTo(const fs::path& directory, std::uint32_t rowsPerBand) const {
-        StagedAovs staged(directory, layout);
+        StagedAovs staged(directory, layout, {});
         writeTo(staged, rowsPerBand);
         return staged.commit();
     }
@@ -114,7 +114,7 @@ TEST_F(AovTest, NothingAppearsBeforeCommitAndAnUncommittedSetLeavesNoTrace) {
     fs::create_directories(dir_ / "aov");
     std::ofstream(dir_ / "aov" / "depth.exr") << "an earlier render's";
     {
-        StagedAovs staged(dir_ / "aov", tinySet(2).layout);
+        StagedAovs staged(dir_ / "aov", tinySet(2).layout, {});
         tinySet(2).writeTo(staged, 1);
         // Only the hidden staging directory is new; the earlier file is untouched.
         const std::vector<std::string> names = namesIn(dir_ / "aov");
@@ -129,7 +129,7 @@ TEST_F(AovTest, NothingAppearsBeforeCommitAndAnUncommittedSetLeavesNoTrace) {
 
 TEST_F(AovTest, AnUncommittedSetRemovesTheDirectoriesItCreated) {
     {
-        StagedAovs staged(dir_ / "new" / "aov", tinySet(1).layout);
+        StagedAovs staged(dir_ / "new" / "aov", tinySet(1).layout, {});
         EXPECT_TRUE(fs::is_directory(dir_ / "new" / "aov"));
     }
     EXPECT_TRUE(fs::is_empty(dir_));
@@ -137,7 +137,7 @@ TEST_F(AovTest, AnUncommittedSetRemovesTheDirectoriesItCreated) {
 
 TEST_F(AovTest, ABandOfTheWrongSizeIsRefusedAndLeavesNoStagingDirectory) {
     {
-        StagedAovs staged(dir_ / "aov", tinySet(1).layout);
+        StagedAovs staged(dir_ / "aov", tinySet(1).layout, {});
         AovValues wrong = tinySet(1);
         wrong.depth.push_back(1.0f);  // one value too many
         EXPECT_THROW(staged.writeRows({1, wrong.depth, wrong.normals, wrong.classes, {}}), std::invalid_argument);

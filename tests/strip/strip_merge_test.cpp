@@ -32,7 +32,7 @@ protected:
     std::string writePiece(const std::string& name, const StripStamp& stamp, std::uint8_t level = 0) const {
         const std::string path = (dir_ / name).string();
         const std::string text = formatStripStamp(stamp);
-        ImageRowWriter writer(path, ImageFormat::Png, stamp.width, stamp.rows().count, Encoding::Srgb,
+        ImageRowWriter writer(path, ImageFormat::Png, stamp.width, stamp.rows().count, Encoding::Srgb, {},
                               {{kStripStampKey, text}}, DigestNote{kStripDigestKey, text});
         const std::vector<std::uint8_t> row(std::size_t(stamp.width) * 3, level);
         for (std::uint32_t y = 0; y < stamp.rows().count; ++y) {
