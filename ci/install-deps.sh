@@ -10,8 +10,10 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   glslang-dev spirv-tools  # glslang as a library: generated kernels are compiled at run time
   libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  libxml2-dev  # compare --junit: the XML writer
   libssl-dev  # OpenSSL's libcrypto: SHA-256 of the kernel cache's files and the strips' pixels
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
+  python3-lxml  # validates compare --junit output against tests/cli/junit.xsd
   python3-jsonschema  # validates every command's --json output against docs/schemas/ in the tests
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers

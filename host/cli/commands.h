@@ -73,6 +73,12 @@ struct CompareOptions {
     unsigned threads = 0;
     std::string maskPath;      // empty: no mismatch mask (single scene only)
     std::string aovDirectory;  // empty: no AOVs; else <dir>/gpu, <dir>/cpu (with the margin)
+    // The tolerance options given on the command line: they win over the expectations file's.
+    ToleranceChanges toleranceGiven;
+    std::string expectationsPath;  // empty: each scene's nearest hexray-expectations.json
+    bool noExpectations = false;
+    std::string jsonPath;   // empty: none; "-": standard output
+    std::string junitPath;  // empty: none
 };
 
 enum class PixelBackend { Both, Gpu, Cpu };

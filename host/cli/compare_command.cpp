@@ -3,9 +3,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 #include "cli/command_support.h"
+#include "cli/compare_expectations.h"
+#include "cli/comparison_json.h"
+#include "cli/comparison_junit.h"
+#include "cli/comparison_record.h"
+#include "cli/json_document.h"
 #include "cli/progress.h"
 #include "cli/scene_files.h"
 #include "precision/decision_roundoff.h"
@@ -23,15 +29,6 @@ namespace hexray::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Row {
-    Precision precision;
-    bool chosenByAuto;
-    bool judged;  // f32-naive rows in --all are shown, not judged: they exist to fail
-    RenderComparison comparison;
-    Verdict verdict;
-    double gpuMilliseconds;
-};
 
 std::string psnrText(double psnr) {
     if (std::isinf(psnr)) {
@@ -52,11 +49,13 @@ const char* okText(bool ok) {
     return ok ? "ok" : "EXCEEDED";
 }
 
-void printDetailed(const std::string& path, const Scene& scene, const Row& row, const std::string& gpuHow,
-                   const std::string& cpuHow, const Tolerance& tolerance) {
-    const TopologyComparison& t = row.comparison.topology;
-    std::printf("scene %s: %ux%u, %s output\n", printable(path).c_str(), scene.image.width, scene.image.height,
-                scene.image.encoding == Encoding::Srgb ? "sRGB" : "linear");
+void printDetailed(const ComparisonRecord& record, const std::string& gpuHow, const std::string& cpuHow) {
+    const RenderComparison& c = record.comparison;
+    const TopologyComparison& t = c.topology;
+    const Tolerance& tolerance = record.expectation.tolerance;
+    const Verdict& v = record.verdict;
+    std::printf("scene %s: %ux%u, %s output\n", printable(record.scenePath).c_str(), record.width, record.height,
+                record.encoding == Encoding::Srgb ? "sRGB" : "linear");
     std::printf("  %s\n  %s\n", gpuHow.c_str(), cpuHow.c_str());
     std::printf("  ambiguous pixels (a decision within rounding of flipping): %llu (%.4f%%)\n",
                 static_cast<unsigned long long>(t.ambiguous), 100.0 * t.ambiguousShare());
@@ -67,32 +66,40 @@ void printDetailed(const std::string& path, const Scene& scene, const Row& row, 
                 static_cast<unsigned long long>(t.checkerMismatches),
                 static_cast<unsigned long long>(t.lightMismatches));
     std::printf("  colours NaN, infinite or negative (either render, any pixel): %llu\n",
-                static_cast<unsigned long long>(row.comparison.invalidColours));
+                static_cast<unsigned long long>(c.invalidColours));
     std::printf("  %-16s %10s %10s %10s %16s  %s\n", "compared colours", "max abs", "mean abs", "RMSE", "PSNR dB",
                 "pixels > 1 level");
-    printMetrics("linear [0,1]", row.comparison.linear, 6);
-    printMetrics("8-bit [levels]", row.comparison.encoded, 0);
+    printMetrics("linear [0,1]", c.linear, 6);
+    printMetrics("8-bit [levels]", c.encoded, 0);
     std::printf(
         "  tolerance: invalid colours %llu <= 0 %s; topology mismatches %llu <= %llu %s; ambiguous pixels "
         "%.4f%% <= %.4f%% %s; pixels > 1 level %.4f%% <= %.4f%% %s; 8-bit RMSE %.4f <= %.4f levels %s\n",
-        static_cast<unsigned long long>(row.comparison.invalidColours), okText(row.verdict.valuesOk),
+        static_cast<unsigned long long>(c.invalidColours), okText(v.valuesOk),
         static_cast<unsigned long long>(t.mismatches), static_cast<unsigned long long>(tolerance.maxTopologyMismatches),
-        okText(row.verdict.topologyOk), 100.0 * t.ambiguousShare(), tolerance.maxAmbiguousPercent,
-        okText(row.verdict.ambiguousOk), 100.0 * row.comparison.encoded.shareOverOneLevel, tolerance.maxSharePercent,
-        okText(row.verdict.shareOk), row.comparison.encoded.rmse, tolerance.maxRmseLevels, okText(row.verdict.rmseOk));
-    std::printf("%s\n", row.verdict.passed() ? "PASS" : "FAIL");
+        okText(v.topologyOk), 100.0 * t.ambiguousShare(), tolerance.maxAmbiguousPercent, okText(v.ambiguousOk),
+        100.0 * c.encoded.shareOverOneLevel, tolerance.maxSharePercent, okText(v.shareOk), c.encoded.rmse,
+        tolerance.maxRmseLevels, okText(v.rmseOk));
+    std::printf("  %s: %s\n", std::string(outcomeName(record.outcome.outcome)).c_str(),
+                printable(record.outcome.reason).c_str());
 }
 
-// A judged row's verdict names what failed: an ambiguous share over the limit makes the rest moot.
-std::string verdictText(const Row& row) {
-    if (!row.judged) {
-        return row.verdict.passed() ? "(pass)" : "(fail, not judged)";
+// The table's verdict column: what failed, and whether the expectations file expected it.
+std::string verdictText(const ComparisonRecord& record) {
+    const bool passed = record.verdict.passed();
+    const bool onlyAmbiguous = !record.verdict.ambiguousOk && record.verdict.topologyOk && record.verdict.shareOk &&
+                               record.verdict.rmseOk && record.verdict.valuesOk;
+    switch (record.outcome.outcome) {
+        case Outcome::NotJudged:
+            return passed ? "(pass)" : "(fail, not judged)";
+        case Outcome::Passed:
+            return "pass";
+        case Outcome::Expected:
+            return onlyAmbiguous ? "expected (too ambiguous)" : "expected (fail)";
+        default:
+            return passed ? "FAIL (passed; expected " + std::string(expectedName(record.expectation.expect)) + ")"
+                   : onlyAmbiguous ? "FAIL (too ambiguous)"
+                                   : "FAIL";
     }
-    if (row.verdict.passed()) {
-        return "pass";
-    }
-    const Verdict& v = row.verdict;
-    return v.topologyOk && v.shareOk && v.rmseOk && v.valuesOk ? "FAIL (too ambiguous)" : "FAIL";
 }
 
 void printTableHeader() {
@@ -102,18 +109,30 @@ void printTableHeader() {
     std::printf("|---|---|:-:|---:|---:|---:|---:|---:|---:|---:|---|\n");
 }
 
-void printTableRow(const std::string& scene, const Row& row) {
-    const RenderComparison& c = row.comparison;
+void printTableRow(const ComparisonRecord& record) {
+    const RenderComparison& c = record.comparison;
     std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n",
-                printable(scene).c_str(), std::string(precisionName(row.precision)).c_str(),
-                row.chosenByAuto ? "✓" : "", static_cast<unsigned long long>(c.topology.mismatches),
+                printable(record.name).c_str(), std::string(precisionName(record.precision)).c_str(),
+                record.chosenByAuto ? "✓" : "", static_cast<unsigned long long>(c.topology.mismatches),
                 100.0 * c.topology.ambiguousShare(), 100.0 * c.topology.excusedShare(), c.encoded.maxAbs,
-                c.encoded.rmse, 100.0 * c.encoded.shareOverOneLevel, row.gpuMilliseconds, verdictText(row).c_str());
+                c.encoded.rmse, 100.0 * c.encoded.shareOverOneLevel, record.gpuMilliseconds,
+                verdictText(record).c_str());
 }
 
 void printFailedRow(const std::string& scene) {
     std::printf("| %s | – | | – | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n",
                 printable(scene).c_str());
+}
+
+// The gate's last line: "PASS: 18 passed, 9 expected, 0 failed".
+void printCountLine(const OutcomeCounts& counts) {
+    std::printf("%s: %llu passed, %llu expected, %llu failed", counts.gatePassed() ? "PASS" : "FAIL",
+                static_cast<unsigned long long>(counts.passed), static_cast<unsigned long long>(counts.expected),
+                static_cast<unsigned long long>(counts.failed));
+    if (counts.notJudged > 0) {
+        std::printf(" (%llu shown, not judged)", static_cast<unsigned long long>(counts.notJudged));
+    }
+    std::printf("\n");
 }
 
 // The files a single-scene comparison writes besides its report: the heat map, the mask and
@@ -227,8 +246,18 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
 }
 
 // Every path the comparison reads or writes, checked before any work.
-void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& files) {
+void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& files,
+                const std::vector<std::string>& expectationFiles) {
     OutputPlan plan;
+    for (const std::string& path : expectationFiles) {
+        plan.addInput("the expectations file", path);
+    }
+    if (!options.jsonPath.empty()) {
+        plan.addFile("--json", options.jsonPath);
+    }
+    if (!options.junitPath.empty()) {
+        plan.addFile("--junit", options.junitPath);
+    }
     for (const SceneFile& file : files) {
         if (file.problem.empty()) {
             plan.addInput("the scene", file.path);
@@ -247,17 +276,23 @@ void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& fil
     plan.check();
 }
 
-// A table's scene that cannot be loaded is a failed row, not the end of the table.
-std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table) {
+// A scene that cannot be loaded is a failed record (and a table's row), not the end of the command.
+std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverride& image, bool table,
+                                       std::vector<ComparisonRecord>& records) {
     try {
         requireReadable(file);
         return loadScene(file.path, image);
     } catch (const SceneError& error) {
-        if (!table) {
-            throw;
-        }
         printError(error.what());
-        printFailedRow(file.name);
+        if (table) {
+            printFailedRow(file.name);
+        }
+        ComparisonRecord failed;
+        failed.scenePath = file.path;
+        failed.name = file.name;
+        failed.loadError = printable(error.what());
+        failed.outcome = {Outcome::Failed, "cannot load the scene: " + failed.loadError};
+        records.push_back(std::move(failed));
         return std::nullopt;
     }
 }
@@ -286,57 +321,131 @@ std::vector<Precision> precisionsToCompare(const CompareOptions& options, const 
     return precisions;
 }
 
-void printComparison(const SceneFile& file, const Scene& scene, Precision requested, const BandedComparison& compared,
-                     const Row& row, const VulkanContext& context, const Tolerance& tolerance) {
+void printComparison(const ComparisonRecord& record, const BandedComparison& compared, const VulkanContext& context) {
     char gpuHow[256];
     std::snprintf(gpuHow, sizeof gpuHow, "gpu %s%s (%s): render %.2f ms",
                   std::string(precisionName(compared.precision)).c_str(),
-                  requested == Precision::Auto ? ", chosen by auto" : "", context.selected().name.c_str(),
+                  record.requested == Precision::Auto ? ", chosen by auto" : "", context.selected().name.c_str(),
                   compared.gpuMilliseconds);
     char cpuHow[128];
     std::snprintf(cpuHow, sizeof cpuHow, "cpu reference (%u threads): render %.2f ms", compared.threads,
                   compared.cpuMilliseconds);
-    printDetailed(file.path, scene, row, gpuHow, cpuHow, tolerance);
+    printDetailed(record, gpuHow, cpuHow);
 }
 
-// What a comparison command has found so far.
-struct Verdicts {
-    bool allPassed = true;
-    bool allLoaded = true;
+// The expectations files that apply: the one named on the command line, or each scene's nearest,
+// all read (and checked) before any comparison.
+class ExpectationsInUse {
+public:
+    ExpectationsInUse(const CompareOptions& options, const std::vector<SceneFile>& files) {
+        if (options.noExpectations) {
+            return;
+        }
+        if (!options.expectationsPath.empty()) {
+            named_ = readExpectations(options.expectationsPath);
+            return;
+        }
+        for (const SceneFile& file : files) {
+            const std::optional<std::string> found = findExpectations(file.path);
+            if (found && !byPath_.contains(*found)) {
+                byPath_.emplace(*found, readExpectations(*found));
+            }
+        }
+    }
 
-    int exitCode() const { return !allLoaded ? kBadInput : allPassed ? kSuccess : kToleranceExceeded; }
+    const Expectations* forScene(const std::string& scenePath) const {
+        if (named_) {
+            return &*named_;
+        }
+        const std::optional<std::string> found = findExpectations(scenePath);
+        return found ? &byPath_.at(*found) : nullptr;
+    }
+
+    // The files read, for the report's header.
+    std::vector<std::string> paths() const {
+        std::vector<std::string> paths;
+        if (named_) {
+            paths.push_back(named_->path);
+        }
+        for (const auto& [path, expectations] : byPath_) {
+            paths.push_back(path);
+        }
+        return paths;
+    }
+
+private:
+    std::optional<Expectations> named_;
+    std::map<std::string, Expectations> byPath_;
 };
 
-Row rowFor(const BandedComparison& compared, Precision automatic, const CompareOptions& options) {
-    return Row{compared.precision,
-               compared.precision == automatic,
-               !(options.allPrecisions && compared.precision == Precision::F32Naive),
-               compared.comparison,
-               judge(compared.comparison, options.tolerance),
-               compared.gpuMilliseconds};
+ComparisonRecord recordFor(const SceneFile& file, const Scene& scene, Precision requested,
+                           const BandedComparison& compared, Precision automatic, const CompareOptions& options,
+                           const ExpectationsInUse& expectations) {
+    ComparisonRecord record;
+    record.scenePath = file.path;
+    record.name = file.name;
+    record.width = scene.image.width;
+    record.height = scene.image.height;
+    record.encoding = scene.image.encoding;
+    record.requested = requested;
+    record.precision = compared.precision;
+    record.chosenByAuto = compared.precision == automatic;
+    record.judged = !(options.allPrecisions && compared.precision == Precision::F32Naive);
+    record.comparison = compared.comparison;
+    record.expectation = expectationFor(expectations.forScene(file.path), file.path, compared.precision,
+                                        options.tolerance, options.toleranceGiven);
+    record.verdict = judge(compared.comparison, record.expectation.tolerance);
+    record.outcome = outcomeOf(record.verdict, record.judged, record.expectation);
+    record.gpuMilliseconds = compared.gpuMilliseconds;
+    record.cpuMilliseconds = compared.cpuMilliseconds;
+    record.cpuThreads = compared.threads;
+    return record;
 }
+
+// What a comparison command needs on its way through the scenes.
+struct CompareSession {
+    const CompareOptions& options;
+    GpuRenderer& renderer;
+    const VulkanContext& context;
+    const ExpectationsInUse& expectations;
+    bool table;
+    std::vector<ComparisonRecord>& records;
+};
 
 // Compares one scene in each precision asked for: a table row, or the detailed report (and its
 // files), for each.
-void compareScene(GpuRenderer& renderer, const VulkanContext& context, const SceneFile& file, const Scene& scene,
-                  const CompareOptions& options, bool table, Verdicts& verdicts) {
-    const Precision automatic = renderer.resolve(scene, Precision::Auto);
-    for (const Precision requested : precisionsToCompare(options, context)) {
+void compareScene(const CompareSession& session, const SceneFile& file, const Scene& scene) {
+    const Precision automatic = session.renderer.resolve(scene, Precision::Auto);
+    for (const Precision requested : precisionsToCompare(session.options, session.context)) {
         std::optional<BandOutputs> outputs;
-        if (!table) {
-            outputs.emplace(options, scene);
+        if (!session.table) {
+            outputs.emplace(session.options, scene);
         }
-        const BandedComparison compared =
-            compareInBands(renderer, file.path, scene, requested, options.threads, outputs ? &*outputs : nullptr);
-        const Row row = rowFor(compared, automatic, options);
-        verdicts.allPassed = verdicts.allPassed && (!row.judged || row.verdict.passed());
-        if (table) {
-            printTableRow(file.name, row);
+        const BandedComparison compared = compareInBands(session.renderer, file.path, scene, requested,
+                                                         session.options.threads, outputs ? &*outputs : nullptr);
+        session.records.push_back(
+            recordFor(file, scene, requested, compared, automatic, session.options, session.expectations));
+        if (session.table) {
+            printTableRow(session.records.back());
             continue;
         }
-        printComparison(file, scene, requested, compared, row, context, options.tolerance);
+        printComparison(session.records.back(), compared, session.context);
         outputs->commit();
     }
+}
+
+// `code`, or the failure's exit code when --junit's file cannot be written.
+int writeJunitIfAsked(const CompareOptions& options, const std::vector<ComparisonRecord>& records,
+                      const nlohmann::json& document, int code) {
+    if (options.junitPath.empty()) {
+        return code;
+    }
+    const std::string device = document["device"].is_null() ? "" : document["device"]["name"].get<std::string>();
+    const int written = guarded([&] {
+        writeJunit(options.junitPath, records, device);
+        return int(kSuccess);
+    });
+    return written == kSuccess ? code : written;
 }
 
 // Bands of floats, not the encoded render's larger ones: memory grows with the width only. On a
@@ -349,30 +458,42 @@ std::uint64_t comparisonBandBytes() {
 
 int runCompare(const CompareOptions& options) {
     ValidationLog log;
+    std::vector<ComparisonRecord> records;
+    nlohmann::json document = jsonDocument("compare");
+    document["device"] = nullptr;
+    document["timings_ms"]["startup"] = nullptr;
+    document["expectations_files"] = nlohmann::json::array();
     const int code = guarded([&] {
         const std::vector<SceneFile> files = sceneFiles(options.scenePaths);
         const bool table = options.allPrecisions || files.size() > 1;
         requireSingleComparison(options, table);
-        checkPaths(options, files);
+        const ExpectationsInUse expectations(options, files);
+        checkPaths(options, files, expectations.paths());
+        document["expectations_files"] = expectations.paths();
+        const auto startup = std::chrono::steady_clock::now();
         const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
+        document["timings_ms"]["startup"] = millisecondsSince(startup);
+        document["device"] = jsonDevice(context.selected());
         GpuRenderer renderer(context, comparisonBandBytes());
         if (table) {
             printTableHeader();
         }
-        Verdicts verdicts;
+        const CompareSession session{options, renderer, context, expectations, table, records};
+        bool allLoaded = true;
         for (const SceneFile& file : files) {
-            const std::optional<Scene> scene = loadForComparison(file, options.image, table);
-            verdicts.allLoaded = verdicts.allLoaded && scene.has_value();
+            const std::optional<Scene> scene = loadForComparison(file, options.image, table, records);
+            allLoaded = allLoaded && scene.has_value();
             if (scene) {
-                compareScene(renderer, context, file, *scene, options, table, verdicts);
+                compareScene(session, file, *scene);
             }
         }
-        if (table) {
-            std::printf("%s\n", verdicts.allPassed && verdicts.allLoaded ? "PASS" : "FAIL");
-        }
-        return verdicts.exitCode();
+        const OutcomeCounts counts = countOutcomes(records);
+        printCountLine(counts);
+        return !allLoaded ? int(kBadInput) : counts.gatePassed() ? int(kSuccess) : int(kToleranceExceeded);
     });
-    return withValidationVerdict(code, log);
+    const int verdict = withValidationVerdict(code, log);
+    addComparisons(document, records);
+    return finishJson(options.jsonPath, document, writeJunitIfAsked(options, records, document, verdict));
 }
 
 }  // namespace hexray::cli

@@ -192,6 +192,42 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
                      "reference's decision margin as DIR/cpu/margin.exr")
         ->check(NotEmpty())
         ->check(AovDirectoryName());
+    CLI::Option* expectations =
+        command
+            ->add_option("--expectations", compare.expectationsPath,
+                         "Read tolerances and expected failures from this file instead of each scene's nearest "
+                         "hexray-expectations.json (docs/compare-expectations.md); command-line tolerances win")
+            ->check(NotEmpty());
+    command->add_flag("--no-expectations", compare.noExpectations, "Ignore every hexray-expectations.json")
+        ->excludes(expectations);
+    command
+        ->add_option("--json", compare.jsonPath,
+                     "Write the results as JSON (- for standard output; "
+                     "docs/json-output.md)")
+        ->check(NotEmpty());
+    command
+        ->add_option("--junit", compare.junitPath,
+                     "Write the results as JUnit XML: one test case per scene "
+                     "and precision")
+        ->check(NotEmpty());
+}
+
+// The tolerance options given on compare's command line, which win over an expectations file's.
+ToleranceChanges toleranceGiven(const CLI::App& command, const Tolerance& tolerance) {
+    ToleranceChanges given;
+    if (command.count("--max-topology-mismatches") > 0) {
+        given.maxTopologyMismatches = tolerance.maxTopologyMismatches;
+    }
+    if (command.count("--max-bad-pixels") > 0) {
+        given.maxSharePercent = tolerance.maxSharePercent;
+    }
+    if (command.count("--max-rmse") > 0) {
+        given.maxRmseLevels = tolerance.maxRmseLevels;
+    }
+    if (command.count("--max-ambiguous") > 0) {
+        given.maxAmbiguousPercent = tolerance.maxAmbiguousPercent;
+    }
+    return given;
 }
 
 void addDiffCommand(CLI::App& app, CommandLine& line) {
@@ -399,6 +435,7 @@ int runCommand(const CLI::App& app, CommandLine& line) {
     }
     if (app.got_subcommand("compare")) {
         line.compare.vulkan.validate = line.validate;
+        line.compare.toleranceGiven = toleranceGiven(*app.get_subcommand("compare"), line.compare.tolerance);
         return runCompare(line.compare);
     }
     if (app.got_subcommand("diff")) {
@@ -458,8 +495,8 @@ int main(int argc, char** argv) {
     // prints goes to standard error then.
     const int reserved = guarded([&] {
         reserveStandardOutputForData({line.render.outputPath, line.merge.outputPath, line.compare.diffPath,
-                                      line.compare.maskPath, line.bench.csvPath, line.diff.heatmapPath,
-                                      line.diff.jsonPath});
+                                      line.compare.maskPath, line.compare.jsonPath, line.compare.junitPath,
+                                      line.bench.csvPath, line.diff.heatmapPath, line.diff.jsonPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);

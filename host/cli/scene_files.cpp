@@ -33,7 +33,8 @@ void collect(const fs::path& directory, const fs::path& root, std::vector<SceneF
         std::error_code ignored;
         if (entry->is_directory(ignored) && !entry->is_symlink(ignored)) {
             subdirectories.push_back(entry->path());
-        } else if (entry->is_regular_file(ignored) && hasJsonExtension(entry->path())) {
+        } else if (entry->is_regular_file(ignored) && hasJsonExtension(entry->path()) &&
+                   entry->path().filename() != kExpectationsFileName) {
             const fs::path name = fs::relative(entry->path(), root).replace_extension();
             found.push_back({entry->path().string(), name.string(), ""});
         }

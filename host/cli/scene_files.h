@@ -6,6 +6,9 @@
 
 namespace hexray::cli {
 
+// Not a scene: `hexray compare`'s expectations for the scenes beside it (cli/compare_expectations.h).
+inline constexpr const char* kExpectationsFileName = "hexray-expectations.json";
+
 struct SceneFile {
     std::string path;
     std::string name;     // for tables: the path under the directory given, without .json
@@ -13,7 +16,7 @@ struct SceneFile {
 };
 
 // The scene files named, with directories expanded to the files under them whose names end in
-// .json, in any case (sorted by name). A directory (given, or found inside one) that cannot be
+// .json, in any case, except the expectations file (sorted by name). A directory (given, or found inside one) that cannot be
 // read becomes an entry with its problem, so that the command reports it as a failed scene and
 // goes on with the others. Throws SceneError for a directory that holds no scene file and no
 // such problem.

@@ -156,6 +156,21 @@ bool isValidColour(const glm::vec3& colour) {
     return true;
 }
 
+Tolerance ToleranceChanges::appliedTo(Tolerance tolerance) const {
+    tolerance.maxTopologyMismatches = maxTopologyMismatches.value_or(tolerance.maxTopologyMismatches);
+    tolerance.maxSharePercent = maxSharePercent.value_or(tolerance.maxSharePercent);
+    tolerance.maxRmseLevels = maxRmseLevels.value_or(tolerance.maxRmseLevels);
+    tolerance.maxAmbiguousPercent = maxAmbiguousPercent.value_or(tolerance.maxAmbiguousPercent);
+    return tolerance;
+}
+
+void ToleranceChanges::update(const ToleranceChanges& later) {
+    maxTopologyMismatches = later.maxTopologyMismatches ? later.maxTopologyMismatches : maxTopologyMismatches;
+    maxSharePercent = later.maxSharePercent ? later.maxSharePercent : maxSharePercent;
+    maxRmseLevels = later.maxRmseLevels ? later.maxRmseLevels : maxRmseLevels;
+    maxAmbiguousPercent = later.maxAmbiguousPercent ? later.maxAmbiguousPercent : maxAmbiguousPercent;
+}
+
 Verdict judge(const RenderComparison& comparison, const Tolerance& tolerance) {
     return {comparison.topology.mismatches <= tolerance.maxTopologyMismatches,
             100.0 * comparison.encoded.shareOverOneLevel <= tolerance.maxSharePercent,

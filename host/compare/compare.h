@@ -3,6 +3,7 @@
 // are honestly ambiguous, colour error metrics, and a heat map of where the colours differ.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -108,6 +109,19 @@ struct Tolerance {
     double maxSharePercent = 0.1;      // of compared pixels whose 8-bit value differs by more than one level
     double maxRmseLevels = 1.0;        // RMSE of the 8-bit output over compared pixels, in levels
     double maxAmbiguousPercent = 5.0;  // of pixels with a near-tied decision
+};
+
+// Some of a Tolerance's limits, as an expectations file or the command line sets them: each one
+// given replaces the tolerance's own.
+struct ToleranceChanges {
+    std::optional<std::uint64_t> maxTopologyMismatches;
+    std::optional<double> maxSharePercent;
+    std::optional<double> maxRmseLevels;
+    std::optional<double> maxAmbiguousPercent;
+
+    Tolerance appliedTo(Tolerance tolerance) const;
+    // The limits `later` gives win over these.
+    void update(const ToleranceChanges& later);
 };
 
 struct Verdict {

@@ -816,7 +816,8 @@ TEST(SceneFiles, EverySceneUnderScenesLoads) {
     const fs::path scenes = sourceDir() / "scenes";
     ASSERT_TRUE(fs::is_directory(scenes)) << scenes;
     for (const auto& entry : fs::recursive_directory_iterator(scenes)) {
-        if (!entry.is_regular_file() || entry.path().extension() != ".json")
+        if (!entry.is_regular_file() || entry.path().extension() != ".json" ||
+            entry.path().filename() == "hexray-expectations.json")  // compare's, not a scene
             continue;
         try {
             loadSceneFile(entry.path());
