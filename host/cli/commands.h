@@ -24,6 +24,7 @@ enum ExitCode : int {
     kInternalError = 6,      // anything else: out of memory, a thread that could not start
     kDeviceLost = 7,         // the Vulkan device was lost, or hung, during the render
     kOutOfDeviceMemory = 8,  // the Vulkan driver ran out of device (or host) memory
+    kSizeMismatch = 9,       // diff: the two images differ in size
 };
 
 // Auto: the GPU, or the CPU reference (with a note) when the GPU path cannot render.
@@ -107,6 +108,21 @@ struct BenchOptions {
     std::string csvPath;                          // empty: no CSV
 };
 
+// `hexray diff TEST REF`: thresholds apply to each pixel's largest channel difference on the
+// [0, 1] scale (compare/image_difference.h).
+struct DiffOptions {
+    std::string testPath;            // "-": standard input
+    std::string referencePath;       // "-": standard input (not both)
+    double failDifference = 0.004;   // a pixel fails above this (just over one 8-bit level)
+    double failPercent = 0.0;        // the command fails when more pixels than this fail
+    double warnDifference = 0.0;     // a pixel warns above this
+    double warnPercent = 0.0;        // a warning is printed when more pixels than this warn
+    std::optional<double> failFlip;  // the command fails when the mean FLIP is above this
+    double pixelsPerDegree = 0.0;    // FLIP's viewing condition; 0: compare/flip.h's default
+    std::string heatmapPath;         // empty: no heat map
+    std::string jsonPath;            // empty: no --json document
+};
+
 struct CacheOptions {
     bool clear = false;  // remove every entry
 };
@@ -117,6 +133,8 @@ int runDevices(const VulkanOptions& options);
 int runBench(const BenchOptions& options);
 int runPixel(const PixelOptions& options);
 int runMerge(const MergeOptions& options);
+// `hexray diff TEST REF`: exit 0 pass (warnings printed), 1 fail, 2 unreadable, 9 sizes differ.
+int runDiff(const DiffOptions& options);
 // `hexray cache`: the kernel cache's directory, entries, size and bound; or, with --clear, empties it.
 int runCache(const CacheOptions& options);
 // `hexray --version`: hexray's version and git revision, the Vulkan loader's version and the

@@ -52,6 +52,8 @@ const char* exitCodeName(int code) {
             return "device_lost";
         case kOutOfDeviceMemory:
             return "out_of_device_memory";
+        case kSizeMismatch:
+            return "size_mismatch";
         default:
             return "internal_error";
     }

@@ -34,12 +34,13 @@ constexpr const char* kExitCodes =
     "driver or device, no compute queue, no float64 for --precision f64); 4 --validate and the validation layer\n"
     "reported messages; 5 an output cannot be written (its directory is checked before any work); 6 any other\n"
     "failure (out of memory: the message names what is too big, the scene or the image); 7 the Vulkan device\n"
-    "was lost or hung during the render; 8 the Vulkan driver ran out of device (or host) memory.\n"
+    "was lost or hung during the render; 8 the Vulkan driver ran out of device (or host) memory; 9 diff: the two\n"
+    "images differ in size.\n"
     "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except an\n"
     "unknown --device or a missing validation layer), 7 or 8. render of several scenes renders every one it can\n"
     "and exits with the first failed scene's code.";
 
-constexpr const char* kCommands = "render, merge, compare, bench, pixel, devices, cache";
+constexpr const char* kCommands = "render, merge, compare, diff, bench, pixel, devices, cache";
 
 // Every subcommand's options, as parsing fills them in.
 struct CommandLine {
@@ -48,6 +49,7 @@ struct CommandLine {
     std::string renderStrip;
     MergeOptions merge;
     CompareOptions compare;
+    DiffOptions diff;
     BenchOptions bench;
     PixelOptions pixel;
     VulkanOptions devices;
@@ -233,6 +235,50 @@ ToleranceChanges toleranceGiven(const CLI::App& command, const Tolerance& tolera
     return given;
 }
 
+void addDiffCommand(CLI::App& app, CommandLine& line) {
+    DiffOptions& diff = line.diff;
+    CLI::App* command = app.add_subcommand(
+        "diff",
+        "Compare two image files (two PNGs or two OpenEXR files) as OpenImageIO's idiff does: RMSE, PSNR, the "
+        "largest difference, the share of pixels over one 8-bit level, and FLIP (LDR-FLIP for PNG, HDR-FLIP for "
+        "OpenEXR). A pixel's difference is its largest channel's, on a [0, 1] scale (8-bit: levels / 255; OpenEXR: "
+        "the linear values). Fails (exit 1) when more than --failpercent of the pixels differ by more than --fail");
+    command->add_option("test", diff.testPath, "The image under test (- for standard input)")
+        ->required()
+        ->check(NotEmpty());
+    command->add_option("reference", diff.referencePath, "The reference image (- for standard input)")
+        ->required()
+        ->check(NotEmpty());
+    command->add_option("--fail", diff.failDifference, "A pixel fails when its difference is above this")
+        ->check(FiniteNumberBetween(0.0, 1.0e30))
+        ->capture_default_str();
+    command
+        ->add_option("--failpercent", diff.failPercent,
+                     "The command fails when more than this percentage of pixels fail")
+        ->check(FiniteNumberBetween(0.0, 100.0))
+        ->capture_default_str();
+    command->add_option("--warn", diff.warnDifference, "A pixel warns when its difference is above this")
+        ->check(FiniteNumberBetween(0.0, 1.0e30))
+        ->capture_default_str();
+    command
+        ->add_option("--warnpercent", diff.warnPercent,
+                     "A warning is printed (exit 0) when more than this percentage of pixels warn")
+        ->check(FiniteNumberBetween(0.0, 100.0))
+        ->capture_default_str();
+    command->add_option("--fail-flip", diff.failFlip, "Also fail when the mean FLIP is above this (0 to 1)")
+        ->check(FiniteNumberBetween(0.0, 1.0));
+    command
+        ->add_option("--ppd", diff.pixelsPerDegree,
+                     "FLIP's viewing condition in pixels per degree (default: a 0.7 m wide 3840-pixel monitor seen "
+                     "from 0.7 m, 67.02, as the FLIP papers)")
+        ->check(FiniteNumberBetween(1.0, 1000.0));
+    command->add_option("--heatmap", diff.heatmapPath, "Write the FLIP map as a heat map PNG (black: no difference)")
+        ->check(NotEmpty());
+    command
+        ->add_option("--json", diff.jsonPath, "Write the results as JSON (docs/json-output.md; - for standard output)")
+        ->check(NotEmpty());
+}
+
 void addBenchCommand(CLI::App& app, CommandLine& line) {
     BenchOptions& bench = line.bench;
     CLI::App* command = app.add_subcommand(
@@ -319,6 +365,7 @@ void defineCommandLine(CLI::App& app, CommandLine& line) {
     addRenderCommand(app, line);
     addMergeCommand(app, line);
     addCompareCommand(app, line);
+    addDiffCommand(app, line);
     addBenchCommand(app, line);
     addPixelCommand(app, line);
     addDevicesCommand(app, line);
@@ -349,6 +396,9 @@ void checkCombinations(const CLI::App& app, const CommandLine& line) {
                                        app.get_subcommand("pixel")->count("--precision") > 0);
     if (cpuOnlyWithPrecision) {
         throw CLI::ValidationError("--precision", "applies to the GPU backend only");
+    }
+    if (app.got_subcommand("diff") && line.diff.testPath == "-" && line.diff.referencePath == "-") {
+        throw CLI::ValidationError("diff", "only one of TEST and REF can be standard input (-)");
     }
 }
 
@@ -392,6 +442,9 @@ int runCommand(const CLI::App& app, CommandLine& line) {
         line.compare.vulkan.validate = line.validate;
         line.compare.toleranceGiven = toleranceGiven(*app.get_subcommand("compare"), line.compare.tolerance);
         return runCompare(line.compare);
+    }
+    if (app.got_subcommand("diff")) {
+        return runDiff(line.diff);
     }
     if (app.got_subcommand("bench")) {
         line.bench.vulkan.validate = line.validate;
@@ -448,7 +501,7 @@ int main(int argc, char** argv) {
     const int reserved = guarded([&] {
         reserveStandardOutputForData({line.render.outputPath, line.merge.outputPath, line.compare.diffPath,
                                       line.compare.maskPath, line.compare.jsonPath, line.compare.junitPath,
-                                      line.bench.csvPath});
+                                      line.bench.csvPath, line.diff.heatmapPath, line.diff.jsonPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);

@@ -39,15 +39,17 @@ TEST_F(CliTest, AnUnknownCommandIsNamedWithTheKnownOnes) {
     for (const char* line : {"frobnicate", "--validate frobnicate scene.json"}) {
         const RunResult run = hexray(line);
         EXPECT_EQ(run.exitCode, 2) << line;
-        EXPECT_NE(run.err.find("hexray: error: unknown command 'frobnicate' (the commands are render, merge, compare, "
-                               "bench, pixel, devices"),
-                  std::string::npos)
+        EXPECT_NE(
+            run.err.find("hexray: error: unknown command 'frobnicate' (the commands are render, merge, compare, diff, "
+                         "bench, pixel, devices"),
+            std::string::npos)
             << run.err;
     }
     const RunResult none = hexray("--validate");
     EXPECT_EQ(none.exitCode, 2);
-    EXPECT_NE(none.err.find("hexray: error: a command is required: render, merge, compare, bench, pixel, devices"),
-              std::string::npos)
+    EXPECT_NE(
+        none.err.find("hexray: error: a command is required: render, merge, compare, diff, bench, pixel, devices"),
+        std::string::npos)
         << none.err;
     const RunResult noScene = hexray("render");
     EXPECT_EQ(noScene.exitCode, 2);
