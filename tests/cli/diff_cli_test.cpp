@@ -59,7 +59,7 @@ TEST_F(DiffCliTest, IdenticalFilesPassWithFlipZero) {
     EXPECT_TRUE(document["metrics"]["psnr"].is_null());
     EXPECT_EQ(document["metrics"]["pixels"], kWidth * kHeight);
     EXPECT_EQ(document["test"]["width"], kWidth);
-    EXPECT_TRUE(document["test"]["provenance"].is_null());
+    EXPECT_EQ(document["test"]["provenance"], nlohmann::json::object());  // written without a record
 }
 
 TEST_F(DiffCliTest, OneLevelEverywhereWarnsButPasses) {
@@ -194,6 +194,25 @@ TEST_F(DiffCliTest, OpenExrPairsUseHdrFlip) {
     EXPECT_EQ(document["metrics"]["max_at"]["x"], kWidth - 1);
     EXPECT_GT(document["metrics"]["flip"]["exposures"]["count"].get<int>(), 1);
     EXPECT_EQ(hexray("diff ref.exr ref.exr").exitCode, 0);
+}
+
+// Two renders of one scene in two precisions: the report ends with both records, and the JSON
+// holds each file's.
+TEST_F(DiffCliTest, DifferingRecordsOfWhatMadeTheFilesArePrinted) {
+    const std::string scene = test::sourcePath("scenes/constant-debug.json").string();
+    ASSERT_EQ(hexray("render '" + scene + "' --width 32 --height 24 --precision f32 -o a.png").exitCode, 0);
+    ASSERT_EQ(hexray("render '" + scene + "' --width 32 --height 24 --precision f64 -o b.png").exitCode, 0);
+    const RunResult same = hexray("diff a.png a.png");
+    EXPECT_EQ(same.out.find("records of what made them differ"), std::string::npos) << same.out;
+    const RunResult run = hexray("diff a.png b.png --json out.json");
+    EXPECT_NE(run.out.find("the files' records of what made them differ:"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("hexray:precision f32"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("hexray:precision f64"), std::string::npos) << run.out;
+    const nlohmann::json document = nlohmann::json::parse(readFile(dir_ / "out.json"));
+    EXPECT_EQ(document["test"]["provenance"]["hexray:precision"], "f32");
+    EXPECT_EQ(document["reference"]["provenance"]["hexray:precision"], "f64");
+    EXPECT_EQ(document["reference"]["provenance"]["hexray:resolution"], "32x24");
+    EXPECT_EQ(validateJson("out.json").exitCode, 0);
 }
 
 }  // namespace
