@@ -124,6 +124,11 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "Render only strip I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
                      "`hexray merge` (default name <scene name>.strip-I-of-N.png)")
         ->check(StripSpec());
+    command
+        ->add_option("--json", render.jsonPath,
+                     "Also write the results as JSON (- for standard output; the report then goes to standard "
+                     "error): per scene its size, backend, precision, kernel, timings and exit (docs/json-output.md)")
+        ->check(NotEmpty());
 }
 
 void addMergeCommand(CLI::App& app, CommandLine& line) {
@@ -309,6 +314,11 @@ void checkCombinations(const CLI::App& app, const CommandLine& line) {
     if (cpuOnlyWithPrecision) {
         throw CLI::ValidationError("--precision", "applies to the GPU backend only");
     }
+    const RenderOptions& render = line.render;
+    if (app.got_subcommand("render") && !render.jsonPath.empty() && !render.outputPath.empty() &&
+        namesStandardOutput(render.jsonPath) && namesStandardOutput(render.outputPath)) {
+        throw CLI::ValidationError("--json", "standard output carries the image (-o -): write the document to a file");
+    }
 }
 
 // The bench's paths, checked before its rounds (the bench itself only writes the CSV at the end).
@@ -404,8 +414,8 @@ int main(int argc, char** argv) {
     // Standard output carries the data when an output is "-" (or a path to it): what the command
     // prints goes to standard error then.
     const int reserved = guarded([&] {
-        reserveStandardOutputForData({line.render.outputPath, line.merge.outputPath, line.compare.diffPath,
-                                      line.compare.maskPath, line.bench.csvPath});
+        reserveStandardOutputForData({line.render.outputPath, line.render.jsonPath, line.merge.outputPath,
+                                      line.compare.diffPath, line.compare.maskPath, line.bench.csvPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);
