@@ -86,6 +86,7 @@ struct PixelOptions {
     VulkanOptions vulkan;
     PixelBackend backend = PixelBackend::Both;
     Precision precision = Precision::Auto;
+    std::string jsonPath;  // empty: no --json document
 };
 
 struct BenchOptions {

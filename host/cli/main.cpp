@@ -251,6 +251,11 @@ void addPixelCommand(CLI::App& app, CommandLine& line) {
         ->capture_default_str();
     addImageOptions(*command, pixel.image);
     addDeviceOption(*command, pixel.vulkan);
+    command
+        ->add_option("--json", pixel.jsonPath,
+                     "Also write the explanation as JSON (- for standard output; the table then goes to standard "
+                     "error): each backend's ray, candidates, hit, lights and colour (docs/json-output.md)")
+        ->check(NotEmpty());
 }
 
 void addDevicesCommand(CLI::App& app, CommandLine& line) {
@@ -415,7 +420,8 @@ int main(int argc, char** argv) {
     // prints goes to standard error then.
     const int reserved = guarded([&] {
         reserveStandardOutputForData({line.render.outputPath, line.render.jsonPath, line.merge.outputPath,
-                                      line.compare.diffPath, line.compare.maskPath, line.bench.csvPath});
+                                      line.compare.diffPath, line.compare.maskPath, line.bench.csvPath,
+                                      line.pixel.jsonPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);

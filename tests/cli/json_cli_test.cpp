@@ -153,12 +153,82 @@ TEST_F(JsonCliTest, RenderOfABadSceneInABatchStillWritesTheDocument) {
     EXPECT_TRUE(fs::exists(dir_ / "images/good.png"));
 }
 
+TEST_F(JsonCliTest, PixelOnTheCpuHasTheColourOfTheRenderedPng) {
+    ASSERT_EQ(hexray("render " + demoScene() + kSmall + " --backend cpu -o cpu.png").exitCode, 0);
+    const std::string where = " " + std::to_string(kFloorX) + " " + std::to_string(kFloorY);
+    const test::RunResult run = hexray("pixel " + demoScene() + where + kSmall + " --backend cpu --json px.json");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("cpu (reference)"), std::string::npos);  // the table, as without --json
+    expectValid("px.json");
+    const json document = readJson("px.json");
+    EXPECT_EQ(document["exit"]["code"], 0);
+    EXPECT_EQ(document["x"], kFloorX);
+    EXPECT_EQ(document["y"], kFloorY);
+    EXPECT_EQ(document["width"], 64);
+    EXPECT_TRUE(document["gpu"].is_null());
+    EXPECT_TRUE(document["comparison"].is_null());
+    const json& trace = document["cpu"]["trace"];
+    EXPECT_EQ(trace["hit"]["node"], 0);
+    EXPECT_EQ(trace["hit"]["geometry"], "plane");
+    EXPECT_EQ(trace["lights"].at(0)["status"], "lit");
+    EXPECT_EQ(trace["pixel_8bit"], pngPixel("cpu.png", kFloorX, kFloorY));
+}
+
+TEST_F(JsonCliTest, PixelOnBothBackendsToStandardOutputAgreesWithTheGpuRender) {
+    ASSERT_EQ(hexray("render " + demoScene() + kSmall + " --precision f64 -o gpu.png").exitCode, 0);
+    const std::string where = " " + std::to_string(kFloorX) + " " + std::to_string(kFloorY);
+    const test::RunResult run = hexray("pixel " + demoScene() + where + kSmall + " --precision f64 --json -");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("gpu and cpu agree"), std::string::npos) << run.err;  // the table, on stderr
+    const json document = keep(run.out, "px.json");
+    expectValid("px.json");
+    EXPECT_EQ(document["gpu"]["precision"], "f64");
+    EXPECT_FALSE(document["device"].is_null());
+    EXPECT_TRUE(document["timings_ms"]["startup"].is_number());
+    EXPECT_EQ(document["comparison"]["agree"], true);
+    EXPECT_TRUE(document["comparison"]["differing_rows"].empty());
+    EXPECT_EQ(document["gpu"]["trace"]["hit"]["node"], document["cpu"]["trace"]["hit"]["node"]);
+    EXPECT_EQ(document["gpu"]["trace"]["pixel_8bit"], pngPixel("gpu.png", kFloorX, kFloorY));
+}
+
 // f32-naive loses the checker cell ten million units out: the rows the table marks, by name.
+TEST_F(JsonCliTest, PixelWhereTheBackendsDisagreeNamesTheDifferingRows) {
+    const test::RunResult run =
+        hexray("pixel " + shippedScene("hard/checker-far-1e7.json") + " 6 0" + kSmall + " --precision f32-naive --json -");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("DIFFERENCE"), std::string::npos) << run.err;
+    const json document = keep(run.out, "px.json");
+    expectValid("px.json");
+    const json& comparison = document["comparison"];
+    EXPECT_EQ(comparison["agree"], false);
+    EXPECT_EQ(comparison["class_differs"], true);
+    const auto& rows = comparison["differing_rows"];
+    EXPECT_NE(std::find(rows.begin(), rows.end(), "albedo"), rows.end()) << rows;
+    EXPECT_NE(std::find(rows.begin(), rows.end(), "light 0 cos theta"), rows.end()) << rows;
+    EXPECT_NE(document["gpu"]["trace"]["hit"]["checker"]["odd"], document["cpu"]["trace"]["hit"]["checker"]["odd"]);
+    EXPECT_NE(document["gpu"]["trace"]["pixel_8bit"], document["cpu"]["trace"]["pixel_8bit"]);
+}
+
+TEST_F(JsonCliTest, PixelOutsideTheImageStillWritesTheDocument) {
+    const test::RunResult run = hexray("pixel " + demoScene() + " 64 3" + kSmall + " --json px.json");
+    ASSERT_EQ(run.exitCode, 2) << run.err;
+    expectValid("px.json");
+    const json document = readJson("px.json");
+    EXPECT_EQ(document["exit"]["code"], run.exitCode);
+    EXPECT_EQ(document["exit"]["name"], "bad_input");
+    ASSERT_EQ(document["exit"]["messages"].size(), 1u);
+    EXPECT_NE(document["exit"]["messages"][0].get<std::string>().find("X = 64 is outside the image"),
+              std::string::npos);
+    EXPECT_EQ(document["width"], 64);
+    EXPECT_TRUE(document["gpu"].is_null());
+    EXPECT_TRUE(document["cpu"].is_null());
+}
+
 TEST_F(JsonCliTest, JsonRefusesToReplaceTheSceneDirectlyOrThroughASymlink) {
     fs::copy_file(test::sourcePath("scenes/lecture-demo.json"), dir_ / "scene.json");
     fs::create_symlink("scene.json", dir_ / "link.json");
     const std::string original = test::readFile(dir_ / "scene.json");
-    for (const std::string command : {"render scene.json --backend cpu -o out.png"}) {
+    for (const std::string command : {"render scene.json --backend cpu -o out.png", "pixel scene.json 1 1"}) {
         for (const std::string target : {"scene.json", "link.json"}) {
             const test::RunResult run = hexray(command + kSmall + " --json " + target);
             EXPECT_EQ(run.exitCode, 2) << command << " --json " << target;
