@@ -55,6 +55,7 @@ struct RenderOptions {
     unsigned threads = 0;        // CPU backend; 0 = all cores
     std::string aovDirectory;    // empty: no AOVs (see image/aov.h)
     std::optional<Strip> strip;  // only these rows, recorded in the file for `hexray merge`
+    std::string jsonPath;        // empty: no --json document
 };
 
 struct MergeOptions {
@@ -92,6 +93,7 @@ struct PixelOptions {
     VulkanOptions vulkan;
     PixelBackend backend = PixelBackend::Both;
     Precision precision = Precision::Auto;
+    std::string jsonPath;  // empty: no --json document
 };
 
 struct BenchOptions {

@@ -1,5 +1,7 @@
 #include "cli/gpu_session.h"
 
+#include <chrono>
+
 #include "cli/command_support.h"
 
 namespace hexray::cli {
@@ -14,7 +16,9 @@ void GpuSession::start() {
         return;
     }
     try {
+        const auto start = std::chrono::steady_clock::now();
         context_.emplace(VulkanContext::Options{options_.validate ? &log_ : nullptr, options_.device});
+        startupMilliseconds_ = millisecondsSince(start);
     } catch (const VulkanError& error) {
         failed(error);
         throw;
@@ -38,6 +42,10 @@ GpuRenderer& GpuSession::linearRenderer() {
         linearRenderer_.emplace(*context_, kBandBytes);
     }
     return *linearRenderer_;
+}
+
+std::optional<DeviceInfo> GpuSession::device() const {
+    return context_ ? std::optional<DeviceInfo>(context_->selected()) : std::nullopt;
 }
 
 const VulkanContext& GpuSession::context() {

@@ -28,12 +28,18 @@ public:
     // Whether Vulkan was set up (or failed to be) already.
     bool started() const { return context_ || failure_; }
 
+    // For --json: the device in use and how long setting Vulkan up took; none before it was set
+    // up, or when that failed.
+    std::optional<DeviceInfo> device() const;
+    std::optional<double> startupMilliseconds() const { return startupMilliseconds_; }
+
 private:
     void start();
 
     VulkanOptions options_;
     ValidationLog& log_;
     std::optional<VulkanError> failure_;
+    std::optional<double> startupMilliseconds_;
     std::optional<VulkanContext> context_;  // declared before the renderers, which it outlives
     std::optional<GpuRenderer> renderer_;
     std::optional<GpuRenderer> linearRenderer_;

@@ -126,6 +126,11 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "Render only strip I of N (0 <= I < N): rows I*H/N to (I+1)*H/N - 1, recorded in the file for "
                      "`hexray merge` (default name <scene name>.strip-I-of-N.png)")
         ->check(StripSpec());
+    command
+        ->add_option("--json", render.jsonPath,
+                     "Also write the results as JSON (- for standard output; the report then goes to standard "
+                     "error): per scene its size, backend, precision, kernel, timings and exit (docs/json-output.md)")
+        ->check(NotEmpty());
 }
 
 void addMergeCommand(CLI::App& app, CommandLine& line) {
@@ -333,6 +338,11 @@ void addPixelCommand(CLI::App& app, CommandLine& line) {
         ->capture_default_str();
     addImageOptions(*command, pixel.image);
     addDeviceOption(*command, pixel.vulkan);
+    command
+        ->add_option("--json", pixel.jsonPath,
+                     "Also write the explanation as JSON (- for standard output; the table then goes to standard "
+                     "error): each backend's ray, candidates, hit, lights and colour (docs/json-output.md)")
+        ->check(NotEmpty());
 }
 
 void addDevicesCommand(CLI::App& app, CommandLine& line) {
@@ -399,6 +409,11 @@ void checkCombinations(const CLI::App& app, const CommandLine& line) {
     }
     if (app.got_subcommand("diff") && line.diff.testPath == "-" && line.diff.referencePath == "-") {
         throw CLI::ValidationError("diff", "only one of TEST and REF can be standard input (-)");
+    }
+    const RenderOptions& render = line.render;
+    if (app.got_subcommand("render") && !render.jsonPath.empty() && !render.outputPath.empty() &&
+        namesStandardOutput(render.jsonPath) && namesStandardOutput(render.outputPath)) {
+        throw CLI::ValidationError("--json", "standard output carries the image (-o -): write the document to a file");
     }
 }
 
@@ -499,9 +514,10 @@ int main(int argc, char** argv) {
     // Standard output carries the data when an output is "-" (or a path to it): what the command
     // prints goes to standard error then.
     const int reserved = guarded([&] {
-        reserveStandardOutputForData({line.render.outputPath, line.merge.outputPath, line.compare.diffPath,
-                                      line.compare.maskPath, line.compare.jsonPath, line.compare.junitPath,
-                                      line.bench.csvPath, line.diff.heatmapPath, line.diff.jsonPath});
+        reserveStandardOutputForData({line.render.outputPath, line.render.jsonPath, line.merge.outputPath,
+                                      line.compare.diffPath, line.compare.maskPath, line.compare.jsonPath,
+                                      line.compare.junitPath, line.bench.csvPath, line.diff.heatmapPath,
+                                      line.diff.jsonPath, line.pixel.jsonPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);

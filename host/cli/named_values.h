@@ -31,6 +31,17 @@ inline NameTable<Precision> precisionNames() {
     return names;
 }
 
+// The name `value` has in `names` (as the command line spells it, for --json).
+template <class Enum>
+std::string nameOf(const NameTable<Enum>& names, Enum value) {
+    for (const auto& [name, named] : names) {
+        if (named == value) {
+            return name;
+        }
+    }
+    return "";
+}
+
 // An option `flags` setting `value` by one of `names`; anything else is refused naming them all.
 template <class Enum>
 CLI::Option* addNamedOption(CLI::App& command, const std::string& flags, Enum& value, const NameTable<Enum>& names,

@@ -3,16 +3,20 @@
 // from the reference's own functions (cpu/cpu_explain.h); both are in world units.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <cstdio>
 #include <string>
 
 #include "cli/command_support.h"
+#include "cli/json_document.h"
+#include "cli/pixel_record.h"
 #include "cpu/cpu_explain.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
 #include "image/image_io.h"
+#include "io/output_plan.h"
 #include "scene/scene_loader.h"
 #include "util/printable.h"
 
@@ -89,16 +93,6 @@ std::uint32_t statusOf(LightReach reach) {
     return gpu::TRACE_LIGHT_NOT_EVALUATED;
 }
 
-const char* kindName(const Geometry& geometry) {
-    return std::holds_alternative<Plane>(geometry) ? "plane" : "sphere";
-}
-
-const char* shaderName(const Shader& shader) {
-    return std::holds_alternative<ConstantShader>(shader)  ? "constant"
-           : std::holds_alternative<LambertShader>(shader) ? "lambert"
-                                                           : "checker";
-}
-
 // Prints label | gpu | cpu rows, one column when only one backend ran, and "<- differs" where
 // both ran and disagree.
 class Table {
@@ -114,6 +108,11 @@ public:
         }
         std::printf("\n");
     }
+    // A line that names the rows below it (indented); their labels in differingRows() start with it.
+    void heading(const std::string& label) {
+        std::printf("%s\n", label.c_str());
+        group_ = label;
+    }
     void row(const std::string& label, const std::string& gpuText, const std::string& cpuText, bool differ = false) {
         std::string text = format("%-22s", label.c_str());
         if (gpu_) {
@@ -123,19 +122,25 @@ public:
             text += format(" %-44s", cpuText.c_str());
         }
         const bool flagged = gpu_ && cpu_ && differ;
-        differences_ += flagged ? 1 : 0;
+        const bool indented = label.rfind("  ", 0) == 0;
+        if (!indented) {
+            group_ = label;
+        }
         if (flagged) {
             text += " <- differs";
+            differingRows_.push_back(indented ? group_ + " " + label.substr(2) : label);
         }
         text.erase(text.find_last_not_of(' ') + 1);
         std::printf("%s\n", text.c_str());
     }
-    int differences() const { return differences_; }
+    int differences() const { return int(differingRows_.size()); }
+    const std::vector<std::string>& differingRows() const { return differingRows_; }
 
 private:
     bool gpu_;
     bool cpu_;
-    int differences_ = 0;
+    std::string group_;  // the last heading or unindented row
+    std::vector<std::string> differingRows_;
 };
 
 void requireInRange(const char* what, std::int64_t value, std::uint32_t limit, const char* of) {
@@ -147,10 +152,15 @@ void requireInRange(const char* what, std::int64_t value, std::uint32_t limit, c
 
 // The shader's own account of the sample, after a line saying how to read it.
 GpuPixelTrace traceOnGpu(const PixelOptions& options, const Scene& scene, ValidationLog& log, std::uint32_t x,
-                         std::uint32_t y, std::uint32_t sample) {
+                         std::uint32_t y, std::uint32_t sample, PixelRecord& record) {
+    const auto startup = std::chrono::steady_clock::now();
     const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
+    record.startupMilliseconds = millisecondsSince(startup);
+    record.device = context.selected();
     GpuRenderer renderer(context);
+    const auto traceStart = std::chrono::steady_clock::now();
     const GpuPixelTrace trace = renderer.tracePixel(scene, options.precision, x, y, sample);
+    record.gpuTraceMilliseconds = millisecondsSince(traceStart);
     std::printf(
         "gpu: %s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(), context.selected().name.c_str(),
         trace.cameraRelative ? format("the shader works camera-relative, lengths divided by %g; printed here in "
@@ -192,9 +202,12 @@ public:
         printColour();
     }
 
+    // Where the backends disagree, for --json.
+    PixelComparison comparison() const { return {table_.differingRows(), !sameClass()}; }
+
     // Whether the backends agree: no row differs and the pixel's class is the same.
     void printVerdict() const {
-        const bool sameClass = shader_.node == referenceNode_ && shader_.flags == reference_.pixelClass.flags;
+        const bool sameClass = this->sameClass();
         if (table_.differences() == 0 && sameClass) {
             std::printf("gpu and cpu agree\n");
         } else {
@@ -204,6 +217,10 @@ public:
     }
 
 private:
+    bool sameClass() const {
+        return shader_.node == referenceNode_ && shader_.flags == reference_.pixelClass.flags;
+    }
+
     void printRay() {
         table_.row("ray origin", vec(shader_.rayOrigin), vec(reference_.ray.origin),
                    differs(shader_.rayOrigin, reference_.ray.origin, sceneScale_));
@@ -213,7 +230,7 @@ private:
 
     // Nodes that every backend shown misses are only counted: a scene may have thousands.
     void printCandidates() {
-        std::printf("candidates\n");
+        table_.heading("candidates");
         std::size_t missedByAll = 0;
         for (std::size_t i = 0; i < scene_.nodes.size(); ++i) {
             const double miss = std::numeric_limits<double>::infinity();
@@ -223,7 +240,7 @@ private:
                 ++missedByAll;
                 continue;
             }
-            table_.row(format("  node %zu %s", i, kindName(scene_.nodes[i].geometry)), distance(shaderT),
+            table_.row(format("  node %zu %s", i, geometryName(scene_.nodes[i].geometry)), distance(shaderT),
                        distance(referenceT), differs(shaderT, referenceT, 0.0));
         }
         if (missedByAll > 0) {
@@ -249,7 +266,7 @@ private:
         table_.row("normal (facing ray)", shaderHit_ ? vec(shader_.normal) : "",
                    referenceHit_ ? vec(referenceNormal) : "", differs(shader_.normal, referenceNormal, 1.0));
         const auto shaderText = [&](bool hit, std::uint32_t node) {
-            return hit ? std::string(shaderName(scene_.shaders.at(scene_.nodes[node].shaderIndex))) : std::string();
+            return hit ? std::string(shaderTypeName(scene_.shaders.at(scene_.nodes[node].shaderIndex))) : std::string();
         };
         table_.row("shader", shaderText(shaderHit_, shader_.node), shaderText(referenceHit_, referenceNode_));
         const bool shaderOdd = (shader_.flags & PixelClass::kOddCheckerBit) != 0;
@@ -318,12 +335,30 @@ private:
     std::uint32_t referenceNode_;
 };
 
+// --json's path, checked before any work; no document is written when it fails, since its own path
+// may be the one that would destroy a file.
+int checkDocumentPath(const PixelOptions& options) {
+    return guarded([&] {
+        OutputPlan plan;
+        plan.addInput("the scene", options.scenePath);
+        plan.addFile("--json", options.jsonPath);
+        plan.check();
+        return int(kSuccess);
+    });
+}
+
 }  // namespace
 
 int runPixel(const PixelOptions& options) {
+    if (!options.jsonPath.empty()) {
+        if (const int checked = checkDocumentPath(options); checked != kSuccess) {
+            return checked;
+        }
+    }
     ValidationLog log;
+    PixelRecord record;
     const int code = guarded([&] {
-        const Scene scene = loadScene(options.scenePath, options.image);
+        const Scene& scene = record.scene.emplace(loadScene(options.scenePath, options.image));
         requireInRange("X", options.x, scene.image.width, "the width");
         requireInRange("Y", options.y, scene.image.height, "the height");
         requireInRange("--sample", options.sample, scene.image.samplesPerPixel, "the sample count");
@@ -335,10 +370,15 @@ int runPixel(const PixelOptions& options) {
 
         std::printf("pixel (%u, %u) of %s (%ux%u), sample %u of %u\n", x, y, printable(options.scenePath).c_str(),
                     scene.image.width, scene.image.height, sample, scene.image.samplesPerPixel);
-        const GpuPixelTrace shader = useGpu ? traceOnGpu(options, scene, log, x, y, sample) : GpuPixelTrace{};
+        const GpuPixelTrace shader =
+            useGpu ? record.shader.emplace(traceOnGpu(options, scene, log, x, y, sample, record)) : GpuPixelTrace{};
+        const auto explainStart = std::chrono::steady_clock::now();
         const CpuPixelExplanation reference = useCpu ? explainPixel(scene, x, y, sample) : CpuPixelExplanation{};
         const float margin = useCpu ? pixelMargin(scene, x, y) : 0.0f;
         if (useCpu) {
+            record.cpuExplainMilliseconds = millisecondsSince(explainStart);
+            record.reference = reference;
+            record.margin = margin;
             std::printf("cpu: double-precision reference, world units\n");
         }
         std::printf("\n");
@@ -352,10 +392,16 @@ int runPixel(const PixelOptions& options) {
         }
         if (useGpu && useCpu) {
             report.printVerdict();
+            record.comparison = report.comparison();
         }
         return int(kSuccess);
     });
-    return withValidationVerdict(code, log);
+    const int verdict = withValidationVerdict(code, log);
+    if (options.jsonPath.empty()) {
+        return verdict;
+    }
+    nlohmann::json document = pixelDocument(options, record);
+    return finishJson(options.jsonPath, document, verdict);
 }
 
 }  // namespace hexray::cli

@@ -11,7 +11,9 @@
 
 #include "cli/command_support.h"
 #include "cli/gpu_session.h"
+#include "cli/json_document.h"
 #include "cli/progress.h"
+#include "cli/render_record.h"
 #include "cli/render_targets.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
@@ -155,14 +157,16 @@ GpuRenderResult renderImageOnGpu(const SceneRender& job, GpuSession& gpu, const 
 // then, with --aov, the AOVs in a second pass in the shader's AOV mode, so that the image is the
 // one a render without --aov writes. Returns how, for the summary line.
 std::string renderOnGpu(const SceneRender& job, GpuSession& gpu, std::optional<ImageRowWriter>& writer,
-                        std::optional<StagedAovs>& aovs) {
+                        std::optional<StagedAovs>& aovs, SceneRecord& record) {
     // glslang sets itself up while the Vulkan instance and device are created.
     std::optional<ShaderCompilerWarmUp> compilerWarmUp;
     if (isSmallScene(job.scene) && !gpu.started()) {
         compilerWarmUp.emplace();
     }
-    const RenderPlan plan =
-        gpu.renderer().plan(job.scene, {job.options.precision, Acceleration::Auto, job.options.culling});
+    GpuRenderer& renderer = gpu.renderer();  // Vulkan starts here, outside the plan's time
+    const auto planStart = std::chrono::steady_clock::now();
+    const RenderPlan plan = renderer.plan(job.scene, {job.options.precision, Acceleration::Auto, job.options.culling});
+    const double planMilliseconds = millisecondsSince(planStart);
     for (const std::string& warning : plan.warnings) {
         std::fprintf(stderr, "hexray: warning: %s\n", warning.c_str());
     }
@@ -178,6 +182,14 @@ std::string renderOnGpu(const SceneRender& job, GpuSession& gpu, std::optional<I
                 aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
             });
     }
+    record.gpu = GpuSceneRecord{.precision = plan.precision,
+                                .kernelName = plan.kernel.name,
+                                .generatedKernel = plan.kernel.code != nullptr,
+                                .tileClasses = plan.tileClasses.kernels.size(),
+                                .candidateLists = result.usedCandidateLists,
+                                .warnings = plan.warnings,
+                                .planMilliseconds = planMilliseconds,
+                                .timing = result.timing};
     char how[512];
     std::snprintf(how, sizeof how,
                   "gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's "
@@ -200,7 +212,7 @@ std::uint32_t cpuBandRows(const CpuBandRenderer& renderer, std::uint32_t rows) {
 }
 
 std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& writer,
-                        std::optional<StagedAovs>& aovs) {
+                        std::optional<StagedAovs>& aovs, SceneRecord& record) {
     const CpuBandRenderer renderer(job.scene, job.options.threads, Acceleration::Auto,
                                    !job.options.aovDirectory.empty());
     const Provenance provenance = job.provenance("cpu", "cpu reference", std::string(precisionName(Precision::F64)));
@@ -220,6 +232,7 @@ std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& w
         }
         progress.update(firstRow + band.image.height - job.rows.first);
     }
+    record.cpu = CpuSceneRecord{renderer.threadCount(), milliseconds};
     char how[128];
     std::snprintf(how, sizeof how, "cpu reference (%u threads): render %.2f ms", renderer.threadCount(), milliseconds);
     return how;
@@ -261,34 +274,46 @@ void handOver(const VulkanError& failure, GpuSession& gpu, Fallback& fallback) {
 
 // Renders one scene into its file on the backend asked for; returns how, for the summary line.
 std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallback,
-                        std::optional<ImageRowWriter>& writer, std::optional<StagedAovs>& aovs) {
+                        std::optional<ImageRowWriter>& writer, std::optional<StagedAovs>& aovs, SceneRecord& record) {
     if (job.options.backend != Backend::Cpu) {
         try {
-            return renderOnGpu(job, gpu, writer, aovs);
+            return renderOnGpu(job, gpu, writer, aovs, record);
         } catch (const PlanRefused& refusal) {
             if (!fallback.allowed(refusal.reason())) {
                 throw;
             }
+            record.fallbackReason = refusal.reason();
         } catch (const VulkanError& error) {
             handOver(error, gpu, fallback);
+            record.fallbackReason = error.reason();
         } catch (const vk::SystemError& error) {
-            handOver(classify(error, "rendering"), gpu, fallback);
+            const VulkanError failure = classify(error, "rendering");
+            handOver(failure, gpu, fallback);
+            record.fallbackReason = failure.reason();
         }
         writer.reset();  // drops the GPU's partial rows with their temporary file
         aovs.reset();
+        record.gpu.reset();
     }
-    return renderOnCpu(job, writer, aovs);
+    return renderOnCpu(job, writer, aovs, record);
 }
 
-int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback) {
+int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback,
+                SceneRecord& record) {
     if (!target.problem.empty()) {
         throw SceneError(printable(target.scenePath) + ": " + target.problem);
     }
+    const auto loadStart = std::chrono::steady_clock::now();
     const SceneRender job(options, target);
+    record.loadMilliseconds = millisecondsSince(loadStart);
+    record.image = job.scene.image;
+    record.rows = options.strip ? std::optional<RowRange>(job.rows) : std::nullopt;
     std::optional<ImageRowWriter> writer;
     std::optional<StagedAovs> aovs;
-    const std::string how = renderImage(job, gpu, fallback, writer, aovs);
+    const std::string how = renderImage(job, gpu, fallback, writer, aovs, record);
+    const auto writeStart = std::chrono::steady_clock::now();
     writer->finish();
+    record.writeMilliseconds = millisecondsSince(writeStart);
     const ImageSettings& image = job.scene.image;
     std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
     if (options.strip) {
@@ -298,6 +323,7 @@ int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSes
     if (aovs) {
         // Only now, so a failed render leaves the directory's earlier AOVs as they were.
         const std::size_t files = aovs->commit().size();
+        record.aovFiles = files;
         std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files,
                     printable(options.aovDirectory).c_str());
     }
@@ -328,6 +354,9 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
     if (!options.aovDirectory.empty()) {
         plan.addDirectory("--aov", options.aovDirectory, isAovFileName);
     }
+    if (!options.jsonPath.empty()) {
+        plan.addFile("--json", options.jsonPath);
+    }
     plan.check();
     for (const RenderTarget* target : rendered) {
         if (!target->format) {
@@ -339,12 +368,21 @@ void checkPaths(const RenderOptions& options, const std::vector<RenderTarget>& t
 
 // Renders every target, each on its own: one that fails is reported and the rest still render.
 // The exit code is the first failure's.
-int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& targets, GpuSession& gpu) {
+int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& targets, GpuSession& gpu,
+               std::vector<SceneRecord>& records) {
     Fallback fallback(options.backend);
     int firstFailure = kSuccess;
     std::vector<std::string> failed;
     for (const RenderTarget& target : targets) {
-        const int code = guarded([&] { return renderScene(options, target, gpu, fallback); });
+        SceneRecord& record = records.emplace_back();
+        record.scenePath = target.scenePath;
+        record.outputPath = target.outputPath;
+        const std::size_t earlierErrors = errorsPrinted().size();
+        const auto start = std::chrono::steady_clock::now();
+        const int code = guarded([&] { return renderScene(options, target, gpu, fallback, record); });
+        record.totalMilliseconds = millisecondsSince(start);
+        record.exitCode = code;
+        record.messages.assign(errorsPrinted().begin() + std::ptrdiff_t(earlierErrors), errorsPrinted().end());
         if (code != kSuccess) {
             firstFailure = firstFailure == kSuccess ? code : firstFailure;
             failed.push_back(target.scenePath);
@@ -363,13 +401,30 @@ int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& ta
 
 int runRender(const RenderOptions& options) {
     ValidationLog log;
+    std::vector<SceneRecord> records;
+    std::optional<DeviceInfo> device;
+    std::optional<double> startupMilliseconds;
+    bool documentMayBeWritten = true;
     const int code = guarded([&] {
         const std::vector<RenderTarget> targets = renderTargets(options);
-        checkPaths(options, targets);
+        try {
+            checkPaths(options, targets);
+        } catch (const OutputConflict&) {
+            documentMayBeWritten = false;  // its own path may be the one that would destroy a file
+            throw;
+        }
         GpuSession gpu(options.vulkan, log);
-        return renderEach(options, targets, gpu);
+        const int rendered = renderEach(options, targets, gpu, records);
+        device = gpu.device();
+        startupMilliseconds = gpu.startupMilliseconds();
+        return rendered;
     });
-    return withValidationVerdict(code, log);
+    const int verdict = withValidationVerdict(code, log);
+    if (options.jsonPath.empty() || !documentMayBeWritten) {
+        return verdict;
+    }
+    nlohmann::json document = renderDocument(options, records, device, startupMilliseconds);
+    return finishJson(options.jsonPath, document, verdict);
 }
 
 }  // namespace hexray::cli
