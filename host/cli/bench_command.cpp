@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bench/bench_backends.h"
+#include "bench/bench_csv.h"
 #include "bench/bench_report.h"
 #include "bench/lecture_demo_ceiling.h"
 #include "cli/command_support.h"
