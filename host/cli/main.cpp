@@ -228,6 +228,10 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
         ->capture_default_str();
     command->add_option("--csv", bench.csvPath, "Also write the table as CSV (- for standard output)")
         ->check(NotEmpty());
+    command
+        ->add_option("--json", bench.jsonPath,
+                     "Also write every figure as JSON (- for standard output; docs/json-output.md)")
+        ->check(NotEmpty());
 }
 
 void addPixelCommand(CLI::App& app, CommandLine& line) {
@@ -321,6 +325,9 @@ int checkBenchPaths(const BenchOptions& bench) {
         if (!bench.csvPath.empty()) {
             plan.addFile("--csv", bench.csvPath);
         }
+        if (!bench.jsonPath.empty()) {
+            plan.addFile("--json", bench.jsonPath);
+        }
         plan.check();
         return int(kSuccess);
     });
@@ -405,7 +412,8 @@ int main(int argc, char** argv) {
     // prints goes to standard error then.
     const int reserved = guarded([&] {
         reserveStandardOutputForData({line.render.outputPath, line.merge.outputPath, line.compare.diffPath,
-                                      line.compare.maskPath, line.bench.csvPath});
+                                      line.compare.maskPath, line.bench.csvPath,
+                                      line.bench.jsonPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);

@@ -4,6 +4,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -152,6 +154,72 @@ TEST_F(BenchCliTest, CsvNumbersKeepFullPrecisionAndNotApplicableIsEmpty) {
         EXPECT_EQ(field(rows, row, "culling_asked").empty(), backend != "lavapipe") << backend;
     }
     EXPECT_EQ(text_.find("\xe2\x80\x93"), std::string::npos) << "a dash stands for a value";
+}
+
+TEST_F(BenchCliTest, JsonHasEveryConfigurationAndAgreesWithTheCsv) {
+    writeScene("many.json", manySpheresScene());
+    const RunResult run = hexray("bench many.json --spheres 2" + std::string(kSmallBench) + " --csv b.csv --json b.json");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const RunResult valid = validateJson("b.json");
+    EXPECT_EQ(valid.exitCode, 0) << valid.out << valid.err;
+    EXPECT_EQ(valid.out, "");
+    const nlohmann::json document = nlohmann::json::parse(readFile(dir_ / "b.json"));
+    EXPECT_EQ(document["schema"], "hexray-bench/1");
+    EXPECT_EQ(document["exit"]["code"], 0);
+    EXPECT_EQ(document["exit"]["name"], "success");
+    EXPECT_GT(document["timings_ms"]["startup"].get<double>(), 0.0);
+    EXPECT_GE(document["timings_ms"]["wall"].get<double>(), document["timings_ms"]["startup"].get<double>());
+    EXPECT_FALSE(document["device"]["name"].get<std::string>().empty());
+    const Rows rows = csvRows(readFile(dir_ / "b.csv"));
+    ASSERT_EQ(document["scenes"].size(), 2u);  // many, and the curve's 2-sphere scene
+    EXPECT_EQ(document["scenes"][1]["spheres"], 2);
+    std::size_t row = 1;
+    for (const nlohmann::json& scene : document["scenes"]) {
+        for (const nlohmann::json& configuration : scene["configurations"]) {
+            ASSERT_LT(row, rows.size());
+            SCOPED_TRACE(configuration.dump());
+            EXPECT_EQ(field(rows, row, "scene"), scene["name"]);
+            EXPECT_EQ(field(rows, row, "backend"), configuration["backend"]);
+            EXPECT_EQ(field(rows, row, "precision_used"), configuration["precision"]["used"]);
+            // One run's figures, written in full both ways: the same numbers.
+            EXPECT_EQ(number(field(rows, row, "median_mpix_s")), configuration["speed"]["median_mpix_s"].get<double>());
+            EXPECT_EQ(number(field(rows, row, "precision_rmse_levels")),
+                      configuration["error"]["precision"]["rmse_levels"].get<double>());
+            const bool culled = configuration["culling"]["used"].is_boolean() && configuration["culling"]["used"];
+            EXPECT_EQ(field(rows, row, "culling_used") == "on", culled);
+            if (configuration["backend"] == "lavapipe") {
+                // Past SMALL_SCENE_CAPACITY the data-driven kernel runs, which culling does not apply to.
+                EXPECT_EQ(configuration["kernel"] == "generated", scene["name"] == "random-spheres");
+                EXPECT_FALSE(culled && scene["name"] == "many");
+            }
+            ++row;
+        }
+    }
+    EXPECT_EQ(row, rows.size());
+}
+
+TEST_F(BenchCliTest, JsonToStandardOutputLeavesTheTablesOnStandardError) {
+    const RunResult run = hexray("bench " + scene("lecture-demo.json") + kSmallBench + " --json -");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json document = nlohmann::json::parse(run.out);
+    EXPECT_EQ(document["command"], "bench");
+    EXPECT_NE(run.err.find("| scene | resolution | backend |"), std::string::npos) << run.err;
+    std::ofstream(dir_ / "out.json") << run.out;
+    EXPECT_EQ(validateJson("out.json").exitCode, 0);
+}
+
+TEST_F(BenchCliTest, AFailedBenchStillWritesItsDocument) {
+    writeScene("bad.json", "{\"image\": ");
+    const RunResult run = hexray("bench bad.json" + std::string(kSmallBench) + " --json b.json");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    const RunResult valid = validateJson("b.json");
+    EXPECT_EQ(valid.exitCode, 0) << valid.out;
+    const nlohmann::json document = nlohmann::json::parse(readFile(dir_ / "b.json"));
+    EXPECT_EQ(document["exit"]["code"], 2);
+    EXPECT_EQ(document["exit"]["name"], "bad_input");
+    ASSERT_FALSE(document["exit"]["messages"].empty());
+    EXPECT_NE(document["exit"]["messages"][0].get<std::string>().find("bad.json"), std::string::npos);
+    EXPECT_TRUE(document["scenes"].empty());
 }
 
 }  // namespace
