@@ -22,17 +22,17 @@ def scene_targets(rows, scene, width, spp="1"):
     """The demo scene's targets (against the hand-written kernel) and f64 against f32 on any scene."""
     lines = []
     base = dict(scene=scene, width=width, spp=spp, backend="lavapipe")
-    auto = [row for row in rows_where(rows, **base) if row["precision"].endswith("(auto)")]
+    auto = rows_where(rows, **base, auto_pick="true")
     hand = rows_where(rows, scene=scene, width=width, spp=spp, backend="lavapipe hand-written")
     if hand:
         for culling, target in (("off", 1.0), ("on", 1.6)):
-            row = [r for r in auto if r["culling"] == culling][0]
+            row = [r for r in auto if r["culling_asked"] == culling][0]
             ratio = mpix(row) / mpix(hand[0])
-            lines.append((f"{scene}: default renderer ({row['precision']}), culling {culling}, vs the hand-written "
+            lines.append((f"{scene}: default renderer ({row['precision_used']} (auto)), culling {culling}, vs the hand-written "
                           f"kernel >= {target}", f"{mpix(row):.1f} / {mpix(hand[0]):.1f} = {ratio:.2f}",
                           ratio >= target))
     for culling in ("off", "on"):
-        width_of = {row["precision"].split()[0]: row for row in rows_where(rows, **base, culling=culling)}
+        width_of = {row["precision_used"]: row for row in rows_where(rows, **base, culling_asked=culling)}
         if "f32" in width_of and "f64" in width_of:
             f32, f64 = width_of["f32"], width_of["f64"]
             ratio = mpix(f32) / mpix(f64)

@@ -27,13 +27,18 @@ def pareto(points):
     return frontier
 
 
+def precision(row):
+    """The precision that ran, marked where it is the one `auto` picks."""
+    return row["precision_used"] + (" (auto)" if row["auto_pick"] == "true" else "")
+
+
 def pareto_panel(axis, scene, rows):
     points = []
     for row in rows:
         time = float(row["median_render_ms"])
         error = float(row["precision_rmse_levels"])
-        culled = " culled" if row["culling"] == "on" else ""
-        label = f'{row["backend"]} {row["precision"]}{culled} {row["spp"]}spp'
+        culled = " culled" if row["culling_used"] == "on" else ""
+        label = f'{row["backend"]} {precision(row)}{culled} {row["spp"]}spp'
         points.append((time, error, label))
         marker = "s" if row["backend"] == "cpu-reference" else "^" if row["backend"].startswith("embree") else (
             "D" if "hand-written" in row["backend"] else "o")
@@ -53,7 +58,7 @@ def pareto_panel(axis, scene, rows):
 def curve_panels(speed_axis, cost_axis, rows):
     series = {}
     for row in rows:
-        key = f'{row["backend"]} {row["precision"]} {row["spp"]}spp'
+        key = f'{row["backend"]} {precision(row)} {row["spp"]}spp'
         series.setdefault(key, []).append(
             (int(row["spheres"]), float(row["median_mpix_s"]), float(row["core_ns_per_pixel"])))
     for key, points in sorted(series.items()):

@@ -28,7 +28,38 @@ unsigned lavapipeThreads() {
 // "frame ms" would measure that. The bench keeps them all.
 constexpr KeptKernels kBenchKeptKernels{64, 64};
 
+BenchKernel kernelOf(const RenderPlan& plan, bool handWritten) {
+    if (handWritten) {
+        return BenchKernel::HandWritten;
+    }
+    switch (plan.layout) {
+        case SceneLayout::Uniform:
+            return BenchKernel::Generated;
+        case SceneLayout::Storage:
+            return BenchKernel::DataDriven;
+        case SceneLayout::StorageCandidates:
+            return BenchKernel::DataDrivenCandidates;
+    }
+    return BenchKernel::None;
+}
+
 }  // namespace
+
+const char* benchKernelName(BenchKernel kernel) {
+    switch (kernel) {
+        case BenchKernel::None:
+            return "";
+        case BenchKernel::Generated:
+            return "generated";
+        case BenchKernel::DataDriven:
+            return "data-driven";
+        case BenchKernel::DataDrivenCandidates:
+            return "data-driven-candidates";
+        case BenchKernel::HandWritten:
+            return "hand-written";
+    }
+    return "";
+}
 
 #ifdef HEXRAY_WITH_EMBREE
 BenchBackends::BenchBackends(const VulkanContext::Options& vulkan)
@@ -105,6 +136,8 @@ void BenchBackends::measureGpu(const Scene& scene, const BenchConfiguration& con
     measurement.uploadMilliseconds.push_back(render.timing.uploadMilliseconds);
     measurement.encoded = std::move(render.encoded);
     measurement.precision = plan.precision;
+    measurement.kernel = kernelOf(plan, handWritten);
+    measurement.culled = plan.tileClasses.classification != nullptr;
     if (withClasses && !handWritten) {
         measurement.classes = gpu_.render(scene, plan, GpuOutput::LinearAndClasses).classes;
     }

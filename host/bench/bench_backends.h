@@ -3,6 +3,7 @@
 // what a render is timed and judged by. The renderers themselves are the project's own; the
 // bench's yardsticks (the hand-written kernel, Embree) live beside it.
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "image/image_io.h"
 #include "image/pixel_class.h"
 #include "scene/scene.h"
+#include "util/milliseconds_since.h"
 #include "vulkan/vulkan_context.h"
 
 namespace hexray::inline embree {
@@ -31,6 +33,19 @@ enum class BenchBackend {
     EmbreeSingle,    // Embree 3, one ray at a time
     EmbreePackets,   // Embree 3, coherent 8-ray packets
 };
+
+// The GPU kernel a configuration ran: the plan decides, whatever the configuration asked (culling
+// applies to generated kernels only).
+enum class BenchKernel {
+    None,                  // not a GPU backend
+    Generated,             // generated for the scene (uniform layout)
+    DataDriven,            // the data-driven kernel, every node for every ray
+    DataDrivenCandidates,  // the data-driven kernel with candidate lists
+    HandWritten,           // the lecture demo's hand-written kernel
+};
+
+// "generated", "data-driven", "data-driven-candidates", "hand-written"; "" for None.
+const char* benchKernelName(BenchKernel kernel);
 
 // One thing to measure: a backend (with a precision and culling for the GPU) at a sample count on
 // one scene.
@@ -53,6 +68,8 @@ struct BenchMeasurement {
     std::vector<PixelClass> classes;         // empty for the hand-written kernel, which writes none
     std::vector<float> margins;              // CPU reference only
     Precision precision = Precision::Auto;   // GPU: the plan's
+    BenchKernel kernel = BenchKernel::None;  // GPU: the kernel the plan chose
+    bool culled = false;                     // GPU: rendered by tile classes (culling applied)
 };
 
 class BenchBackends {
@@ -62,6 +79,9 @@ public:
 
     bool hasFloat64() const { return context_.selected().hasFloat64; }
     bool hasEmbree() const { return embree_ != nullptr; }
+    const DeviceInfo& device() const { return context_.selected(); }
+    // Milliseconds to create the Vulkan context (instance and device).
+    double startupMilliseconds() const { return startupMilliseconds_; }
     std::string embreeVersion() const;
     Precision autoPrecision(const Scene& scene) const { return gpu_.resolve(scene, Precision::Auto); }
     // The GPU renderer's pipelines made so far (GpuRenderer::pipelinesCreated).
@@ -85,7 +105,9 @@ private:
     void measureGpu(const Scene& scene, const BenchConfiguration& configuration, bool withClasses,
                     BenchMeasurement& measurement);
 
+    std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();  // before context_
     VulkanContext context_;
+    double startupMilliseconds_ = millisecondsSince(constructed_);  // after context_
     GpuRenderer gpu_;
     bool isLavapipe_ = false;
     std::string gpuName_;

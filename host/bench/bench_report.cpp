@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
 
 namespace hexray::inline bench {
 namespace {
@@ -12,12 +11,34 @@ double median(std::vector<double> values) {
     return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
-bool isGpu(BenchBackend backend) {
-    return backend == BenchBackend::Gpu || backend == BenchBackend::GpuHandWritten;
-}
-
 bool isEmbree(BenchBackend backend) {
     return backend == BenchBackend::EmbreeSingle || backend == BenchBackend::EmbreePackets;
+}
+
+// What was asked and what ran: the plan's precision and kernel for the GPU, each other backend's
+// own arithmetic.
+void describeConfiguration(const BenchConfiguration& configuration, const BenchMeasurement& measurement,
+                           BenchRow& row) {
+    row.kernel = measurement.kernel;
+    switch (configuration.backend) {
+        case BenchBackend::Gpu:
+            row.precisionAsked = configuration.precision;
+            row.precision = measurement.precision;
+            row.cullingAsked = configuration.culling == Culling::On;
+            row.cullingUsed = measurement.culled;
+            return;
+        case BenchBackend::GpuHandWritten:
+            row.precision = Precision::F32Naive;
+            row.cullingUsed = measurement.culled;
+            return;
+        case BenchBackend::Cpu:
+            row.precision = Precision::F64;
+            return;
+        case BenchBackend::EmbreeSingle:
+        case BenchBackend::EmbreePackets:
+            row.precision = Precision::F32;
+            return;
+    }
 }
 
 BenchRow rowFor(const BenchScene& bench, const BenchConfiguration& configuration, const BenchMeasurement& measurement,
@@ -31,11 +52,13 @@ BenchRow rowFor(const BenchScene& bench, const BenchConfiguration& configuration
     row.medianMpix = pixels * 1e-3 / row.medianMs;
     row.bestMpix = pixels * 1e-3 / bestMs;
     row.frameMs = median(measurement.frameMilliseconds);
-    row.planMs = median(measurement.planMilliseconds);
-    row.uploadMs = median(measurement.uploadMilliseconds);
+    if (isGpu(configuration.backend)) {
+        row.planMs = median(measurement.planMilliseconds);
+        row.uploadMs = median(measurement.uploadMilliseconds);
+    }
     row.threads = backends.threads(configuration.backend);
     row.coreNsPerPixel = row.medianMs * 1e6 * std::max(1u, row.threads) / pixels;
-    row.precision = measurement.precision;
+    describeConfiguration(configuration, measurement, row);
 
     Scene sampled = bench.scene;
     sampled.image.samplesPerPixel = configuration.samplesPerPixel;
@@ -87,6 +110,12 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
+// Mpix/s to three significant digits: a slow backend's figure (the CPU reference on a big scene)
+// still reads as more than 0.0.
+std::string mpix(double value) {
+    return format(value >= 100 ? "%.0f" : "%.3g", value);
+}
+
 std::string optional(const std::optional<double>& value, const char* pattern) {
     return value ? format(pattern, *value) : "–";
 }
@@ -106,11 +135,16 @@ std::string precisionText(const BenchRow& row) {
     return "";
 }
 
+// As asked; "on (not run)" where the plan could not cull (the data-driven kernel, or no tile class
+// less than the whole scene).
 std::string cullingText(const BenchRow& row) {
-    if (row.configuration.backend != BenchBackend::Gpu || !row.work) {
+    if (!row.cullingAsked) {
         return "–";
     }
-    return row.configuration.culling == Culling::On ? "on" : "off";
+    if (*row.cullingAsked && !row.cullingUsed.value_or(false)) {
+        return "on (not run)";
+    }
+    return *row.cullingAsked ? "on" : "off";
 }
 
 std::string mismatches(const BenchRow& row) {
@@ -147,12 +181,12 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
             return row->work ? format("%.2f", (*row->work).*field) : "–";
         };
         std::printf(
-            "| %s | %ux%u | %s | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %s | %s | %s | %.3f | %.3f%% "
+            "| %s | %ux%u | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %s | %s | %s | %.3f | %.3f%% "
             "| %s |\n",
             bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
             backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(), cullingText(*row).c_str(),
-            row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix, row->frameMs,
-            optional(row->versusHandWritten, "%.2f").c_str(), work(&WorkPerPixel::primaryTests).c_str(),
+            row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
+            row->frameMs, optional(row->versusHandWritten, "%.2f").c_str(), work(&WorkPerPixel::primaryTests).c_str(),
             work(&WorkPerPixel::shadowRays).c_str(), work(&WorkPerPixel::shadowTests).c_str(),
             optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f").c_str(),
             row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
@@ -168,19 +202,22 @@ void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<Be
     std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, true)) {
         const BenchScene& bench = scenes[row->configuration.scene];
-        const bool gpu = isGpu(row->configuration.backend);
         std::printf(
-            "| %u | %ux%u | %s | %s | %u | %.1f | %.1f | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
+            "| %u | %ux%u | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
             *bench.spheres, bench.scene.image.width, bench.scene.image.height,
             backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
-            row->configuration.samplesPerPixel, row->medianMpix, row->bestMpix, row->frameMs,
-            gpu ? format("%.1f", row->planMs).c_str() : "–", gpu ? format("%.1f", row->uploadMs).c_str() : "–",
+            row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
+            row->frameMs, optional(row->planMs, "%.1f").c_str(), optional(row->uploadMs, "%.1f").c_str(),
             row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(), row->precisionError.rmse,
             100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
     }
 }
 
 }  // namespace
+
+bool isGpu(BenchBackend backend) {
+    return backend == BenchBackend::Gpu || backend == BenchBackend::GpuHandWritten;
+}
 
 std::vector<BenchRow> benchRows(const std::vector<BenchScene>& scenes,
                                 const std::vector<BenchConfiguration>& configurations,
@@ -212,34 +249,6 @@ void printBenchTables(const std::vector<BenchScene>& scenes, const std::vector<B
     for (const std::string& note : notes) {
         std::printf("%s\n", note.c_str());
     }
-}
-
-std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
-                     const BenchBackends& backends) {
-    std::ostringstream csv;
-    csv << "scene,width,height,backend,precision,culling,spp,median_mpix_s,best_mpix_s,median_render_ms,"
-           "median_frame_ms,plan_ms,upload_ms,vs_hand_written,vs_embree,primary_tests_per_pixel,"
-           "shadow_rays_per_pixel,shadow_tests_per_pixel,sampling_rmse_levels,precision_rmse_levels,"
-           "precision_max_abs_levels,pixels_over_one_level,topology_mismatches,spheres,threads,core_ns_per_pixel\n";
-    const auto value = [](const std::optional<double>& v) { return v ? std::to_string(*v) : std::string(); };
-    for (const BenchRow& row : rows) {
-        const BenchScene& bench = scenes[row.configuration.scene];
-        csv << bench.name << ',' << bench.scene.image.width << ',' << bench.scene.image.height << ','
-            << backends.name(row.configuration.backend) << ',' << precisionText(row) << ',' << cullingText(row) << ','
-            << row.configuration.samplesPerPixel << ',' << row.medianMpix << ',' << row.bestMpix << ',' << row.medianMs
-            << ',' << row.frameMs << ',' << row.planMs << ',' << row.uploadMs << ',' << value(row.versusHandWritten)
-            << ',' << value(row.versusEmbree) << ','
-            << value(row.work ? std::optional(row.work->primaryTests) : std::nullopt) << ','
-            << value(row.work ? std::optional(row.work->shadowRays) : std::nullopt) << ','
-            << value(row.work ? std::optional(row.work->shadowTests) : std::nullopt) << ','
-            << value(row.samplingError ? std::optional(row.samplingError->rmse) : std::nullopt) << ','
-            << row.precisionError.rmse << ',' << row.precisionError.maxAbs << ','
-            << row.precisionError.pixelsOverOneLevel << ','
-            << (row.topology ? std::to_string(row.topology->mismatches) : "") << ','
-            << (bench.spheres ? std::to_string(*bench.spheres) : "") << ',' << row.threads << ',' << row.coreNsPerPixel
-            << '\n';
-    }
-    return csv.str();
 }
 
 }  // namespace hexray::bench

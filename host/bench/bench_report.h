@@ -1,6 +1,7 @@
 #pragma once
 // `hexray bench`'s results: one row per configuration (speed, the work its kernel does, and its
-// errors against two references), printed as markdown tables and written as CSV.
+// errors against two references), printed as markdown tables (bench_csv.h and the command's --json
+// write them as data).
 
 #include <cstdint>
 #include <map>
@@ -33,11 +34,18 @@ struct BenchScene {
 
 struct BenchRow {
     BenchConfiguration configuration;
-    Precision precision = Precision::Auto;  // GPU: the plan's
+    // What the configuration asked for and what ran. Asked: the renderer's configurable backend
+    // only. Used: the arithmetic of every backend (the CPU reference f64, Embree f32, the
+    // hand-written kernel the textbook f32-naive).
+    std::optional<Precision> precisionAsked;
+    Precision precision = Precision::Auto;  // used
     bool chosenByAuto = false;              // GPU: the precision `auto` picks for the scene
+    BenchKernel kernel = BenchKernel::None;
+    std::optional<bool> cullingAsked;  // the renderer's configurable backend only
+    std::optional<bool> cullingUsed;   // GPU: whether tile classes rendered it
     double medianMpix = 0, bestMpix = 0, medianMs = 0, frameMs = 0;
-    double planMs = 0, uploadMs = 0;  // GPU: host-side preparation, medians
-    unsigned threads = 0;
+    std::optional<double> planMs, uploadMs;  // GPU: host-side preparation, medians
+    unsigned threads = 0;                    // 0 for a real GPU
     double coreNsPerPixel = 0;
     std::optional<double> versusHandWritten;     // the hand-written kernel's row at the same scene and spp
     std::optional<double> versusEmbree;          // the faster Embree row at the same scene and spp
@@ -47,6 +55,8 @@ struct BenchRow {
     std::optional<WorkPerPixel> work;            // GPU kernels generated for the scene
 };
 
+bool isGpu(BenchBackend backend);
+
 std::vector<BenchRow> benchRows(const std::vector<BenchScene>& scenes,
                                 const std::vector<BenchConfiguration>& configurations,
                                 const std::vector<BenchMeasurement>& measurements, BenchBackends& backends);
@@ -54,8 +64,5 @@ std::vector<BenchRow> benchRows(const std::vector<BenchScene>& scenes,
 // The file scenes' table, the curve's, and the notes, on standard output.
 void printBenchTables(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
                       const BenchBackends& backends, const std::vector<std::string>& notes);
-
-std::string benchCsv(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
-                     const BenchBackends& backends);
 
 }  // namespace hexray::bench

@@ -8,9 +8,12 @@
 #include <string>
 
 #include "bench/bench_backends.h"
+#include "bench/bench_csv.h"
 #include "bench/bench_report.h"
 #include "bench/lecture_demo_ceiling.h"
+#include "cli/bench_json.h"
 #include "cli/command_support.h"
+#include "cli/json_document.h"
 #include "cli/progress.h"
 #include "cpu/cpu_renderer.h"
 #include "demo_scene.h"
@@ -242,12 +245,31 @@ void writeCsv(const std::string& path, const std::string& text) {
     file.commit();
 }
 
+// What the bench was asked to measure, and the parts of the document filled as it goes.
+nlohmann::json startDocument(const BenchOptions& options) {
+    nlohmann::json document = jsonDocument("bench");
+    document["timings_ms"]["startup"] = nullptr;
+    document["device"] = nullptr;
+    document["settings"] = {{"rounds", options.rounds},
+                            {"samples", options.samples},
+                            {"reference_samples", options.referenceSamples},
+                            {"spheres", options.sphereCounts},
+                            {"max_frame_seconds", options.maxFrameSeconds}};
+    document["embree"] = nullptr;
+    document["scenes"] = nlohmann::json::array();
+    document["notes"] = nlohmann::json::array();
+    return document;
+}
+
 }  // namespace
 
 int runBench(const BenchOptions& options) {
     ValidationLog log;
+    nlohmann::json document = startDocument(options);
     const int code = guarded([&] {
         BenchBackends backends({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
+        document["timings_ms"]["startup"] = backends.startupMilliseconds();
+        document["device"] = jsonDevice(backends.device());
         Bench bench;
         bench.scenes = fileScenes(options);
         for (std::size_t index = 0; index < bench.scenes.size(); ++index) {
@@ -264,9 +286,12 @@ int runBench(const BenchOptions& options) {
         if (!options.csvPath.empty()) {
             writeCsv(options.csvPath, benchCsv(bench.scenes, rows, backends));
         }
+        document["embree"] = backends.hasEmbree() ? nlohmann::json(backends.embreeVersion()) : nullptr;
+        document["scenes"] = benchScenesJson(bench.scenes, rows, backends);
+        document["notes"] = bench.notes;
         return int(kSuccess);
     });
-    return withValidationVerdict(code, log);
+    return finishJson(options.jsonPath, document, withValidationVerdict(code, log));
 }
 
 }  // namespace hexray::cli

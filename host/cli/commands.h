@@ -108,6 +108,7 @@ struct BenchOptions {
     std::vector<std::uint32_t> samples = {1, 4};  // spp of the configurations measured
     std::uint32_t referenceSamples = 64;          // spp of the converged CPU reference
     std::string csvPath;                          // empty: no CSV
+    std::string jsonPath;                         // --json: empty, none; "-", standard output
 };
 
 // `hexray diff TEST REF`: thresholds apply to each pixel's largest channel difference on the

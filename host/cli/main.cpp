@@ -320,6 +320,10 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
         ->capture_default_str();
     command->add_option("--csv", bench.csvPath, "Also write the table as CSV (- for standard output)")
         ->check(NotEmpty());
+    command
+        ->add_option("--json", bench.jsonPath,
+                     "Also write every figure as JSON (- for standard output; docs/json-output.md)")
+        ->check(NotEmpty());
 }
 
 void addPixelCommand(CLI::App& app, CommandLine& line) {
@@ -427,6 +431,9 @@ int checkBenchPaths(const BenchOptions& bench) {
         if (!bench.csvPath.empty()) {
             plan.addFile("--csv", bench.csvPath);
         }
+        if (!bench.jsonPath.empty()) {
+            plan.addFile("--json", bench.jsonPath);
+        }
         plan.check();
         return int(kSuccess);
     });
@@ -516,8 +523,8 @@ int main(int argc, char** argv) {
     const int reserved = guarded([&] {
         reserveStandardOutputForData({line.render.outputPath, line.render.jsonPath, line.merge.outputPath,
                                       line.compare.diffPath, line.compare.maskPath, line.compare.jsonPath,
-                                      line.compare.junitPath, line.bench.csvPath, line.diff.heatmapPath,
-                                      line.diff.jsonPath, line.pixel.jsonPath});
+                                      line.compare.junitPath, line.bench.csvPath, line.bench.jsonPath,
+                                      line.diff.heatmapPath, line.diff.jsonPath, line.pixel.jsonPath});
         return int(kSuccess);
     });
     return reserved != kSuccess ? reserved : runCommand(app, line);
