@@ -58,7 +58,8 @@ nlohmann::json workJson(const std::optional<WorkPerPixel>& work) {
     if (!work) {
         return nullptr;
     }
-    return {{"primary_tests", work->primaryTests}, {"shadow_rays", work->shadowRays}, {"shadow_tests", work->shadowTests}};
+    return {
+        {"primary_tests", work->primaryTests}, {"shadow_rays", work->shadowRays}, {"shadow_tests", work->shadowTests}};
 }
 
 nlohmann::json configurationJson(const BenchRow& row, const BenchBackends& backends) {

@@ -15,6 +15,8 @@
 #include "cli/progress.h"
 #include "cli/scene_files.h"
 #include "precision/decision_roundoff.h"
+#include "compare/band_flip.h"
+#include "compare/flip.h"
 #include "compare/render_comparator.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
@@ -47,6 +49,16 @@ void printMetrics(const char* label, const ErrorMetrics& m, int decimalsForMax) 
                 100.0 * m.shareOverOneLevel);
 }
 
+// "0.00123", or "–" where the image was too large to keep whole (compare/band_flip.h).
+std::string flipText(const std::optional<double>& mean) {
+    if (!mean) {
+        return "–";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.5f", *mean);
+    return text;
+}
+
 const char* okText(bool ok) {
     return ok ? "ok" : "EXCEEDED";
 }
@@ -73,6 +85,8 @@ void printDetailed(const ComparisonRecord& record, const std::string& gpuHow, co
                 "pixels > 1 level");
     printMetrics("linear [0,1]", c.linear, 6);
     printMetrics("8-bit [levels]", c.encoded, 0);
+    std::printf("  mean LDR-FLIP of the 8-bit outputs (every pixel, %.2f pixels per degree): %s\n",
+                kDefaultPixelsPerDegree, flipText(record.flipMean).c_str());
     std::printf(
         "  tolerance: invalid colours %llu <= 0 %s; topology mismatches %llu <= %llu %s; ambiguous pixels "
         "%.4f%% <= %.4f%% %s; pixels > 1 level %.4f%% <= %.4f%% %s; 8-bit RMSE %.4f <= %.4f levels %s\n",
@@ -107,22 +121,22 @@ std::string verdictText(const ComparisonRecord& record) {
 void printTableHeader() {
     std::printf(
         "| scene | precision | auto | topology mismatches | ambiguous | excused | max abs (levels) "
-        "| RMSE (levels) | > 1 level | GPU ms | verdict |\n");
-    std::printf("|---|---|:-:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+        "| RMSE (levels) | mean FLIP | > 1 level | GPU ms | verdict |\n");
+    std::printf("|---|---|:-:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
 }
 
 void printTableRow(const ComparisonRecord& record) {
     const RenderComparison& c = record.comparison;
-    std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %.3f%% | %.2f | %s |\n",
+    std::printf("| %s | %s | %s | %llu | %.3f%% | %.3f%% | %.0f | %.3f | %s | %.3f%% | %.2f | %s |\n",
                 printable(record.name).c_str(), std::string(precisionName(record.precision)).c_str(),
                 record.chosenByAuto ? "✓" : "", static_cast<unsigned long long>(c.topology.mismatches),
                 100.0 * c.topology.ambiguousShare(), 100.0 * c.topology.excusedShare(), c.encoded.maxAbs,
-                c.encoded.rmse, 100.0 * c.encoded.shareOverOneLevel, record.gpuMilliseconds,
-                verdictText(record).c_str());
+                c.encoded.rmse, flipText(record.flipMean).c_str(), 100.0 * c.encoded.shareOverOneLevel,
+                record.gpuMilliseconds, verdictText(record).c_str());
 }
 
 void printFailedRow(const std::string& scene) {
-    std::printf("| %s | – | | – | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n",
+    std::printf("| %s | – | | – | – | – | – | – | – | – | – | FAIL (cannot load: see the error above) |\n",
                 printable(scene).c_str());
 }
 
@@ -236,6 +250,7 @@ private:
 // What one comparison of a scene in one precision found and took.
 struct BandedComparison {
     RenderComparison comparison;
+    std::optional<double> flipMean;
     Precision precision;
     double gpuMilliseconds;
     double cpuMilliseconds;
@@ -253,6 +268,7 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
     // The reference's margins are read against the arithmetic of the render it is compared with.
     const CpuBandRenderer reference(scene, threads, Acceleration::Auto, aov, decisionRoundoff(plan.precision));
     RenderComparator comparator;
+    BandFlip flip(scene.image.width, scene.image.height, scene.image.encoding);
     CpuRender cpu;
     double cpuMilliseconds = 0;
     const Encoding encoding = scene.image.encoding;
@@ -265,13 +281,14 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
             const Rgb8Image reference8 = encodeImage(cpu.image, encoding);
             const Rgb8Image gpu8 = encodeImage(band.image, encoding);
             comparator.add({cpu.image, cpu.classes, reference8}, {band.image, band.classes, gpu8}, cpu.ambiguity);
+            flip.add(reference8, gpu8);
             if (outputs) {
                 outputs->writeRows(cpu, band, reference8, gpu8);
             }
             progress.update(firstRow + band.image.height);
         });
-    return {comparator.result(), gpu.precision, gpu.timing.renderMilliseconds, cpuMilliseconds,
-            reference.threadCount()};
+    return {comparator.result(),           flip.mean(),     gpu.precision,
+            gpu.timing.renderMilliseconds, cpuMilliseconds, reference.threadCount()};
 }
 
 // Every path the comparison reads or writes, checked before any work.
@@ -427,6 +444,7 @@ ComparisonRecord recordFor(const SceneFile& file, const Scene& scene, Precision 
     record.chosenByAuto = compared.precision == automatic;
     record.judged = !(options.allPrecisions && compared.precision == Precision::F32Naive);
     record.comparison = compared.comparison;
+    record.flipMean = compared.flipMean;
     record.expectation = expectationFor(expectations.forScene(file.path), file.path, compared.precision,
                                         options.tolerance, options.toleranceGiven);
     record.verdict = judge(compared.comparison, record.expectation.tolerance);

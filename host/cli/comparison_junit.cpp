@@ -103,7 +103,9 @@ std::string metricsLine(const ComparisonRecord& record) {
            "), pixels > 1 level " + formatted("%.4f%%", 100.0 * c.encoded.shareOverOneLevel) + " (max " +
            formatted("%g%%", limit.maxSharePercent) + "), 8-bit RMSE " + formatted("%.4f", c.encoded.rmse) +
            " levels (max " + formatted("%g", limit.maxRmseLevels) + "), max abs " +
-           formatted("%.0f", c.encoded.maxAbs) + " levels, invalid colours " + std::to_string(c.invalidColours);
+           formatted("%.0f", c.encoded.maxAbs) + " levels, mean FLIP " +
+           (record.flipMean ? formatted("%.5f", *record.flipMean) : std::string("not measured")) +
+           ", invalid colours " + std::to_string(c.invalidColours);
 }
 
 void writeJunit(const std::string& path, const std::vector<ComparisonRecord>& records, const std::string& device) {

@@ -3,6 +3,7 @@
 // the table, the detailed report, --json, --junit and --report read the same record.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,8 @@ struct ComparisonRecord {
     bool chosenByAuto = false;              // `precision` is the one auto picks for this scene
     bool judged = true;
     RenderComparison comparison;
-    SceneExpectation expectation;  // with the tolerance it was held to
+    std::optional<double> flipMean;  // of the 8-bit outputs, every pixel; none past compare/band_flip.h's bound
+    SceneExpectation expectation;    // with the tolerance it was held to
     Verdict verdict;
     JudgedOutcome outcome{Outcome::Failed, ""};
     double gpuMilliseconds = 0;

@@ -217,9 +217,7 @@ public:
     }
 
 private:
-    bool sameClass() const {
-        return shader_.node == referenceNode_ && shader_.flags == reference_.pixelClass.flags;
-    }
+    bool sameClass() const { return shader_.node == referenceNode_ && shader_.flags == reference_.pixelClass.flags; }
 
     void printRay() {
         table_.row("ray origin", vec(shader_.rayOrigin), vec(reference_.ray.origin),

@@ -89,14 +89,10 @@ void addCandidates(json& trace, const Scene& scene, const auto& distanceOf) {
 json hit(const Scene& scene, std::size_t node, double t, const glm::dvec3& position, const glm::dvec3& normal,
          const glm::dvec3& albedo, json checker) {
     const Node& hitNode = scene.nodes.at(node);
-    return {{"node", node},
-            {"geometry", geometryName(hitNode.geometry)},
-            {"t", jsonNumber(t)},
-            {"position", vec3(position)},
-            {"normal", vec3(normal)},
-            {"shader", shaderTypeName(scene.shaders.at(hitNode.shaderIndex))},
-            {"albedo", vec3(albedo)},
-            {"checker", std::move(checker)}};
+    return {{"node", node},           {"geometry", geometryName(hitNode.geometry)},
+            {"t", jsonNumber(t)},     {"position", vec3(position)},
+            {"normal", vec3(normal)}, {"shader", shaderTypeName(scene.shaders.at(hitNode.shaderIndex))},
+            {"albedo", vec3(albedo)}, {"checker", std::move(checker)}};
 }
 
 bool checkerShaded(const Scene& scene, std::size_t node) {
@@ -116,8 +112,8 @@ json shaderTrace(const Scene& scene, const GpuPixelTrace& shader) {
     json lights = json::array();
     for (std::size_t i = 0; i < shader.lights.size(); ++i) {
         const GpuTraceLight& term = shader.lights[i];
-        lights.push_back(light(i, lightStatusName(term.status), term.cosTheta, term.distanceSquared,
-                               glm::dvec3(term.contribution)));
+        lights.push_back(
+            light(i, lightStatusName(term.status), term.cosTheta, term.distanceSquared, glm::dvec3(term.contribution)));
     }
     trace["lights"] = std::move(lights);
     trace["sample_colour"] = vec3(glm::dvec3(shader.sampleColor));

@@ -211,8 +211,8 @@ std::uint32_t cpuBandRows(const CpuBandRenderer& renderer, std::uint32_t rows) {
     return std::min(withinBudget, std::max((rows + kProgressSteps - 1) / kProgressSteps, 8 * renderer.threadCount()));
 }
 
-std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& writer,
-                        std::optional<StagedAovs>& aovs, SceneRecord& record) {
+std::string renderOnCpu(const SceneRender& job, std::optional<ImageRowWriter>& writer, std::optional<StagedAovs>& aovs,
+                        SceneRecord& record) {
     const CpuBandRenderer renderer(job.scene, job.options.threads, Acceleration::Auto,
                                    !job.options.aovDirectory.empty());
     const Provenance provenance = job.provenance("cpu", "cpu reference", std::string(precisionName(Precision::F64)));

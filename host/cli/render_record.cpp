@@ -20,8 +20,8 @@ json requested(const RenderOptions& options) {
     return {{"backend", nameOf(kBackendNames, options.backend)},
             {"precision", std::string(precisionName(options.precision))},
             {"culling", nameOf(kCullingNames, options.culling)},
-            {"strip", options.strip ? json{{"index", options.strip->index}, {"count", options.strip->count}}
-                                    : json(nullptr)},
+            {"strip",
+             options.strip ? json{{"index", options.strip->index}, {"count", options.strip->count}} : json(nullptr)},
             {"threads", options.threads ? json(options.threads) : json(nullptr)},
             {"output", optionalText(options.outputPath)},
             {"aov_directory", optionalText(options.aovDirectory)}};

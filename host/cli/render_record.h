@@ -37,7 +37,7 @@ struct CpuSceneRecord {
 
 struct SceneRecord {
     std::string scenePath;
-    std::string outputPath;  // empty when none was decided
+    std::string outputPath;              // empty when none was decided
     std::optional<ImageSettings> image;  // once the scene is loaded, with the command line's overrides
     std::optional<RowRange> rows;        // a strip's rows
     std::string fallbackReason;          // --backend auto: why the CPU rendered instead of the GPU

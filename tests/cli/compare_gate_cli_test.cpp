@@ -176,5 +176,26 @@ TEST_F(CompareGateCliTest, AnUnloadableSceneIsAFailedResultAndAJunitError) {
     EXPECT_NE(test::readFile(dir_ / "out.xml").find(R"(errors="1")"), std::string::npos);
 }
 
+// Mean FLIP beside RMSE: 0 for identical outputs, large where the textbook formulation draws
+// another picture (topology mismatches on a far checker floor).
+TEST_F(CompareGateCliTest, MeanFlipIsReportedBesideRmse) {
+    const test::RunResult same =
+        hexray("compare " + scene("constant-debug.json") + " --width 32 --height 24 --json a.json");
+    ASSERT_EQ(same.exitCode, 0) << same.out << same.err;
+    EXPECT_NE(same.out.find("mean LDR-FLIP of the 8-bit outputs"), std::string::npos) << same.out;
+    const Json identical = readJson("a.json")["results"][0];
+    ASSERT_EQ(identical["encoded"]["max_abs"], 0.0);
+    EXPECT_EQ(identical["flip_mean"], 0.0);
+    const test::RunResult naive =
+        hexray("compare " + scene("hard/checker-far-1e7.json") + " --precision f32-naive --json b.json --junit b.xml");
+    EXPECT_EQ(naive.exitCode, 1) << naive.out << naive.err;
+    const Json different = readJson("b.json")["results"][0];
+    EXPECT_GT(different["topology"]["mismatches"].get<int>(), 0);
+    EXPECT_GT(different["flip_mean"].get<double>(), 0.01);
+    EXPECT_LE(different["flip_mean"].get<double>(), 1.0);
+    EXPECT_NE(test::readFile(dir_ / "b.xml").find("mean FLIP 0."), std::string::npos);
+    EXPECT_EQ(validateJson("b.json").exitCode, 0);
+}
+
 }  // namespace
 }  // namespace hexray
