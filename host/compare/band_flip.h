@@ -1,8 +1,9 @@
 #pragma once
 // The mean LDR-FLIP (compare/flip.h) of two renders' 8-bit outputs, gathered band by band as
 // `compare` receives them. FLIP filters across rows, so unlike the other metrics it needs both
-// images whole: 6 bytes a pixel, kept only up to kMaxFlipPixels (past that, no figure, so that
-// compare's memory still grows with the width alone).
+// images whole (6 bytes a pixel, and FLIP's own float planes, about a hundred bytes a pixel while
+// it runs), so it is measured only up to kMaxFlipPixels, 2560x1440 and a little more: past that,
+// no figure, and compare's memory still grows with the width alone.
 
 #include <cstdint>
 #include <optional>
@@ -12,7 +13,7 @@
 
 namespace hexray::inline compare {
 
-inline constexpr std::uint64_t kMaxFlipPixels = std::uint64_t{16} << 20;
+inline constexpr std::uint64_t kMaxFlipPixels = std::uint64_t{4} << 20;
 
 class BandFlip {
 public:
