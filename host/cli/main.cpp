@@ -204,6 +204,11 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
     command->add_option("--junit", compare.junitPath, "Write the results as JUnit XML: one test case per scene "
                                                       "and precision")
         ->check(NotEmpty());
+    command
+        ->add_option("--report", compare.reportDirectory,
+                     "Write an HTML report into this directory: a summary table and, per scene and precision, "
+                     "the GPU image, the CPU reference, the heat map and the mask (docs/compare.md)")
+        ->check(NotEmpty());
 }
 
 // The tolerance options given on compare's command line, which win over an expectations file's.
