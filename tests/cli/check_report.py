@@ -3,8 +3,11 @@
 --json document the same run wrote.
 
     check_report.py DIR RESULTS.json
+    check_report.py --flip DIR
 
-Prints one line, "images loaded=N failed=M; rows=R agree", or says what disagrees. Exit code
+Prints one line, "images loaded=N failed=M; rows=R agree", or says what disagrees. With --flip,
+hovers over, leaves, then clicks the first GPU render (in a copy of the page with a script
+added) and prints the image it shows at each step: "flip gpu cpu gpu cpu". Exit code
 0 when the page's image check ran and its summary rows equal the document's results (scene,
 precision, outcome, 8-bit RMSE, ambiguous share), 1 when they do not, 2 when chromium cannot be run: CI installs
 it (ci/install-deps.sh), so a missing browser is a failure, never a skip.
@@ -56,7 +59,31 @@ def page_rows(dom):
     return rows
 
 
+# Appended to a copy of the page: what the first GPU render shows before, while and after hovering,
+# and after a click.
+FLIP_SCRIPT = """<script>
+window.addEventListener('load', () => {
+  const img = document.querySelector('img.flip'), shown = [img.getAttribute('src')];
+  for (const step of [() => img.dispatchEvent(new MouseEvent('mouseenter')),
+                      () => img.dispatchEvent(new MouseEvent('mouseleave')), () => img.click()]) {
+    step();
+    shown.push(img.getAttribute('src'));
+  }
+  document.body.dataset.flip = shown.map(src => src.replace(/^.*-(\\w+)\\.png$/, '$1')).join(' ');
+});
+</script>"""
+
+
+def check_flip(directory):
+    page = directory / "flip-check.html"
+    page.write_text((directory / "index.html").read_text().replace("</body>", FLIP_SCRIPT + "</body>"))
+    print("flip " + dump_dom(page).xpath("//body")[0].get("data-flip", "(the script did not run)"))
+    return 0
+
+
 def main():
+    if sys.argv[1] == "--flip":
+        return check_flip(pathlib.Path(sys.argv[2]))
     directory, results = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     dom = dump_dom(directory / "index.html")
     check = dom.xpath('//output[@id="image-check"]')

@@ -82,6 +82,15 @@ TEST_F(ReportTest, AMissingImageIsCounted) {
     EXPECT_EQ(check.out, "images loaded=7 failed=1; rows=2 agree\n") << check.err;
 }
 
+// Hovering over the GPU render shows the reference in its place; a click keeps it there.
+TEST_F(ReportTest, TheGpuRenderFlipsToTheReference) {
+    ASSERT_EQ(compareWithReport().exitCode, 0);
+    const RunResult check =
+        shell("/usr/bin/python3 '" + test::sourcePath("tests/cli/check_report.py").string() + "' --flip out");
+    EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+    EXPECT_EQ(check.out, "flip gpu cpu gpu cpu\n") << check.err;
+}
+
 // A scene that cannot be loaded is a row too (without images), and the report is still written.
 TEST_F(ReportTest, AFailedSceneIsReported) {
     writeScene("broken.json", "{\"image\" 8}");
