@@ -13,7 +13,8 @@ packages=(
   libxml2-dev  # compare --junit: the XML writer
   libssl-dev  # OpenSSL's libcrypto: SHA-256 of the kernel cache's files and the strips' pixels
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
-  python3-lxml  # validates compare --junit output against tests/cli/junit.xsd
+  python3-lxml  # validates compare --junit output against tests/cli/junit.xsd; parses --report's page
+  chromium  # the tests load compare --report's page in headless chromium (tests/cli/check_report.py)
   python3-jsonschema  # validates every command's --json output against docs/schemas/ in the tests
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers

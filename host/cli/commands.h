@@ -78,8 +78,9 @@ struct CompareOptions {
     ToleranceChanges toleranceGiven;
     std::string expectationsPath;  // empty: each scene's nearest hexray-expectations.json
     bool noExpectations = false;
-    std::string jsonPath;   // empty: none; "-": standard output
-    std::string junitPath;  // empty: none
+    std::string jsonPath;         // empty: none; "-": standard output
+    std::string junitPath;        // empty: none
+    std::string reportDirectory;  // empty: none; else an HTML report and its images (cli/report_layout.h)
 };
 
 enum class PixelBackend { Both, Gpu, Cpu };

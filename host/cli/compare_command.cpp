@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 
+#include "cli/band_outputs.h"
 #include "cli/command_support.h"
 #include "cli/compare_expectations.h"
 #include "cli/comparison_json.h"
@@ -13,6 +14,8 @@
 #include "cli/comparison_record.h"
 #include "cli/json_document.h"
 #include "cli/progress.h"
+#include "cli/report_directory.h"
+#include "cli/report_page.h"
 #include "cli/scene_files.h"
 #include "precision/decision_roundoff.h"
 #include "compare/band_flip.h"
@@ -167,86 +170,6 @@ Provenance gpuProvenance(const Scene& scene, const std::string& sceneIdentity, c
                       .height = scene.image.height};
 }
 
-Provenance withImage(Provenance provenance, const std::string& image, const std::string& backend) {
-    provenance.image = image;
-    provenance.backend = backend;
-    if (backend == "cpu") {
-        provenance.device = "cpu reference";
-        provenance.precision = std::string(precisionName(Precision::F64));
-    }
-    return provenance;
-}
-
-// The files a single-scene comparison writes besides its report: the heat map, the mask and
-// both backends' AOVs, opened before the renders and written a band at a time.
-class BandOutputs {
-public:
-    BandOutputs(const CompareOptions& options, const Scene& scene, const Provenance& gpu) : options_(options) {
-        const std::uint32_t width = scene.image.width;
-        const std::uint32_t height = scene.image.height;
-        if (!options.diffPath.empty()) {
-            diff_.emplace(options.diffPath, width, height, withImage(gpu, "diff heat map", "gpu vs cpu").notes());
-        }
-        if (!options.maskPath.empty()) {
-            mask_.emplace(options.maskPath, width, height, withImage(gpu, "mismatch mask", "gpu vs cpu").notes());
-        }
-        if (!options.aovDirectory.empty()) {
-            const fs::path directory(options.aovDirectory);
-            gpuAovs_.emplace(directory / "gpu", AovLayout{width, height, scene.lights.size()}, gpu);
-            cpuAovs_.emplace(directory / "cpu", AovLayout{width, height, scene.lights.size(), true, kAmbiguityMargin},
-                             withImage(gpu, "", "cpu"));
-        }
-    }
-
-    bool withAovs() const { return gpuAovs_.has_value(); }
-
-    void writeRows(const CpuRender& reference, const GpuRenderResult& gpu, const Rgb8Image& reference8,
-                   const Rgb8Image& gpu8) {
-        if (diff_) {
-            diff_->writeRows(diffHeatMap(reference8, gpu8).bytes);
-        }
-        if (mask_) {
-            mask_->writeRows(mismatchMask(reference.classes, gpu.classes, reference.ambiguity, reference8, gpu8,
-                                          &reference.image, &gpu.image)
-                                 .bytes);
-        }
-        if (gpuAovs_) {
-            gpuAovs_->writeRows({gpu.image.height, gpu.depth, gpu.normals, gpu.classes, {}});
-            cpuAovs_->writeRows(
-                {reference.image.height, reference.depth, reference.normals, reference.classes, reference.margins});
-        }
-    }
-
-    // Puts every file in place, saying so.
-    void commit() {
-        if (diff_) {
-            diff_->finish();
-            std::printf("wrote diff heat map %s\n", displayName(options_.diffPath).c_str());
-        }
-        if (mask_) {
-            mask_->finish();
-            std::printf(
-                "wrote mismatch mask %s (magenta invalid colour, red topology, blue excused, yellow "
-                "colour > 1 level, navy near-tied but agreeing)\n",
-                displayName(options_.maskPath).c_str());
-        }
-        if (gpuAovs_) {
-            gpuAovs_->commit();
-            cpuAovs_->commit();
-            const fs::path directory(options_.aovDirectory);
-            std::printf("wrote AOVs in %s and %s\n", printable((directory / "gpu").string()).c_str(),
-                        printable((directory / "cpu").string()).c_str());
-        }
-    }
-
-private:
-    const CompareOptions& options_;
-    std::optional<PngRowWriter> diff_;
-    std::optional<PngRowWriter> mask_;
-    std::optional<StagedAovs> gpuAovs_;
-    std::optional<StagedAovs> cpuAovs_;
-};
-
 // What one comparison of a scene in one precision found and took.
 struct BandedComparison {
     RenderComparison comparison;
@@ -318,6 +241,9 @@ void checkPaths(const CompareOptions& options, const std::vector<SceneFile>& fil
     if (!options.aovDirectory.empty()) {
         plan.addDirectory("--aov", fs::path(options.aovDirectory) / "gpu", isAovFileName);
         plan.addDirectory("--aov", fs::path(options.aovDirectory) / "cpu", isAovFileName);
+    }
+    if (!options.reportDirectory.empty()) {
+        ReportDirectory::addToPlan(plan, options.reportDirectory);
     }
     plan.check();
 }
@@ -463,17 +389,25 @@ struct CompareSession {
     const ExpectationsInUse& expectations;
     bool table;
     std::vector<ComparisonRecord>& records;
+    ReportDirectory* report;  // --report, or none
 };
 
 // Compares one scene in each precision asked for: a table row, or the detailed report (and its
-// files), for each.
+// files), for each; with --report, its images too.
 void compareScene(const CompareSession& session, const SceneFile& file, const Scene& scene,
                   const std::string& sceneIdentity) {
     const Precision automatic = session.renderer.resolve(scene, Precision::Auto);
     for (const Precision requested : precisionsToCompare(session.options, session.context)) {
+        std::string reportStem;
+        std::optional<std::array<fs::path, 4>> reportImages;
+        if (session.report) {
+            reportStem =
+                reportImageStem(session.records.size() + 1, file.name, session.renderer.resolve(scene, requested));
+            reportImages = session.report->stagedImages(reportStem);
+        }
         std::optional<BandOutputs> outputs;
-        if (!session.table) {
-            outputs.emplace(session.options, scene,
+        if (!session.table || session.report) {
+            outputs.emplace(session.options, !session.table, scene, reportImages,
                             gpuProvenance(scene, sceneIdentity, session.context.selected().name,
                                           session.renderer.resolve(scene, requested)));
         }
@@ -483,10 +417,13 @@ void compareScene(const CompareSession& session, const SceneFile& file, const Sc
             recordFor(file, scene, requested, compared, automatic, session.options, session.expectations));
         if (session.table) {
             printTableRow(session.records.back());
-            continue;
+        } else {
+            printComparison(session.records.back(), compared, session.context);
         }
-        printComparison(session.records.back(), compared, session.context);
-        outputs->commit();
+        if (outputs) {
+            outputs->commit();
+            session.records.back().reportImages = reportStem;
+        }
     }
 }
 
@@ -504,6 +441,28 @@ int writeJunitIfAsked(const CompareOptions& options, const std::vector<Compariso
     return written == kSuccess ? code : written;
 }
 
+// `code`, or the failure's exit code when --report's files cannot be written. Records `code` as
+// the exit in `document`, which is the report's results.json.
+int writeReportIfAsked(const CompareOptions& options, ReportDirectory* report,
+                       const std::vector<ComparisonRecord>& records, nlohmann::json& document, int code) {
+    if (!report) {
+        return code;
+    }
+    recordExit(document, code);
+    const int written = guarded([&] {
+        std::vector<std::string> stems;
+        for (const ComparisonRecord& record : records) {
+            if (!record.reportImages.empty()) {
+                stems.push_back(record.reportImages);
+            }
+        }
+        report->commit(reportPage(records, document), document, stems);
+        std::printf("wrote report %s\n", printable((fs::path(options.reportDirectory) / kReportPage).string()).c_str());
+        return int(kSuccess);
+    });
+    return written == kSuccess ? code : written;
+}
+
 // Bands of floats, not the encoded render's larger ones: memory grows with the width only. On a
 // terminal, smaller ones, so that the progress line moves.
 std::uint64_t comparisonBandBytes() {
@@ -515,6 +474,7 @@ std::uint64_t comparisonBandBytes() {
 int runCompare(const CompareOptions& options) {
     ValidationLog log;
     std::vector<ComparisonRecord> records;
+    std::optional<ReportDirectory> report;
     nlohmann::json document = jsonDocument("compare");
     document["device"] = nullptr;
     document["timings_ms"]["startup"] = nullptr;
@@ -526,6 +486,10 @@ int runCompare(const CompareOptions& options) {
         const ExpectationsInUse expectations(options, files);
         checkPaths(options, files, expectations.paths());
         document["expectations_files"] = expectations.paths();
+        if (!options.reportDirectory.empty()) {
+            report.emplace(options.reportDirectory);
+            document["report"] = options.reportDirectory;
+        }
         const auto startup = std::chrono::steady_clock::now();
         const VulkanContext context({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
         document["timings_ms"]["startup"] = millisecondsSince(startup);
@@ -534,7 +498,8 @@ int runCompare(const CompareOptions& options) {
         if (table) {
             printTableHeader();
         }
-        const CompareSession session{options, renderer, context, expectations, table, records};
+        const CompareSession session{
+            options, renderer, context, expectations, table, records, report ? &*report : nullptr};
         bool allLoaded = true;
         for (const SceneFile& file : files) {
             std::string sceneIdentity;
@@ -550,7 +515,9 @@ int runCompare(const CompareOptions& options) {
     });
     const int verdict = withValidationVerdict(code, log);
     addComparisons(document, records);
-    return finishJson(options.jsonPath, document, writeJunitIfAsked(options, records, document, verdict));
+    const int written = writeJunitIfAsked(options, records, document, verdict);
+    return finishJson(options.jsonPath, document,
+                      writeReportIfAsked(options, report ? &*report : nullptr, records, document, written));
 }
 
 }  // namespace hexray::cli

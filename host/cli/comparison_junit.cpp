@@ -1,10 +1,8 @@
 #include "cli/comparison_junit.h"
 
-#include <libxml/xmlwriter.h>
-
 #include <cstdio>
-#include <memory>
 
+#include "cli/xml_writer.h"
 #include "io/output_file.h"
 #include "util/build_version.h"
 #include "util/printable.h"
@@ -12,48 +10,11 @@
 namespace hexray::cli {
 namespace {
 
-const xmlChar* xml(const char* text) {
-    return reinterpret_cast<const xmlChar*>(text);
-}
-
 std::string formatted(const char* format, double value) {
     char text[64];
     std::snprintf(text, sizeof text, format, value);
     return text;
 }
-
-// libxml2's writer into a memory buffer: it escapes every attribute and text node.
-class XmlWriter {
-public:
-    XmlWriter() : buffer_(xmlBufferCreate(), xmlBufferFree), writer_(xmlNewTextWriterMemory(buffer_.get(), 0)) {
-        if (!writer_) {
-            throw std::bad_alloc();
-        }
-        xmlTextWriterSetIndent(writer_, 1);
-        xmlTextWriterStartDocument(writer_, nullptr, "UTF-8", nullptr);
-    }
-    ~XmlWriter() { xmlFreeTextWriter(writer_); }
-    XmlWriter(const XmlWriter&) = delete;
-    XmlWriter& operator=(const XmlWriter&) = delete;
-
-    void start(const char* element) { xmlTextWriterStartElement(writer_, xml(element)); }
-    void end() { xmlTextWriterEndElement(writer_); }
-    void attribute(const char* name, const std::string& value) {
-        xmlTextWriterWriteAttribute(writer_, xml(name), xml(printable(value).c_str()));
-    }
-    void text(const std::string& value) { xmlTextWriterWriteString(writer_, xml(printable(value).c_str())); }
-
-    std::string finish() {
-        xmlTextWriterEndDocument(writer_);
-        xmlTextWriterFlush(writer_);
-        return {reinterpret_cast<const char*>(xmlBufferContent(buffer_.get())),
-                static_cast<std::size_t>(xmlBufferLength(buffer_.get()))};
-    }
-
-private:
-    std::unique_ptr<xmlBuffer, void (*)(xmlBufferPtr)> buffer_;
-    xmlTextWriterPtr writer_;
-};
 
 double seconds(const ComparisonRecord& record) {
     return (record.gpuMilliseconds + record.cpuMilliseconds) / 1000.0;

@@ -33,6 +33,7 @@ struct ComparisonRecord {
     double gpuMilliseconds = 0;
     double cpuMilliseconds = 0;
     unsigned cpuThreads = 0;
+    std::string reportImages;  // --report: the stem of its images' names (report_layout.h); empty for none
 };
 
 // The count line's figures.

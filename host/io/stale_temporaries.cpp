@@ -28,7 +28,8 @@ bool isHexrayTemporary(const fs::directory_entry& entry) {
     if (startsWith(name, kPartialFilePrefix)) {
         return entry.is_regular_file(error) && !entry.is_symlink(error);
     }
-    return startsWith(name, kAovStagingPrefix) && entry.is_directory(error) && !entry.is_symlink(error);
+    return (startsWith(name, kAovStagingPrefix) || startsWith(name, kReportStagingPrefix)) &&
+           entry.is_directory(error) && !entry.is_symlink(error);
 }
 
 // Removes `path` if no live run holds it; the lock is held while it goes.

@@ -14,6 +14,8 @@ namespace hexray::inline io {
 inline constexpr std::string_view kPartialFilePrefix = ".hexray-partial-";
 // `.hexray-aov-XXXXXX`: a set of AOVs being written, moved into its directory when complete.
 inline constexpr std::string_view kAovStagingPrefix = ".hexray-aov-";
+// `.hexray-report-XXXXXX`: a comparison report being written, moved into its directory when complete.
+inline constexpr std::string_view kReportStagingPrefix = ".hexray-report-";
 
 // `pattern` with its trailing "XXXXXX" replaced by random letters and digits.
 std::string randomName(const std::string& pattern);
