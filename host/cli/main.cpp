@@ -164,6 +164,11 @@ void addCompareGateOptions(CLI::App& command, CompareOptions& compare) {
                     "Write the results as JUnit XML: one test case per scene "
                     "and precision")
         ->check(NotEmpty());
+    command
+        .add_option("--report", compare.reportDirectory,
+                    "Write an HTML report into this directory: a summary table and, per scene and precision, "
+                    "the GPU image, the CPU reference, the heat map and the mask (docs/compare.md)")
+        ->check(NotEmpty());
 }
 
 void addCompareCommand(CLI::App& app, CommandLine& line) {
