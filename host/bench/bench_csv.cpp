@@ -64,7 +64,8 @@ std::vector<Column> columns(const BenchBackends& backends) {
         {"height", [](S s, R) { return std::to_string(s.scene.image.height); }},
         {"backend", [&backends](S, R r) { return text(backends.name(r.configuration.backend)); }},
         {"kernel", [](S, R r) { return std::string(benchKernelName(r.kernel)); }},
-        {"precision_asked", [](S, R r) { return r.precisionAsked ? std::string(precisionName(*r.precisionAsked)) : ""; }},
+        {"precision_asked",
+         [](S, R r) { return r.precisionAsked ? std::string(precisionName(*r.precisionAsked)) : ""; }},
         {"precision_used", [](S, R r) { return std::string(precisionName(r.precision)); }},
         {"auto_pick", [](S, R r) { return r.precisionAsked ? std::string(r.chosenByAuto ? "true" : "false") : ""; }},
         {"culling_asked", [](S, R r) { return onOff(r.cullingAsked); }},
@@ -90,7 +91,8 @@ std::vector<Column> columns(const BenchBackends& backends) {
         {"share_over_one_level", [](S, R r) { return number(r.precisionError.shareOverOneLevel); }},
         {"ambiguous_share",
          [](S, R r) { return number(r.topology ? std::optional(r.topology->ambiguousShare()) : std::nullopt); }},
-        {"topology_mismatches", [](S, R r) { return count(optionalField(r.topology, &TopologyComparison::mismatches)); }},
+        {"topology_mismatches",
+         [](S, R r) { return count(optionalField(r.topology, &TopologyComparison::mismatches)); }},
     };
 }
 

@@ -202,14 +202,13 @@ void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<Be
     std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, true)) {
         const BenchScene& bench = scenes[row->configuration.scene];
-        std::printf(
-            "| %u | %ux%u | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
-            *bench.spheres, bench.scene.image.width, bench.scene.image.height,
-            backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
-            row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
-            row->frameMs, optional(row->planMs, "%.1f").c_str(), optional(row->uploadMs, "%.1f").c_str(),
-            row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(), row->precisionError.rmse,
-            100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+        std::printf("| %u | %ux%u | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
+                    *bench.spheres, bench.scene.image.width, bench.scene.image.height,
+                    backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
+                    row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
+                    row->frameMs, optional(row->planMs, "%.1f").c_str(), optional(row->uploadMs, "%.1f").c_str(),
+                    row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(),
+                    row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
     }
 }
 

@@ -49,9 +49,9 @@ BandOutputs::BandOutputs(const CompareOptions& options, bool single, const Scene
                          withImage(gpu, "", "cpu"));
     }
     if (reportImages) {
-        const std::array<Provenance, 4> records = {
-            withImage(gpu, "render", "gpu"), withImage(gpu, "render", "cpu"),
-            withImage(gpu, "diff heat map", "gpu vs cpu"), withImage(gpu, "mismatch mask", "gpu vs cpu")};
+        const std::array<Provenance, 4> records = {withImage(gpu, "render", "gpu"), withImage(gpu, "render", "cpu"),
+                                                   withImage(gpu, "diff heat map", "gpu vs cpu"),
+                                                   withImage(gpu, "mismatch mask", "gpu vs cpu")};
         for (std::size_t i = 0; i < report_.size(); ++i) {
             report_[i].emplace((*reportImages)[i], width, height, records[i].notes());
         }

@@ -73,7 +73,7 @@ nlohmann::json recordJson(const ComparisonRecord& r) {
                  {"linear", metricsJson(r.comparison.linear)},
                  {"encoded", metricsJson(r.comparison.encoded)},
                  {"invalid_colours", r.comparison.invalidColours},
-                 {"flip_mean", r.flipMean ? nlohmann::json(*r.flipMean) : nlohmann::json(nullptr)},
+                 {"flip_mean", jsonNumber(r.flipMean)},
                  {"timings_ms", {{"gpu_render", r.gpuMilliseconds}, {"cpu_reference", r.cpuMilliseconds}}},
                  {"cpu_threads", r.cpuThreads}});
     return json;

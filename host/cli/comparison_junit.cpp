@@ -5,16 +5,11 @@
 #include "cli/xml_writer.h"
 #include "io/output_file.h"
 #include "util/build_version.h"
+#include "util/formatted.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
-
-std::string formatted(const char* format, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
-}
 
 double seconds(const ComparisonRecord& record) {
     return (record.gpuMilliseconds + record.cpuMilliseconds) / 1000.0;

@@ -16,6 +16,7 @@
 #include "io/output_plan.h"
 #include "io/standard_input.h"
 #include "io/standard_output.h"
+#include "util/formatted.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -129,14 +130,6 @@ DiffResult diffImages(const ImageFile& test, const ImageFile& reference, const D
     return result;
 }
 
-// printf into a std::string.
-template <typename... Values>
-std::string format(const char* pattern, Values... values) {
-    char text[256];
-    std::snprintf(text, sizeof text, pattern, values...);
-    return text;
-}
-
 void printRow(const std::string& label, const std::string& value) {
     std::printf("  %-18s %s\n", label.c_str(), value.c_str());
 }
@@ -149,30 +142,30 @@ void printReport(const DiffResult& result, const ImageFile& test, const DiffOpti
     std::printf("%s against %s: %ux%u, %s\n", inputName(options.testPath).c_str(),
                 inputName(options.referencePath).c_str(), test.width(), test.height(),
                 png ? "PNG (8-bit sRGB)" : "OpenEXR (linear float)");
-    printRow("RMSE", format("%.6g", metrics.rmse) + (png ? format(" (%.4g levels)", metrics.rmse * 255.0) : ""));
-    printRow("PSNR", std::isfinite(metrics.psnr) ? format("%.2f dB", metrics.psnr) : "infinite (identical)");
+    printRow("RMSE", formatted("%.6g", metrics.rmse) + (png ? formatted(" (%.4g levels)", metrics.rmse * 255.0) : ""));
+    printRow("PSNR", std::isfinite(metrics.psnr) ? formatted("%.2f dB", metrics.psnr) : "infinite (identical)");
     printRow("max difference",
-             format("%.6g at (%u, %u)", metrics.maxAbs, result.difference.maxX, result.difference.maxY));
-    printRow("over one level",
-             format("%.4g%% of pixels (%llu)", 100.0 * metrics.shareOverOneLevel, count(metrics.pixelsOverOneLevel)));
+             formatted("%.6g at (%u, %u)", metrics.maxAbs, result.difference.maxX, result.difference.maxY));
+    printRow("over one level", formatted("%.4g%% of pixels (%llu)", 100.0 * metrics.shareOverOneLevel,
+                                         count(metrics.pixelsOverOneLevel)));
     if (result.difference.nonFinitePixels > 0) {
         printRow("not finite",
-                 format("%llu pixels (NaN or infinite in either image)", count(result.difference.nonFinitePixels)));
+                 formatted("%llu pixels (NaN or infinite in either image)", count(result.difference.nonFinitePixels)));
     }
-    std::string flip = format("mean %.6f, max %.6f at %.2f pixels per degree", result.flip.mean(), result.flip.max(),
-                              result.pixelsPerDegree);
+    std::string flip = formatted("mean %.6f, max %.6f at %.2f pixels per degree", result.flip.mean(), result.flip.max(),
+                                 result.pixelsPerDegree);
     if (result.hdr) {
-        flip += format(", %d exposures from %.3f to %.3f stops", result.exposures.count, result.exposures.start,
-                       result.exposures.stop);
+        flip += formatted(", %d exposures from %.3f to %.3f stops", result.exposures.count, result.exposures.start,
+                          result.exposures.stop);
     }
     printRow(result.hdr ? "HDR-FLIP" : "LDR-FLIP", flip);
-    printRow(format("over --fail %g", options.failDifference),
-             format("%.4g%% of pixels (%llu), --failpercent %g", 100.0 * share(result.failing, pixels),
-                    count(result.failing), options.failPercent));
+    printRow(formatted("over --fail %g", options.failDifference),
+             formatted("%.4g%% of pixels (%llu), --failpercent %g", 100.0 * share(result.failing, pixels),
+                       count(result.failing), options.failPercent));
     if (result.failed) {
         const bool flipFailed = options.failFlip && result.flip.mean() > *options.failFlip;
         std::printf("FAIL%s\n",
-                    flipFailed ? format(": mean FLIP above --fail-flip %g", *options.failFlip).c_str() : "");
+                    flipFailed ? formatted(": mean FLIP above --fail-flip %g", *options.failFlip).c_str() : "");
     } else if (result.warned) {
         std::printf("PASS with a warning: %.4g%% of pixels (%llu) differ by more than --warn %g\n",
                     100.0 * share(result.warning, pixels), count(result.warning), options.warnDifference);

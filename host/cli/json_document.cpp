@@ -34,6 +34,10 @@ nlohmann::json jsonNumber(double value) {
     return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
+nlohmann::json jsonNumber(const std::optional<double>& value) {
+    return value ? jsonNumber(*value) : nlohmann::json(nullptr);
+}
+
 const char* exitCodeName(int code) {
     switch (code) {
         case kSuccess:

@@ -4,6 +4,7 @@
 // so that a CI script reads any of them the same way; JSON has no infinity or NaN, so a value that
 // does not apply, or is not finite, is null.
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -21,8 +22,9 @@ nlohmann::json jsonDocument(const std::string& command);
 // {"name", "driver", "type", "api"}: the Vulkan device a command used.
 nlohmann::json jsonDevice(const DeviceInfo& device);
 
-// A finite number as itself, anything else as null.
+// A finite number as itself, anything else (or none) as null.
 nlohmann::json jsonNumber(double value);
+nlohmann::json jsonNumber(const std::optional<double>& value);
 
 // The exit code, its name (exitCodeName) and the error messages printed so far (printError):
 // "exit": {"code", "name", "messages"}. Also "timings_ms.wall", from the process's start.

@@ -18,29 +18,24 @@
 #include "image/image_io.h"
 #include "io/output_plan.h"
 #include "scene/scene_loader.h"
+#include "util/formatted.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
 namespace {
 
-std::string format(const char* pattern, auto... values) {
-    char text[512];
-    std::snprintf(text, sizeof text, pattern, values...);
-    return text;
-}
-
 std::string vec(const glm::dvec3& v) {
-    return format("(%.7g, %.7g, %.7g)", v.x, v.y, v.z);
+    return formatted("(%.7g, %.7g, %.7g)", v.x, v.y, v.z);
 }
 
 std::string distance(double t) {
-    return std::isinf(t) ? std::string("miss") : format("t = %.9g", t);
+    return std::isinf(t) ? std::string("miss") : formatted("t = %.9g", t);
 }
 
 std::string levels(const glm::dvec3& linear, Encoding encoding) {
-    return format("(%u, %u, %u)", unsigned(encodeChannel(float(linear.x), encoding)),
-                  unsigned(encodeChannel(float(linear.y), encoding)),
-                  unsigned(encodeChannel(float(linear.z), encoding)));
+    return formatted("(%u, %u, %u)", unsigned(encodeChannel(float(linear.x), encoding)),
+                     unsigned(encodeChannel(float(linear.y), encoding)),
+                     unsigned(encodeChannel(float(linear.z), encoding)));
 }
 
 // Whether two values computed in different precisions disagree beyond float32 rounding noise.
@@ -114,12 +109,12 @@ public:
         group_ = label;
     }
     void row(const std::string& label, const std::string& gpuText, const std::string& cpuText, bool differ = false) {
-        std::string text = format("%-22s", label.c_str());
+        std::string text = formatted("%-22s", label.c_str());
         if (gpu_) {
-            text += format(" %-44s", gpuText.c_str());
+            text += formatted(" %-44s", gpuText.c_str());
         }
         if (cpu_) {
-            text += format(" %-44s", cpuText.c_str());
+            text += formatted(" %-44s", cpuText.c_str());
         }
         const bool flagged = gpu_ && cpu_ && differ;
         const bool indented = label.rfind("  ", 0) == 0;
@@ -145,8 +140,8 @@ private:
 
 void requireInRange(const char* what, std::int64_t value, std::uint32_t limit, const char* of) {
     if (value < 0 || value >= std::int64_t(limit)) {
-        throw SceneError(format("%s = %lld is outside the image: %s is %u, so %s must be in 0..%u", what,
-                                static_cast<long long>(value), of, limit, what, limit - 1));
+        throw SceneError(formatted("%s = %lld is outside the image: %s is %u, so %s must be in 0..%u", what,
+                                   static_cast<long long>(value), of, limit, what, limit - 1));
     }
 }
 
@@ -163,9 +158,9 @@ GpuPixelTrace traceOnGpu(const PixelOptions& options, const Scene& scene, Valida
     record.gpuTraceMilliseconds = millisecondsSince(traceStart);
     std::printf(
         "gpu: %s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(), context.selected().name.c_str(),
-        trace.cameraRelative ? format("the shader works camera-relative, lengths divided by %g; printed here in "
-                                      "world units (eye added back, lengths multiplied by %g)",
-                                      trace.scale, trace.scale)
+        trace.cameraRelative ? formatted("the shader works camera-relative, lengths divided by %g; printed here in "
+                                         "world units (eye added back, lengths multiplied by %g)",
+                                         trace.scale, trace.scale)
                                    .c_str()
                              : "the shader works in world coordinates");
     return trace;
@@ -238,7 +233,7 @@ private:
                 ++missedByAll;
                 continue;
             }
-            table_.row(format("  node %zu %s", i, geometryName(scene_.nodes[i].geometry)), distance(shaderT),
+            table_.row(formatted("  node %zu %s", i, geometryName(scene_.nodes[i].geometry)), distance(shaderT),
                        distance(referenceT), differs(shaderT, referenceT, 0.0));
         }
         if (missedByAll > 0) {
@@ -248,7 +243,7 @@ private:
 
     void printHit() {
         const auto hitText = [](bool hit, std::uint32_t node, double t) {
-            return hit ? format("node %u, %s", node, distance(t).c_str()) : std::string("background");
+            return hit ? formatted("node %u, %s", node, distance(t).c_str()) : std::string("background");
         };
         const double referenceT = referenceHit_ ? reference_.nearest->hit.t : 0.0;
         table_.row(
@@ -272,8 +267,8 @@ private:
         std::string shaderAlbedo = shaderHit_ ? vec(glm::dvec3(shader_.albedo)) : "";
         std::string referenceAlbedo = referenceHit_ ? vec(reference_.albedo) : "";
         if (reference_.checkerCell) {
-            referenceAlbedo += format(" cell (%.0f, %.0f) %s", reference_.checkerCell->x, reference_.checkerCell->y,
-                                      referenceOdd ? "odd" : "even");
+            referenceAlbedo += formatted(" cell (%.0f, %.0f) %s", reference_.checkerCell->x, reference_.checkerCell->y,
+                                         referenceOdd ? "odd" : "even");
         }
         if (shaderHit_ &&
             std::holds_alternative<CheckerShader>(scene_.shaders.at(scene_.nodes[shader_.node].shaderIndex))) {
@@ -291,17 +286,17 @@ private:
         const std::uint32_t referenceStatus = explained ? statusOf(referenceLight.decision.reach) : 0;
         const bool shaderEvaluated = shaderLight.status != gpu::TRACE_LIGHT_NOT_EVALUATED;
         const bool referenceEvaluated = referenceStatus != gpu::TRACE_LIGHT_NOT_EVALUATED;
-        table_.row(format("light %zu", i), lightStatus(shaderLight.status), lightStatus(referenceStatus),
+        table_.row(formatted("light %zu", i), lightStatus(shaderLight.status), lightStatus(referenceStatus),
                    shaderLight.status != referenceStatus);
         if (!shaderEvaluated && !referenceEvaluated) {
             return;
         }
         const LightDecision& decision = referenceLight.decision;
-        table_.row("  cos theta", shaderEvaluated ? format("%.7g", shaderLight.cosTheta) : "",
-                   referenceEvaluated ? format("%.7g", decision.cosTheta) : "",
+        table_.row("  cos theta", shaderEvaluated ? formatted("%.7g", shaderLight.cosTheta) : "",
+                   referenceEvaluated ? formatted("%.7g", decision.cosTheta) : "",
                    differs(shaderLight.cosTheta, decision.cosTheta, 1.0));
-        table_.row("  r^2", shaderEvaluated ? format("%.9g", shaderLight.distanceSquared) : "",
-                   referenceEvaluated ? format("%.9g", decision.distanceSquared) : "",
+        table_.row("  r^2", shaderEvaluated ? formatted("%.9g", shaderLight.distanceSquared) : "",
+                   referenceEvaluated ? formatted("%.9g", decision.distanceSquared) : "",
                    differs(shaderLight.distanceSquared, decision.distanceSquared, 0.0));
         table_.row("  contribution", shaderEvaluated ? vec(glm::dvec3(shaderLight.contribution)) : "",
                    referenceEvaluated ? vec(referenceLight.contribution) : "",

@@ -17,11 +17,7 @@ json vec3(const glm::dvec3& v) {
     return json::array({jsonNumber(v.x), jsonNumber(v.y), jsonNumber(v.z)});
 }
 
-json optionalNumber(std::optional<double> value) {
-    return value ? jsonNumber(*value) : json(nullptr);
-}
-
-json levels(const glm::dvec3& linear, Encoding encoding) {
+json jsonLevels(const glm::dvec3& linear, Encoding encoding) {
     return json::array({encodeChannel(float(linear.x), encoding), encodeChannel(float(linear.y), encoding),
                         encodeChannel(float(linear.z), encoding)});
 }
@@ -118,7 +114,7 @@ json shaderTrace(const Scene& scene, const GpuPixelTrace& shader) {
     trace["lights"] = std::move(lights);
     trace["sample_colour"] = vec3(glm::dvec3(shader.sampleColor));
     trace["pixel_colour"] = vec3(glm::dvec3(shader.pixelColor));
-    trace["pixel_8bit"] = levels(glm::dvec3(shader.pixelColor), scene.image.encoding);
+    trace["pixel_8bit"] = jsonLevels(glm::dvec3(shader.pixelColor), scene.image.encoding);
     trace["class"] = pixelClass(shader.node, shader.flags);
     return trace;
 }
@@ -153,7 +149,7 @@ json referenceTrace(const Scene& scene, const CpuPixelExplanation& reference) {
     trace["lights"] = std::move(lights);
     trace["sample_colour"] = vec3(reference.sampleColor);
     trace["pixel_colour"] = vec3(reference.pixelColor);
-    trace["pixel_8bit"] = levels(reference.pixelColor, scene.image.encoding);
+    trace["pixel_8bit"] = jsonLevels(reference.pixelColor, scene.image.encoding);
     trace["class"] = pixelClass(reference.pixelClass.node, reference.pixelClass.flags);
     return trace;
 }
@@ -175,7 +171,7 @@ json gpuSide(const Scene& scene, const GpuPixelTrace& shader) {
 }
 
 json cpuSide(const Scene& scene, const CpuPixelExplanation& reference, std::optional<double> margin) {
-    return {{"decision_margin", optionalNumber(margin)},
+    return {{"decision_margin", jsonNumber(margin)},
             {"ambiguous", margin ? json(*margin < kAmbiguityMargin) : json(nullptr)},
             {"trace", referenceTrace(scene, reference)}};
 }
@@ -205,9 +201,9 @@ nlohmann::json pixelDocument(const PixelOptions& options, const PixelRecord& rec
     document["encoding"] = scene ? json(scene->image.encoding == Encoding::Srgb ? "srgb" : "linear") : json(nullptr);
     document["requested"] = requested(options);
     document["device"] = record.device ? jsonDevice(*record.device) : json(nullptr);
-    document["timings_ms"] = {{"startup", optionalNumber(record.startupMilliseconds)},
-                              {"gpu_trace", optionalNumber(record.gpuTraceMilliseconds)},
-                              {"cpu_explain", optionalNumber(record.cpuExplainMilliseconds)}};
+    document["timings_ms"] = {{"startup", jsonNumber(record.startupMilliseconds)},
+                              {"gpu_trace", jsonNumber(record.gpuTraceMilliseconds)},
+                              {"cpu_explain", jsonNumber(record.cpuExplainMilliseconds)}};
     document["gpu"] = scene && record.shader ? gpuSide(*scene, *record.shader) : json(nullptr);
     document["cpu"] = scene && record.reference ? cpuSide(*scene, *record.reference, record.margin) : json(nullptr);
     document["comparison"] = nullptr;

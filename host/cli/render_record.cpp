@@ -8,10 +8,6 @@ namespace {
 
 using nlohmann::json;
 
-json optionalNumber(std::optional<double> value) {
-    return value ? jsonNumber(*value) : json(nullptr);
-}
-
 json optionalText(const std::string& text) {
     return text.empty() ? json(nullptr) : json(text);
 }
@@ -46,7 +42,7 @@ json timings(const SceneRecord& scene) {
     if (scene.cpu) {
         render = jsonNumber(scene.cpu->renderMilliseconds);
     }
-    return {{"load", optionalNumber(scene.loadMilliseconds)},
+    return {{"load", jsonNumber(scene.loadMilliseconds)},
             {"plan", onGpu([](const GpuSceneRecord& g) { return g.planMilliseconds; })},
             {"upload", onGpu([](const GpuSceneRecord& g) { return g.timing.uploadMilliseconds; })},
             {"kernel_generate", generatedOnly([](const KernelBuild& k) { return k.generateMilliseconds; })},
@@ -54,7 +50,7 @@ json timings(const SceneRecord& scene) {
             {"kernel_cache_read", generatedOnly([](const KernelBuild& k) { return k.loadMilliseconds; })},
             {"first_dispatch", onGpu([](const GpuSceneRecord& g) { return g.timing.firstDispatchMilliseconds; })},
             {"render", render},
-            {"write", optionalNumber(scene.writeMilliseconds)},
+            {"write", jsonNumber(scene.writeMilliseconds)},
             {"total", jsonNumber(scene.totalMilliseconds)}};
 }
 
@@ -100,7 +96,7 @@ nlohmann::json renderDocument(const RenderOptions& options, const std::vector<Sc
     json document = jsonDocument("render");
     document["requested"] = requested(options);
     document["device"] = device ? jsonDevice(*device) : json(nullptr);
-    document["timings_ms"]["startup"] = optionalNumber(startupMilliseconds);
+    document["timings_ms"]["startup"] = jsonNumber(startupMilliseconds);
     std::size_t failed = 0;
     json entries = json::array();
     for (const SceneRecord& scene : scenes) {

@@ -6,6 +6,7 @@
 #include "cli/comparison_junit.h"
 #include "cli/report_layout.h"
 #include "cli/xml_writer.h"
+#include "util/formatted.h"
 
 namespace hexray::cli {
 namespace {
@@ -54,12 +55,6 @@ window.addEventListener('load', () => {
                              : 'all ' + loaded + ' images loaded';
 });
 )";
-
-std::string formatted(const char* format, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
-}
 
 std::string percent(double share) {
     return formatted("%.3f%%", 100.0 * share);

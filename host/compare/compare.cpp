@@ -13,14 +13,14 @@
 #include "compare/render_comparator.h"
 
 namespace hexray::inline compare {
-namespace {
-
 void requireSameSize(std::uint32_t w1, std::uint32_t h1, std::uint32_t w2, std::uint32_t h2) {
     if (w1 != w2 || h1 != h2) {
         throw std::invalid_argument("cannot compare a " + std::to_string(w1) + "x" + std::to_string(h1) +
                                     " image with a " + std::to_string(w2) + "x" + std::to_string(h2) + " one");
     }
 }
+
+namespace {
 
 bool considered(const PixelMask& mask, std::size_t pixel) {
     return mask.empty() || mask[pixel];

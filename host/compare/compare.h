@@ -40,6 +40,9 @@ using Ambiguities = std::vector<PixelAmbiguity>;
 // Every part of every pixel in `mask` ambiguous: a whole-pixel exclusion.
 Ambiguities wholePixels(const PixelMask& mask);
 
+// Throws std::invalid_argument naming both sizes when they differ.
+void requireSameSize(std::uint32_t w1, std::uint32_t h1, std::uint32_t w2, std::uint32_t h2);
+
 // Both images must have the same size (checked; throws std::invalid_argument).
 ErrorMetrics compareLinear(const Image& reference, const Image& test, const PixelMask& mask = {});
 ErrorMetrics compareEncoded(const Rgb8Image& reference, const Rgb8Image& test, const PixelMask& mask = {});

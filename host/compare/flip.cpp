@@ -1,5 +1,7 @@
 #include "compare/flip.h"
 
+#include "compare/compare.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -284,12 +286,6 @@ Features detectFeatures(const Plane& luminanceYy, const FeatureTaps& taps) {
         features.points.values[i] = std::hypot(ddx.values[i], ddy.values[i]);
     }
     return features;
-}
-
-void requireSameSize(std::uint32_t w1, std::uint32_t h1, std::uint32_t w2, std::uint32_t h2) {
-    if (w1 != w2 || h1 != h2) {
-        throw std::invalid_argument("FLIP: the images differ in size");
-    }
 }
 
 Image decodeSrgb(const Rgb8Image& encoded) {

@@ -1,5 +1,7 @@
 #include "compare/image_difference.h"
 
+#include "compare/compare.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,12 +14,6 @@
 namespace hexray::inline compare {
 
 namespace {
-
-void requireSameSize(std::uint32_t w1, std::uint32_t h1, std::uint32_t w2, std::uint32_t h2) {
-    if (w1 != w2 || h1 != h2) {
-        throw std::invalid_argument("the images differ in size");
-    }
-}
 
 // Where the largest finite entry of `differences` is, in an image `width` wide.
 void locateMax(ImageDifference& difference, std::uint32_t width) {

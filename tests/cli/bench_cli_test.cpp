@@ -39,8 +39,8 @@ std::string manySpheresScene() {
   "ambient": [0.15, 0.15, 0.15],
   "lights": [{"position": [30, 100, -70], "intensity": 10000}],
   "shaders": {"ball": {"type": "lambert", "color": [0.8, 0, 0]}},
-  "nodes": [)" + nodes.str() +
-           "]}";
+  "nodes": [)" +
+           nodes.str() + "]}";
 }
 
 constexpr const char* kSmallBench = " --width 16 --height 12 --rounds 1 --samples 1 --reference-samples 1";
@@ -83,12 +83,12 @@ std::optional<double> number(const std::string& text) {
 }
 
 // What a row is: with the scene, every dimension of the configuration measured.
-const std::vector<std::string> kKeyColumns = {"scene",          "spheres",           "width",           "height",
-                                              "backend",        "kernel",            "precision_asked", "precision_used",
-                                              "culling_asked",  "culling_used",      "spp"};
+const std::vector<std::string> kKeyColumns = {
+    "scene",           "spheres",        "width",         "height",       "backend", "kernel",
+    "precision_asked", "precision_used", "culling_asked", "culling_used", "spp"};
 // The columns that hold words; every other holds a number or nothing.
-const std::set<std::string> kTextColumns = {"scene",          "backend",       "kernel",        "precision_asked",
-                                            "precision_used", "culling_asked", "culling_used",  "auto_pick"};
+const std::set<std::string> kTextColumns = {"scene",          "backend",       "kernel",       "precision_asked",
+                                            "precision_used", "culling_asked", "culling_used", "auto_pick"};
 
 class BenchCliTest : public CliTest {
 protected:
@@ -158,7 +158,8 @@ TEST_F(BenchCliTest, CsvNumbersKeepFullPrecisionAndNotApplicableIsEmpty) {
 
 TEST_F(BenchCliTest, JsonHasEveryConfigurationAndAgreesWithTheCsv) {
     writeScene("many.json", manySpheresScene());
-    const RunResult run = hexray("bench many.json --spheres 2" + std::string(kSmallBench) + " --csv b.csv --json b.json");
+    const RunResult run =
+        hexray("bench many.json --spheres 2" + std::string(kSmallBench) + " --csv b.csv --json b.json");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const RunResult valid = validateJson("b.json");
     EXPECT_EQ(valid.exitCode, 0) << valid.out << valid.err;

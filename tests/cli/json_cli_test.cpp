@@ -131,7 +131,8 @@ TEST_F(JsonCliTest, RenderOfABadSceneInABatchStillWritesTheDocument) {
     fs::copy_file(test::sourcePath("scenes/lecture-demo.json"), dir_ / "scenes/good.json");
     writeScene("scenes/bad.json", "{\"image\": ");
     fs::create_directory(dir_ / "images");
-    const test::RunResult run = hexray("render scenes" + std::string(kSmall) + " --backend cpu -o images --json out.json");
+    const test::RunResult run =
+        hexray("render scenes" + std::string(kSmall) + " --backend cpu -o images --json out.json");
     ASSERT_EQ(run.exitCode, 2) << run.err;
     expectValid("out.json");
     const json document = readJson("out.json");
@@ -193,8 +194,8 @@ TEST_F(JsonCliTest, PixelOnBothBackendsToStandardOutputAgreesWithTheGpuRender) {
 
 // f32-naive loses the checker cell ten million units out: the rows the table marks, by name.
 TEST_F(JsonCliTest, PixelWhereTheBackendsDisagreeNamesTheDifferingRows) {
-    const test::RunResult run =
-        hexray("pixel " + shippedScene("hard/checker-far-1e7.json") + " 6 0" + kSmall + " --precision f32-naive --json -");
+    const test::RunResult run = hexray("pixel " + shippedScene("hard/checker-far-1e7.json") + " 6 0" + kSmall +
+                                       " --precision f32-naive --json -");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.err.find("DIFFERENCE"), std::string::npos) << run.err;
     const json document = keep(run.out, "px.json");
