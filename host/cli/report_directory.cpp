@@ -1,9 +1,6 @@
 #include "cli/report_directory.h"
 
 #include <sys/stat.h>
-#include <unistd.h>
-
-#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <system_error>
@@ -12,9 +9,7 @@
 #include "io/output_error.h"
 #include "io/output_file.h"
 #include "io/output_plan.h"
-#include "io/remove_without_following.h"
-#include "io/removed_on_signal.h"
-#include "io/stale_temporaries.h"
+#include "io/staged_directory.h"
 #include "io/temporary_names.h"
 #include "util/printable.h"
 
@@ -33,14 +28,6 @@ void writeWhole(const fs::path& path, const std::string& text) {
         file.fail("cannot write", "short write");
     }
     file.commit();
-}
-
-void moveIntoPlace(const fs::path& from, const fs::path& to) {
-    std::error_code error;
-    fs::rename(from, to, error);  // replaces a symlink at `to`, never what it names
-    if (error) {
-        fail(to, "cannot move the report's file into place", error.message());
-    }
 }
 
 // DIR/images, if there, as a directory of this DIR's own: a symlink (which would send the images
@@ -66,105 +53,42 @@ void ReportDirectory::addToPlan(OutputPlan& plan, const std::string& directory) 
     plan.addDirectory("--report", fs::path(directory) / kReportImages, isReportImageName);
 }
 
-ReportDirectory::ReportDirectory(const std::string& directory) : directory_(directory) {
-    try {
-        refuseForeignImageDirectory(directory_ / kReportImages);
-        createDirectory();
-        removeStaleTemporaries(directory_);
-        // Inside DIR, so that commit() renames within one file system.
-        RegisteredTemporary staging = createTemporary(
-            (directory_ / std::string(kReportStagingPrefix)).string() + "XXXXXX", RemovedOnSignal::Kind::Directory);
-        if (staging.descriptor < 0) {
-            fail(directory_, "cannot create a staging directory", std::generic_category().message(errno));
-        }
-        staging_ = staging.path;
-        removal_ = std::move(staging.removal);
-        stagingLock_ = staging.descriptor;
-        holdAsLive(stagingLock_);
-    } catch (...) {
-        discard();  // a constructor that throws gets no destructor call
-        throw;
-    }
+ReportDirectory::ReportDirectory(const std::string& directory) {
+    refuseForeignImageDirectory(fs::path(directory) / kReportImages);
+    staged_ = std::make_unique<StagedDirectory>(directory, kReportStagingPrefix, "the report directory");
 }
 
-ReportDirectory::~ReportDirectory() {
-    discard();
-}
-
-void ReportDirectory::createDirectory() {
-    for (fs::path missing = directory_; !missing.empty() && !fs::exists(fs::symlink_status(missing));
-         missing = missing.parent_path()) {
-        created_.push_back(missing);
-    }
-    std::error_code error;
-    fs::create_directories(directory_, error);
-    if (error) {
-        fail(directory_, "cannot create the report directory", error.message());
-    }
-}
+ReportDirectory::~ReportDirectory() = default;
 
 std::array<fs::path, 4> ReportDirectory::stagedImages(const std::string& stem) const {
     std::array<fs::path, 4> paths;
     for (std::size_t i = 0; i < paths.size(); ++i) {
-        paths[i] = staging_ / reportImageName(stem, kReportImageKinds[i]);
+        paths[i] = staged_->staging() / reportImageName(stem, kReportImageKinds[i]);
     }
     return paths;
 }
 
+// The images first, then the results and the page that name them; last, an earlier report's
+// images that this one did not replace.
 void ReportDirectory::commit(const std::string& page, const nlohmann::json& results,
                              const std::vector<std::string>& stems) {
-    writeJson((staging_ / kReportResults).string(), results);
-    writeWhole(staging_ / kReportPage, page);
+    writeJson((staged_->staging() / kReportResults).string(), results);
+    writeWhole(staged_->staging() / kReportPage, page);
     std::vector<std::string> images;
     for (const std::string& stem : stems) {
         for (const ReportImage image : kReportImageKinds) {
             images.push_back(reportImageName(stem, image));
         }
     }
-    moveImagesIntoPlace(images);
-    moveIntoPlace(staging_ / kReportResults, directory_ / kReportResults);
-    moveIntoPlace(staging_ / kReportPage, directory_ / kReportPage);
-    created_.clear();  // DIR now holds this report: it stays
-    discard();
-}
-
-// The images, then an earlier report's that this one did not replace.
-void ReportDirectory::moveImagesIntoPlace(const std::vector<std::string>& images) const {
-    const fs::path directory = directory_ / kReportImages;
-    requireImageDirectory(directory);
+    const fs::path imageDirectory = staged_->directory() / kReportImages;
+    requireImageDirectory(imageDirectory);
     for (const std::string& name : images) {
-        moveIntoPlace(staging_ / name, directory / name);
+        staged_->moveIntoPlace(name, imageDirectory / name);
     }
-    std::error_code error;
-    for (auto entry = fs::directory_iterator(directory, error); !error && entry != fs::directory_iterator();
-         entry.increment(error)) {
-        const std::string name = entry->path().filename().string();
-        if (isReportImageName(name) && std::find(images.begin(), images.end(), name) == images.end() &&
-            !removeWithoutFollowing(directory, name)) {
-            fail(entry->path(), "cannot remove an earlier report's image", "it could not be removed");
-        }
-    }
-    if (error) {
-        fail(directory, "cannot list the report's image directory", error.message());
-    }
-}
-
-// Removes what an uncommitted report made: its files, the staging directory, the directories it created.
-void ReportDirectory::discard() {
-    if (!staging_.empty()) {
-        std::error_code ignored;
-        fs::remove_all(staging_, ignored);
-        staging_.clear();
-    }
-    removal_.reset();
-    if (stagingLock_ >= 0) {
-        ::close(stagingLock_);
-        stagingLock_ = -1;
-    }
-    for (const fs::path& directory : created_) {
-        ::rmdir(directory.c_str());  // only if empty: another writer's files stay
-    }
-    created_.clear();
+    staged_->moveIntoPlace(kReportResults, staged_->directory() / kReportResults);
+    staged_->moveIntoPlace(kReportPage, staged_->directory() / kReportPage);
+    staged_->finish();
+    StagedDirectory::removeOthers(imageDirectory, isReportImageName, images);
 }
 
 }  // namespace hexray::cli

@@ -1,11 +1,10 @@
 #pragma once
 // `hexray compare --report DIR`, on disk: every file is written into a hidden staging directory
-// inside DIR (`.hexray-report-XXXXXX`) and moved into place by commit(), images first and the
-// page last, so that DIR holds either the earlier report or the whole new one, never a page
-// naming images that are not there. Moves replace a symlink in DIR, never follow it; commit()
-// also removes an earlier report's images that this one does not have. Destroyed without
-// commit() (a failure, an exception) or ended by a catchable signal, it removes the staging
-// directory and the directories it created, and leaves DIR as it was. The layout: report_layout.h.
+// inside DIR (`.hexray-report-XXXXXX`, io/staged_directory.h) and moved into place by commit(),
+// images first and the page last, so that DIR holds either the earlier report or the whole new
+// one, never a page naming images that are not there; commit() also removes an earlier report's
+// images that this one does not have. Destroyed without commit(), it leaves DIR as it was. The
+// layout: report_layout.h.
 
 #include <array>
 #include <filesystem>
@@ -19,7 +18,7 @@
 
 namespace hexray::inline io {
 class OutputPlan;
-class RemovedOnSignal;
+class StagedDirectory;
 }  // namespace hexray::io
 
 namespace hexray::cli {
@@ -43,15 +42,7 @@ public:
     void commit(const std::string& page, const nlohmann::json& results, const std::vector<std::string>& stems);
 
 private:
-    void createDirectory();
-    void moveImagesIntoPlace(const std::vector<std::string>& images) const;
-    void discard();
-
-    std::filesystem::path directory_;
-    std::vector<std::filesystem::path> created_;  // directories this report created, deepest first
-    std::filesystem::path staging_;               // empty once committed or discarded
-    int stagingLock_ = -1;                        // holds the staging directory as a live run's
-    std::unique_ptr<RemovedOnSignal> removal_;
+    std::unique_ptr<StagedDirectory> staged_;
 };
 
 }  // namespace hexray::cli

@@ -30,7 +30,7 @@
 #include "image/provenance.h"
 
 namespace hexray::inline io {
-class RemovedOnSignal;  // io/removed_on_signal.h
+class StagedDirectory;  // io/staged_directory.h
 }  // namespace hexray::io
 
 namespace hexray::inline image {
@@ -82,15 +82,8 @@ public:
     std::vector<std::filesystem::path> commit();
 
 private:
-    void createDirectory();
-    void discard();
-
-    std::filesystem::path directory_;
-    std::vector<std::filesystem::path> created_;  // directories this set created, deepest first
-    std::filesystem::path staging_;               // empty once committed
-    int stagingLock_ = -1;                        // holds the staging directory as a live run's
-    std::unique_ptr<RemovedOnSignal> removal_;
-    std::unique_ptr<AovSetWriter> writer_;
+    std::unique_ptr<StagedDirectory> staged_;
+    std::unique_ptr<AovSetWriter> writer_;  // after staged_: its files close before the staging directory goes
 };
 
 }  // namespace hexray::image
