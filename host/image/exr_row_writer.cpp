@@ -19,14 +19,14 @@
 #include "io/output_file.h"
 
 namespace hexray::inline image {
-namespace {
 
+// Outside the anonymous namespace: Encoder, which has external linkage, holds one.
 // OpenEXR's output stream over a stdio stream: the OutputFile's own, or a scratch copy of it.
 // Failures throw the OutputFile's OutputError, `what` saying which was written. It keeps a copy
 // of what is written while capturing (the header), so that a note's text can be found there again.
-class StdioStream : public Imf::OStream {
+class ExrStdioStream : public Imf::OStream {
 public:
-    StdioStream(std::FILE* stream, const OutputFile& file, std::string what)
+    ExrStdioStream(std::FILE* stream, const OutputFile& file, std::string what)
         : Imf::OStream(file.name().c_str()), stream_(stream), file_(file), what_(std::move(what)) {}
 
     void write(const char bytes[], int count) override {
@@ -52,6 +52,8 @@ private:
     const OutputFile& file_;
     std::string what_;
 };
+
+namespace {
 
 // Where OpenEXR writes: the output itself where it can seek back (a regular file hexray
 // creates), else an unnamed scratch file, copied to the output once complete.
@@ -118,7 +120,7 @@ struct ExrRowWriter::Encoder {
     // Declared in this order so the encoder is released before the stream and the files.
     OutputFile file;
     FilePointer scratch;  // null where OpenEXR writes the file itself
-    StdioStream stream;
+    ExrStdioStream stream;
     std::unique_ptr<Imf::OutputFile> exr;
     std::vector<std::string> channelNames;
     std::vector<ImageNote> notes;

@@ -17,14 +17,14 @@ namespace {
 constexpr std::size_t kMaxChunkBytes = std::size_t{1} << 20;
 constexpr std::size_t kMaxChunkCacheBytes = std::size_t{4} << 20;
 
-struct TextChunk {
-    std::string keyword;
-    std::string text;
-};
-
 }  // namespace
 
 struct PngRowReader::Decoder {
+    struct TextChunk {
+        std::string keyword;
+        std::string text;
+    };
+
     const ReadOnlyFile& file;
     std::uint64_t offset = 0;  // the next byte libspng reads
     std::string readFailure;   // why the file could not be read, if it could not
