@@ -1,17 +1,25 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package hexray needs to build, render and test.
-# `--bench` adds what only tools/bench-report.sh and tools/scale-bench.sh use: Embree 3 (the bench's
-# optional yardstick) and matplotlib (the plot). Idempotent: safe to run again; apt skips what
-# is already installed.
+# Installs the Debian 12 packages hexray needs.
+#   (no argument)  everything to build, render and test
+#   --render       only what building and running the `hexray` executable needs (ci/render-demo.sh)
+#   --bench        everything, and what only tools/bench-report.sh and tools/scale-bench.sh use:
+#                  Embree 3 (the bench's optional yardstick) and matplotlib (the plot)
+# Idempotent: safe to run again; apt skips what is already installed.
 set -euo pipefail
 
+# Building and running hexray.
 packages=(
-  build-essential cmake pkg-config
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
+  g++ make cmake pkg-config
+  libvulkan-dev mesa-vulkan-drivers glslang-tools
   glslang-dev spirv-tools  # glslang as a library: generated kernels are compiled at run time
-  libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev
   libxml2-dev  # compare --junit: the XML writer
   libssl-dev  # OpenSSL's libcrypto: SHA-256 of the kernel cache's files and the strips' pixels
+  git  # the build records the revision it was configured from
+)
+# The tests and CI.
+test_packages=(
+  vulkan-validationlayers vulkan-tools libgtest-dev
   libmpfr-dev  # the tests' exact accuracy oracle (tests/oracle/)
   python3-lxml  # validates compare --junit output against tests/cli/junit.xsd; parses --report's page
   chromium  # the tests load compare --report's page in headless chromium (tests/cli/check_report.py)
@@ -19,12 +27,12 @@ packages=(
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
   clang-format-14 clang-tidy-14  # ci/lint.sh: the house style
-  git  # ci/lint.sh lists the tracked files; the build records the revision
 )
 case "${1:-}" in
-  --bench) packages+=(libembree-dev python3-matplotlib) ;;
-  "") ;;
-  *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+  --render) ;;
+  --bench) packages+=("${test_packages[@]}" libembree-dev python3-matplotlib) ;;
+  "") packages+=("${test_packages[@]}") ;;
+  *) echo "usage: $0 [--render | --bench]" >&2; exit 2 ;;
 esac
 
 missing=()

@@ -25,11 +25,18 @@ export LD_PRELOAD="$PWD/build-asan/keep-libraries-loaded.so"
 export VK_DRIVER_FILES
 VK_DRIVER_FILES=$(sed -n 's/^HEXRAY_TEST_VULKAN_DRIVER:STRING=//p' build-asan/CMakeCache.txt)
 
-# Tests that repeat the same code over many scenes or frames; they run in the release build.
+# Tests that repeat the same code over many scenes or frames, or check what an output says rather
+# than how it is written (the compare gate over the whole scene tree, the JSON documents, the bench,
+# the report in headless chromium, which is not instrumented): they run in the release build.
 repeated="ProgressCliTest.RenderShowsRowsDoneAndTimeLeftOnATerminalOnBothBackends"
 repeated+=":CliTest.ABatchOfMoreScenesThanTheRendererKeepsKernelsForGivesEachTheImageItGetsAlone"
 repeated+=":CliTest.CompareAllPrintsOneTableOfScenesAndPrecisions"
 repeated+=":StripCliTest.MergedGpuStripsWithCullingAreTheSingleRenderPixelForPixel"
+repeated+=":CompareGateCliTest.TheShippedScenes*:CompareGateCliTest.ANearTiedScene*:CompareGateCliTest.CommandLine*"
+repeated+=":CompareGateCliTest.AnExpectationThatNoLongerHolds*:CompareGateCliTest.MeanFlip*"
+repeated+=":ReportTest.EveryImageLoads*:ReportTest.AMissingImage*:ReportTest.TheGpuRenderFlips*"
+repeated+=":ReportTest.AFailedScene*:ReportTest.AMissingBrowser*"
+repeated+=":JsonCliTest.Render*:JsonCliTest.Pixel*:BenchCliTest.*"
 
 # One process per core, each a shard of the tests (GoogleTest's own sharding).
 shards=$(nproc)
