@@ -100,7 +100,9 @@ the pixel): camera-ray node tests, lights with a shadow test, and shadow node te
 converged image): at 1 spp almost all of it is aliasing, the same for every backend;
 **precision error** = 8-bit RMSE (and the share of pixels more than one level off) against the
 CPU reference at the **same** sample count, on the pixels whose decisions it calls clear of
-rounding: what the backend's arithmetic costs; **topology mismatches** = pixels whose node,
+rounding: what the backend's arithmetic costs; **mean FLIP** = mean LDR-FLIP (the perceptual
+difference \`compare\` and \`diff\` report, docs/diff.md) against that same reference, every pixel
+(in [0, 1]; 0 = indistinguishable); **topology mismatches** = pixels whose node,
 checker cell or lit lights differ from that reference, outside its ambiguous pixels.
 
 ## Targets

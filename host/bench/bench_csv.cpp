@@ -86,6 +86,7 @@ std::vector<Column> columns(const BenchBackends& backends) {
         {"shadow_tests_per_pixel", [](S, R r) { return number(optionalField(r.work, &WorkPerPixel::shadowTests)); }},
         {"sampling_rmse_levels", [](S, R r) { return number(optionalField(r.samplingError, &ErrorMetrics::rmse)); }},
         {"precision_rmse_levels", [](S, R r) { return number(r.precisionError.rmse); }},
+        {"precision_flip_mean", [](S, R r) { return number(r.flipMean); }},
         {"precision_max_abs_levels", [](S, R r) { return number(r.precisionError.maxAbs); }},
         {"pixels_over_one_level", [](S, R r) { return std::to_string(r.precisionError.pixelsOverOneLevel); }},
         {"share_over_one_level", [](S, R r) { return number(r.precisionError.shareOverOneLevel); }},

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "compare/band_flip.h"
+
 namespace hexray::inline bench {
 namespace {
 
@@ -41,6 +43,31 @@ void describeConfiguration(const BenchConfiguration& configuration, const BenchM
     }
 }
 
+// The row's errors against the references, from its last render: once per row, after the rounds,
+// as FLIP (single-threaded, whole images) costs far more than the other metrics.
+void addErrors(const BenchScene& bench, const BenchConfiguration& configuration, const BenchMeasurement& measurement,
+               BenchRow& row) {
+    const Encoding encoding = bench.scene.image.encoding;
+    const Rgb8Image encoded =
+        isGpu(configuration.backend) ? measurement.encoded : encodeImage(measurement.image, encoding);
+    const CpuRender& reference = bench.reference.bySamples.at(configuration.samplesPerPixel);
+    const Rgb8Image reference8 = encodeImage(reference.image, encoding);
+    // Precision error where the reference's decisions are clear of rounding (compare's rule).
+    const PixelMask ambiguous = marginsBelow(reference.margins, kAmbiguityMargin);
+    PixelMask unambiguous(ambiguous.size());
+    std::transform(ambiguous.begin(), ambiguous.end(), unambiguous.begin(), [](bool a) { return !a; });
+    row.precisionError = compareEncoded(reference8, encoded, unambiguous);
+    BandFlip flip(encoded.width, encoded.height, encoding);
+    flip.add(reference8, encoded);
+    row.flipMean = flip.mean();
+    if (!bench.reference.converged.bytes.empty()) {
+        row.samplingError = compareEncoded(bench.reference.converged, encoded);
+    }
+    if (!measurement.classes.empty()) {
+        row.topology = compareTopology(reference.classes, measurement.classes, ambiguous);
+    }
+}
+
 BenchRow rowFor(const BenchScene& bench, const BenchConfiguration& configuration, const BenchMeasurement& measurement,
                 BenchBackends& backends) {
     BenchRow row;
@@ -60,23 +87,9 @@ BenchRow rowFor(const BenchScene& bench, const BenchConfiguration& configuration
     row.coreNsPerPixel = row.medianMs * 1e6 * std::max(1u, row.threads) / pixels;
     describeConfiguration(configuration, measurement, row);
 
+    addErrors(bench, configuration, measurement, row);
     Scene sampled = bench.scene;
     sampled.image.samplesPerPixel = configuration.samplesPerPixel;
-    const Encoding encoding = bench.scene.image.encoding;
-    const Rgb8Image encoded =
-        isGpu(configuration.backend) ? measurement.encoded : encodeImage(measurement.image, encoding);
-    const CpuRender& reference = bench.reference.bySamples.at(configuration.samplesPerPixel);
-    // Precision error where the reference's decisions are clear of rounding (compare's rule).
-    const PixelMask ambiguous = marginsBelow(reference.margins, kAmbiguityMargin);
-    PixelMask unambiguous(ambiguous.size());
-    std::transform(ambiguous.begin(), ambiguous.end(), unambiguous.begin(), [](bool a) { return !a; });
-    row.precisionError = compareEncoded(encodeImage(reference.image, encoding), encoded, unambiguous);
-    if (!bench.reference.converged.bytes.empty()) {
-        row.samplingError = compareEncoded(bench.reference.converged, encoded);
-    }
-    if (!measurement.classes.empty()) {
-        row.topology = compareTopology(reference.classes, measurement.classes, ambiguous);
-    }
     row.work = backends.work(sampled, configuration);
     return row;
 }
@@ -173,15 +186,15 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
         "| scene | resolution | backend | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
         "| vs hand-written | primary tests/px | shadow rays/px | shadow tests/px | sampling error: RMSE vs "
         "converged (levels) | precision error: RMSE vs CPU ref, same spp, unambiguous px (levels) | "
-        "> 1 level, same spp | topology mismatches |\n");
-    std::printf("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        "mean FLIP vs CPU ref, same spp | > 1 level, same spp | topology mismatches |\n");
+    std::printf("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, false)) {
         const BenchScene& bench = scenes[row->configuration.scene];
         const auto work = [&](double WorkPerPixel::*field) {
             return row->work ? format("%.2f", (*row->work).*field) : "–";
         };
         std::printf(
-            "| %s | %ux%u | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %s | %s | %s | %.3f | %.3f%% "
+            "| %s | %ux%u | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %s | %s | %s | %.3f | %s | %.3f%% "
             "| %s |\n",
             bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
             backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(), cullingText(*row).c_str(),
@@ -189,7 +202,8 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
             row->frameMs, optional(row->versusHandWritten, "%.2f").c_str(), work(&WorkPerPixel::primaryTests).c_str(),
             work(&WorkPerPixel::shadowRays).c_str(), work(&WorkPerPixel::shadowTests).c_str(),
             optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f").c_str(),
-            row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+            row->precisionError.rmse, optional(row->flipMean, "%.5f").c_str(),
+            100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
     }
 }
 
@@ -198,17 +212,19 @@ void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<Be
     std::printf(
         "| spheres | resolution | backend | precision | spp | Mpix/s median | Mpix/s best | frame ms | host plan "
         "ms | upload ms | threads | core-ns per pixel | vs Embree (faster mode) | RMSE vs CPU ref, same spp, "
-        "unambiguous px (levels) | > 1 level | topology mismatches |\n");
-    std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        "unambiguous px (levels) | mean FLIP vs CPU ref | > 1 level | topology mismatches |\n");
+    std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, true)) {
         const BenchScene& bench = scenes[row->configuration.scene];
-        std::printf("| %u | %ux%u | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %.3f%% | %s |\n",
-                    *bench.spheres, bench.scene.image.width, bench.scene.image.height,
-                    backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
-                    row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
-                    row->frameMs, optional(row->planMs, "%.1f").c_str(), optional(row->uploadMs, "%.1f").c_str(),
-                    row->threads, row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(),
-                    row->precisionError.rmse, 100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+        std::printf(
+            "| %u | %ux%u | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %s | %.3f%% | %s |\n",
+            *bench.spheres, bench.scene.image.width, bench.scene.image.height,
+            backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
+            row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
+            row->frameMs, optional(row->planMs, "%.1f").c_str(), optional(row->uploadMs, "%.1f").c_str(), row->threads,
+            row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(), row->precisionError.rmse,
+            optional(row->flipMean, "%.5f").c_str(), 100.0 * row->precisionError.shareOverOneLevel,
+            mismatches(*row).c_str());
     }
 }
 

@@ -47,10 +47,13 @@ struct BenchRow {
     std::optional<double> planMs, uploadMs;  // GPU: host-side preparation, medians
     unsigned threads = 0;                    // 0 for a real GPU
     double coreNsPerPixel = 0;
-    std::optional<double> versusHandWritten;     // the hand-written kernel's row at the same scene and spp
-    std::optional<double> versusEmbree;          // the faster Embree row at the same scene and spp
-    std::optional<ErrorMetrics> samplingError;   // against the converged reference (file scenes)
-    ErrorMetrics precisionError;                 // against the CPU reference at the same sample count
+    std::optional<double> versusHandWritten;    // the hand-written kernel's row at the same scene and spp
+    std::optional<double> versusEmbree;         // the faster Embree row at the same scene and spp
+    std::optional<ErrorMetrics> samplingError;  // against the converged reference (file scenes)
+    ErrorMetrics precisionError;                // against the CPU reference at the same sample count
+    // Mean LDR-FLIP of the 8-bit output against that reference, every pixel (compare/band_flip.h);
+    // none past its size bound.
+    std::optional<double> flipMean;
     std::optional<TopologyComparison> topology;  // none for a backend without pixel classes
     std::optional<WorkPerPixel> work;            // GPU kernels generated for the scene
 };

@@ -78,6 +78,7 @@ nlohmann::json configurationJson(const BenchRow& row, const BenchBackends& backe
         {"error",
          {{"sampling", row.samplingError ? errorJson(*row.samplingError) : nlohmann::json(nullptr)},
           {"precision", errorJson(row.precisionError)},
+          {"flip_mean", numberOrNull(row.flipMean)},
           {"topology", topologyJson(row.topology)}}},
     };
 }

@@ -158,8 +158,8 @@ TEST_F(BenchCliTest, CsvNumbersKeepFullPrecisionAndNotApplicableIsEmpty) {
 
 TEST_F(BenchCliTest, JsonHasEveryConfigurationAndAgreesWithTheCsv) {
     writeScene("many.json", manySpheresScene());
-    const RunResult run =
-        hexray("bench many.json --spheres 2" + std::string(kSmallBench) + " --csv b.csv --json b.json");
+    const RunResult run = hexray("bench many.json --spheres 2 --max-frame-seconds 1e9" + std::string(kSmallBench) +
+                                 " --csv b.csv --json b.json");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const RunResult valid = validateJson("b.json");
     EXPECT_EQ(valid.exitCode, 0) << valid.out << valid.err;
@@ -175,6 +175,7 @@ TEST_F(BenchCliTest, JsonHasEveryConfigurationAndAgreesWithTheCsv) {
     ASSERT_EQ(document["scenes"].size(), 2u);  // many, and the curve's 2-sphere scene
     EXPECT_EQ(document["scenes"][1]["spheres"], 2);
     std::size_t row = 1;
+    int identicalRows = 0;
     for (const nlohmann::json& scene : document["scenes"]) {
         for (const nlohmann::json& configuration : scene["configurations"]) {
             ASSERT_LT(row, rows.size());
@@ -186,6 +187,17 @@ TEST_F(BenchCliTest, JsonHasEveryConfigurationAndAgreesWithTheCsv) {
             EXPECT_EQ(number(field(rows, row, "median_mpix_s")), configuration["speed"]["median_mpix_s"].get<double>());
             EXPECT_EQ(number(field(rows, row, "precision_rmse_levels")),
                       configuration["error"]["precision"]["rmse_levels"].get<double>());
+            // Mean FLIP against the same reference, every pixel: a share, and 0 for the reference's own
+            // render, which is the reference (the CPU renderer is deterministic).
+            ASSERT_TRUE(configuration["error"]["flip_mean"].is_number());
+            const double flip = configuration["error"]["flip_mean"].get<double>();
+            EXPECT_GE(flip, 0.0);
+            EXPECT_LE(flip, 1.0);
+            EXPECT_EQ(number(field(rows, row, "precision_flip_mean")), flip);
+            if (configuration["backend"] == "cpu-reference") {
+                EXPECT_EQ(flip, 0.0);
+                ++identicalRows;
+            }
             const bool culled = configuration["culling"]["used"].is_boolean() && configuration["culling"]["used"];
             EXPECT_EQ(field(rows, row, "culling_used") == "on", culled);
             if (configuration["backend"] == "lavapipe") {
@@ -197,6 +209,7 @@ TEST_F(BenchCliTest, JsonHasEveryConfigurationAndAgreesWithTheCsv) {
         }
     }
     EXPECT_EQ(row, rows.size());
+    EXPECT_EQ(identicalRows, 2);  // the CPU reference's row in each scene
 }
 
 TEST_F(BenchCliTest, JsonToStandardOutputLeavesTheTablesOnStandardError) {
@@ -205,6 +218,7 @@ TEST_F(BenchCliTest, JsonToStandardOutputLeavesTheTablesOnStandardError) {
     const nlohmann::json document = nlohmann::json::parse(run.out);
     EXPECT_EQ(document["command"], "bench");
     EXPECT_NE(run.err.find("| scene | resolution | backend |"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("| mean FLIP vs CPU ref, same spp |"), std::string::npos) << run.err;
     std::ofstream(dir_ / "out.json") << run.out;
     EXPECT_EQ(validateJson("out.json").exitCode, 0);
 }

@@ -275,8 +275,12 @@ TEST_F(CliTest, BenchSphereCurveHasARowPerBackendAndCount) {
         // The curve's reference is the CPU reference at the same sample count: its own row is exact.
         if (backend == "cpu-reference") {
             EXPECT_EQ(field(rows, row, "precision_rmse_levels"), "0");
+            EXPECT_EQ(field(rows, row, "precision_flip_mean"), "0");
         }
         EXPECT_LT(std::stod(field(rows, row, "precision_rmse_levels")), 1.0) << backend;
+        const double flip = std::stod(field(rows, row, "precision_flip_mean"));
+        EXPECT_GE(flip, 0.0) << backend;
+        EXPECT_LE(flip, 1.0) << backend;
         EXPECT_EQ(field(rows, row, "topology_mismatches"), "0") << backend;
         if (kWithEmbree) {
             const double versus = std::stod(field(rows, row, "vs_embree"));

@@ -608,6 +608,9 @@ TEST_P(ShippedSceneMargins, MostPixelsAreUnambiguous) {
     const double share = ambiguousShare(render);
     std::printf("[ ambiguous ] %s: %.3f %% of %zu pixels\n", GetParam().filename().string().c_str(), 100.0 * share,
                 render.ambiguity.size());
+    // tools/accuracy-report.sh reads these from --gtest_output=json.
+    RecordProperty("scene", GetParam().filename().string());
+    RecordProperty("ambiguous_share", (testing::Message() << share).GetString());
     // In the demo scenes edge rows, silhouettes, terminators and shadow edges are curves, not
     // areas. Scenes in subfolders (scenes/hard/) are built to sit on knife edges: only reported.
     if (GetParam().parent_path() == test::sourcePath("scenes")) {
@@ -631,6 +634,9 @@ TEST(RandomSpheresMargins, ThreeThousandSpheresStayWithinCompareLimit) {
               std::pair("f64", DecisionRoundoff{FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF})}) {
             const double share = ambiguousShare(renderOnCpu(scene, 0, Acceleration::Auto, false, roundoff));
             std::printf("[ ambiguous ] 3000 random spheres, %u spp, %s: %.3f %%\n", samples, name, 100.0 * share);
+            // tools/accuracy-report.sh reads these from --gtest_output=json.
+            testing::Test::RecordProperty("ambiguous_share_" + std::to_string(samples) + "spp_" + name,
+                                          (testing::Message() << share).GetString());
             EXPECT_LT(share, 0.05);
         }
     }

@@ -420,6 +420,10 @@ TEST_P(HardCaseTest, MatchesAnalyticGroundTruth) {
     const Outcome o = runChecks(name, scene, gpu);
     std::printf("hard %s %s: %llu violations;%s\n", name.c_str(), std::string(precisionName(precision)).c_str(),
                 static_cast<unsigned long long>(o.violations()), summary(o).c_str());
+    // tools/accuracy-report.sh reads these from --gtest_output=json.
+    RecordProperty("scene", name);
+    RecordProperty("precision", std::string(precisionName(precision)));
+    RecordProperty("violations", std::to_string(o.violations()));
     for (const Asserted& a : o.asserted) {
         EXPECT_EQ(a.count.violations, 0u) << a.count.name << ": " << a.count.firstViolations;
         EXPECT_GE(a.count.checked, a.minChecked) << a.count.name << " looked at too few pixels to mean anything";
@@ -446,6 +450,7 @@ TEST_F(HardCaseNaiveTest, TextbookFloat32FailsAtLeastFiveHardCases) {
         const Outcome o = runChecks(name, scene, renderer.render(scene, Precision::F32Naive));
         std::printf("hard %s f32-naive: %llu violations;%s\n", name.c_str(),
                     static_cast<unsigned long long>(o.violations()), summary(o).c_str());
+        RecordProperty("violations." + name, std::to_string(o.violations()));  // for tools/accuracy-report.sh
         if (o.violations() > 0)
             failed.push_back(name);
     }

@@ -3,7 +3,7 @@
 // one it picks) and explained by the CPU reference (explainPixel), and each answer is checked
 // against the oracle's for the direction that renderer really followed, at its own precision's
 // unit roundoff (ray_check.h states the criteria and bounds). Prints the table that
-// docs/accuracy.md shows (tools/accuracy-report.sh collects the "oracle-row:" lines).
+// docs/accuracy.md shows, and records it as test properties (tools/accuracy-report.sh reads them).
 
 #include <cstdio>
 #include <map>
@@ -96,6 +96,24 @@ Tally judgeRay(const oracle::HardRay& ray, const RendererRay& rendered, double u
     return tally;
 }
 
+// One row of the table as test properties "row<i>.<field>" (gtest --gtest_output=json), in the
+// table's order, for tools/accuracy-report.sh.
+void recordRow(int row, const std::string& family, const std::string& renderer, const Tally& t) {
+    const std::string prefix = "row" + std::to_string(row) + ".";
+    const auto record = [&](const char* field, const auto& value) {
+        testing::Test::RecordProperty(prefix + field, (testing::Message() << value).GetString());
+    };
+    record("family", family);
+    record("renderer", renderer);
+    record("rays", t.rays);
+    record("right_decisions", t.rightDecisions);
+    record("decisions", t.decisions);
+    record("distances", t.distances);
+    record("max_distance_ulps", t.maxDistanceUlps);
+    record("values", t.values);
+    record("max_value_units", t.maxValueUnits);
+}
+
 const char* const kColumns[] = {"cpu reference (f64)", "gpu f32", "gpu f64", "gpu auto"};
 
 using OracleSuiteTest = test::ValidatedVulkanTest;
@@ -123,6 +141,7 @@ TEST_F(OracleSuiteTest, EveryWellConditionedAnswerIsRightOnBothRenderers) {
 
     std::uint64_t rays = 0;
     std::uint64_t decisions = 0;
+    int row = 0;
     for (const std::string& family : families) {
         for (const char* column : kColumns) {
             const Tally& t = table[family][column];
@@ -131,6 +150,7 @@ TEST_F(OracleSuiteTest, EveryWellConditionedAnswerIsRightOnBothRenderers) {
                         static_cast<unsigned long long>(t.rightDecisions), static_cast<unsigned long long>(t.decisions),
                         static_cast<unsigned long long>(t.distances), t.maxDistanceUlps,
                         static_cast<unsigned long long>(t.values), t.maxValueUnits);
+            recordRow(row++, family, column, t);
             for (const std::string& failure : t.failures)
                 ADD_FAILURE() << failure;
             EXPECT_EQ(t.rightDecisions, t.decisions) << family << " " << column;
