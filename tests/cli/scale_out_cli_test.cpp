@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -123,6 +124,73 @@ INSTANTIATE_TEST_SUITE_P(Engines, ScaleOutEngineTest,
                          ::testing::Values(Engine{"KubernetesIndexedJob", "JOB_COMPLETION_INDEX", "k8s"},
                                            Engine{"SlurmArray", "SLURM_ARRAY_TASK_ID", "slurm"}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// The doc's run scripts, run against fake_cluster.py (kubectl and sbatch as local processes, the
+// volume a directory here): the frame comes out, and a strip that fails on every attempt ends the
+// run, its merge naming the strip, instead of a wait that never ends.
+class ScaleOutRunTest : public ScaleOutCliTest {
+protected:
+    RunResult runOnFakeCluster(const std::string& script, const std::string& failingIndex = "") const {
+        std::string fake = "'";
+        fake += test::sourcePath("tests/cli/fake_cluster.py").string() + "'";
+        return shell("mkdir -p bin volume state && ln -s " + fake + " bin/kubectl && ln -s " + fake +
+                     " bin/sbatch && ln -s \"$HEXRAY\" bin/hexray && PATH=\"$PWD/bin:$PATH\" "
+                     "FAKE_CLUSTER_VOLUME=\"$PWD/volume\" FAKE_CLUSTER_STATE=\"$PWD/state\" FAKE_CLUSTER_FAIL_INDEX=" +
+                     failingIndex + " bash " + script + " scene.json");
+    }
+
+    // The files `directory/*/name` (name empty: the files in `directory` whose name starts with
+    // `prefix`).
+    std::vector<fs::path> found(const fs::path& directory, const std::string& prefix, const std::string& name) const {
+        std::vector<fs::path> paths;
+        if (!fs::exists(directory)) {
+            return paths;
+        }
+        for (const auto& entry : fs::directory_iterator(directory)) {
+            const fs::path path = name.empty() ? entry.path() : entry.path() / name;
+            if (entry.path().filename().string().starts_with(prefix) && fs::is_regular_file(path)) {
+                paths.push_back(path);
+            }
+        }
+        return paths;
+    }
+};
+
+TEST_F(ScaleOutRunTest, TheKubernetesRunCopiesTheFrameOut) {
+    const RunResult run = runOnFakeCluster("k8s-run.sh");
+    ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+    EXPECT_NE(run.out.find("strips Complete, merge Complete"), std::string::npos) << run.out;
+    const std::vector<fs::path> frames = found(dir_, "frame-", "");
+    ASSERT_EQ(frames.size(), 1u);
+    EXPECT_EQ(readPng(frames[0]).bytes, readPng(dir_ / "single.png").bytes);
+    EXPECT_EQ(found(dir_ / "volume" / "runs", "", "frame.png").size(), 1u);
+}
+
+TEST_F(ScaleOutRunTest, AKubernetesRunWhoseStripFailsEndsWithTheMergeNamingIt) {
+    const RunResult run = runOnFakeCluster("k8s-run.sh", "3");
+    EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
+    EXPECT_NE(run.out.find("missing strip 3/8, rows 16-21"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("strips Failed, merge Failed"), std::string::npos) << run.out;
+    EXPECT_TRUE(found(dir_, "frame-", "").empty());
+}
+
+TEST_F(ScaleOutRunTest, TheSlurmRunMergesInItsDirectory) {
+    const RunResult run = runOnFakeCluster("slurm-run.sh");
+    ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+    const std::vector<fs::path> frames = found(dir_ / "runs", "", "frame.png");
+    ASSERT_EQ(frames.size(), 1u);
+    EXPECT_EQ(readPng(frames[0]).bytes, readPng(dir_ / "single.png").bytes);
+    EXPECT_TRUE(fs::exists(frames[0].parent_path() / "strip-7.log"));
+}
+
+TEST_F(ScaleOutRunTest, ASlurmRunWhoseStripFailsStillMergesNamingIt) {
+    const RunResult run = runOnFakeCluster("slurm-run.sh", "5");
+    EXPECT_EQ(run.exitCode, 2) << run.out << run.err;
+    const std::vector<fs::path> logs = found(dir_ / "runs", "", "merge.log");
+    ASSERT_EQ(logs.size(), 1u) << run.err;
+    EXPECT_NE(readFile(logs[0]).find("missing strip 5/8, rows 28-32"), std::string::npos) << readFile(logs[0]);
+    EXPECT_TRUE(found(dir_ / "runs", "", "frame.png").empty());
+}
 
 // One point a recipe must keep, taken out of the doc: the check names what is missing.
 struct RemovedPoint {
