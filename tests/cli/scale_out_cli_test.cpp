@@ -192,6 +192,15 @@ TEST_F(ScaleOutRunTest, ASlurmRunWhoseStripFailsStillMergesNamingIt) {
     EXPECT_TRUE(found(dir_ / "runs", "", "frame.png").empty());
 }
 
+// What afterany is for: the same run with afterok would leave the merge pending, saying nothing.
+TEST_F(ScaleOutRunTest, WithAfterOkASlurmRunWhoseStripFailsWouldNeverMerge) {
+    ASSERT_EQ(shell("sed -i 's/afterany/afterok/' slurm-run.sh").exitCode, 0);
+    const RunResult run = runOnFakeCluster("slurm-run.sh", "5");
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_NE(run.err.find("pending for ever: DependencyNeverSatisfied"), std::string::npos) << run.err;
+    EXPECT_TRUE(found(dir_ / "runs", "", "merge.log").empty());
+}
+
 // One point a recipe must keep, taken out of the doc: the check names what is missing.
 struct RemovedPoint {
     const char* name;
