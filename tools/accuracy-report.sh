@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates docs/accuracy.md: every shipped scene (hard cases included) in every precision,
-# GPU against the CPU reference. Needs a build (bash ci/build.sh).
+# GPU against the CPU reference. Needs a build (bash ci/build.sh). The hand-written text above
+# the marker line in docs/accuracy.md is kept; everything below it is written afresh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+marker='<!-- Everything below is written by tools/accuracy-report.sh: edit the script, not the text. -->'
+grep -qxF "$marker" docs/accuracy.md || { echo "docs/accuracy.md has no marker line: $marker" >&2; exit 1; }
+handwritten=$(awk -v marker="$marker" '$0 == marker {exit} {print}' docs/accuracy.md)
 
 # Everything is read as data: compare's and render's --json documents, and the properties the
 # accuracy tests record (--gtest_output=json), turned into tables by tools/accuracy-tables.py.
@@ -32,8 +37,9 @@ for run in 1 2 3 4 5; do
   done
 done
 {
+  printf '%s\n\n%s\n\n' "$handwritten" "$marker"
   cat <<HEADER
-# Accuracy: GPU against the CPU reference, per scene and precision
+## Results: GPU against the CPU reference, per scene and precision
 
 Regenerate with \`bash tools/accuracy-report.sh\` (runs \`build/hexray compare --all scenes/ --json\` and the
 accuracy tests with \`--gtest_output=json\`, and reads their figures from the documents).
@@ -42,7 +48,8 @@ Device: ${device}. Generated $(date -u +%Y-%m-%d).
 Columns: **topology mismatches** = pixels whose visible node, checker cell or set of lit lights
 differs on the GPU in a decision the CPU reference did not find near-tied (must be 0 for f32
 and f64); **ambiguous** = share of pixels with some decision within its error bound of
-flipping, at the row's precision (the CPU reference's margins, see README); **excused** = share
+flipping, at the row's precision (the CPU reference's margins, see
+[compare.md](compare.md#how-the-gpu-and-cpu-renderers-are-compared)); **excused** = share
 of pixels left partly unchecked (a near-tied decision went the other way, or the colour was not
 comparable); **max abs** and **RMSE** = 8-bit colour error on the pixels whose colours are
 compared, in levels; **mean FLIP** = mean LDR-FLIP of the 8-bit outputs, every pixel, at 67
@@ -66,7 +73,7 @@ HEADER
 Before: one margin per pixel, the smallest of its decisions, against one bound of 128 float32
 units (2⁻¹⁷) at every precision; an ambiguous pixel was left out whole. After: a bound per
 decision (twice the camera direction's roundoff plus 16 units, at the compared precision: see
-README), a plane's checker cell measured per axis, the margin of a sphere holding the camera
+[compare.md](compare.md)), a plane's checker cell measured per axis, the margin of a sphere holding the camera
 against its own points, and a near-tie excusing only its own part of the pixel. Before, measured
 at main 2c1cb24 with \`hexray compare scenes/lecture-demo.json\` and \`hexray compare\` of
 \`makeRandomSpheresScene(3000, 1)\` written as a scene file (320 x 180; \`--spp 4\`):
@@ -103,7 +110,7 @@ HARD
 Each of 605 generated hard rays (\`tests/oracle/hard_rays.cpp\`) is a one-pixel scene, traced by the
 shader (f32, f64; **gpu auto** = the one \`auto\` picks for that ray's scene) and explained by the CPU
 reference, and judged against the exact oracle (MPFR, \`tests/oracle/\`) on the direction that
-renderer followed, at its own precision (README, "Exact oracle"). **decisions** = well-conditioned
+renderer followed, at its own precision ([Exact oracle](#exact-oracle)). **decisions** = well-conditioned
 decisions right / judged (which node, checker parity, each light's status; at least 64 units of
 roundoff from flipping); **distances** = distances judged (one unit of roundoff moves them by at
 most 2 ulps of the hit's scale S); **max ulps** = the largest distance error in ulps of S (the

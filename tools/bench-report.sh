@@ -6,6 +6,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# The hand-written text above the marker line in docs/performance.md is kept; the rest is written afresh.
+marker='<!-- Everything below is written by tools/bench-report.sh: edit the script, not the text. -->'
+grep -qxF "$marker" docs/performance.md || { echo "docs/performance.md has no marker line: $marker" >&2; exit 1; }
+handwritten=$(awk -v marker="$marker" '$0 == marker {exit} {print}' docs/performance.md)
+
 bash ci/build.sh --bench >/dev/null
 start_seconds=$(date +%s)
 
@@ -60,8 +65,9 @@ device=$($hexray devices | sed -n 's/^\* [0-9]*: //p')
 embree_line=$(printf '%s\n' "$bench_curve" | sed -n 's/^Embree: \(.*\)\.$/\1 (Debian libembree-dev)./p')
 [ -n "$embree_line" ] || embree_line="Embree: not built in, so no Embree rows."
 {
+  printf '%s\n\n%s\n\n' "$handwritten" "$marker"
   cat <<HEADER
-# Performance: speed against error
+## Results: speed against error
 
 Regenerate with \`bash tools/bench-report.sh\` (it installs and builds first). It runs
 \`hexray bench\` (five interleaved rounds of every configuration in one process) on the demo
@@ -76,7 +82,8 @@ Backends: **lavapipe** = the compute shader on Mesa's CPU Vulkan driver, as \`he
 runs it (the 8-bit image encoded on the device; the pixel classes for the topology column come
 from one untimed run that writes them), for each precision with **culling** off (the kernel
 generated for the whole scene) and on (a kernel per class of screen tiles, each with only the
-tests its rays can need; the same image, see the README); "(auto)" marks the precision \`auto\`
+tests its rays can need; the same image, see
+[culling](#what-makes-the-gpu-path-fast) above); "(auto)" marks the precision \`auto\`
 picks; **lavapipe hand-written** (demo scene only) = \`host/bench/lecture_demo_ceiling.comp\`, the
 demo scene as straight-line code with its values as literals and textbook float arithmetic, run
 through the renderer's public interface: the yardstick for what lavapipe can do for that scene;

@@ -35,7 +35,8 @@ public:
 
     // Removes the files in `directory` that `isOwned` accepts and `kept` does not name: an earlier
     // set's that this one did not replace. Symlinks are removed, never followed. Throws OutputError.
-    static void removeOthers(const std::filesystem::path& directory, const std::function<bool(const std::string&)>& isOwned,
+    static void removeOthers(const std::filesystem::path& directory,
+                             const std::function<bool(const std::string&)>& isOwned,
                              const std::vector<std::string>& kept);
 
     // Every file is in place: the target directory stays, the staging directory goes.

@@ -1,6 +1,6 @@
 // Memory bounded by the image's width, not its area, through the real executable under an
 // address-space limit (`ulimit -v`); and running out of memory is a message that says which
-// size to reduce. (The peak figures themselves are in the README; a test asserts limits only.)
+// size to reduce. (The peak figures themselves are in docs/memory.md; a test asserts limits only.)
 
 #include <cstdint>
 #include <fstream>

@@ -167,7 +167,7 @@ TEST_F(OutputCliTest, AReplacedFileKeepsItsPermissions) {
 }
 
 TEST_F(OutputCliTest, AHardLinkedFileIsReplacedUnderItsNameAndTheOtherNameKeepsTheOldContents) {
-    // The documented behaviour (README, "Where outputs go"): an atomic replace of the name given.
+    // The documented behaviour (docs/command-line.md, "Where outputs go"): an atomic replace of the name given.
     std::ofstream(dir_ / "a.png") << "old";
     fs::create_hard_link(dir_ / "a.png", dir_ / "b.png");
     ASSERT_EQ(renderTo("a.png").exitCode, 0);

@@ -1,6 +1,6 @@
-// The CPU reference across the whole range of lengths the scene loader accepts (README, "Supported
-// range"): never NaN, unit normals, hit points on the surface. Includes the two cases found by the
-// exact oracle (issue 12, findings 2 and 3).
+// The CPU reference across the whole range of lengths the scene loader accepts
+// (docs/scene-format.md, "Supported range"): never NaN, unit normals, hit points on the surface.
+// Includes the two cases found by the exact oracle (issue 12, findings 2 and 3).
 
 #include <cmath>
 #include <string>

@@ -1,5 +1,5 @@
 // No silent wrong image (issue 12, finding 4): scenes at the edges of the supported range
-// (README, "Supported range") render on the GPU as the CPU reference renders them, and an
+// (docs/scene-format.md, "Supported range") render on the GPU as the CPU reference renders them, and an
 // object far out of view changes no visible pixel.
 
 #include <algorithm>

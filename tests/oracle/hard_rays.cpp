@@ -33,7 +33,8 @@ Node planeNode(double height) {
     return Node{Plane{height}, kChecker};
 }
 
-// The lecture's demo scene (README), moved by `offset` and scaled by `scale` (intensity by its square).
+// The lecture's demo scene (scenes/lecture-demo.json), moved by `offset` and scaled by `scale`
+// (intensity by its square).
 Scene lectureScene(const glm::dvec3& offset, double scale) {
     Scene scene = baseScene(offset + scale * glm::dvec3(30, 100, -70), 1e4 * scale * scale, 20.0 * scale);
     scene.nodes = {planeNode(offset.y), sphereNode(offset + scale * glm::dvec3(-10, 60, 0), 10.0 * scale)};

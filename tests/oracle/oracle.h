@@ -1,5 +1,5 @@
 #pragma once
-// The accuracy oracle: what the scene model (README, "The model") says one ray sees, computed
+// The accuracy oracle: what the scene model (docs/scene-format.md, "The model") says one ray sees, computed
 // exactly (exact.h) from the ray's origin and direction taken as the exact binary numbers given,
 // with the conditioning of every answer. It shares no code with either renderer: it reads the
 // scene model and nothing else of hexray.
