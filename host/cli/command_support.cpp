@@ -12,6 +12,7 @@
 #include "io/output_error.h"
 #include "io/output_plan.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_settings.h"
 #include "strip/strip_stamp.h"
 #include "util/out_of_memory.h"
 #include "util/printable.h"
@@ -98,16 +99,20 @@ int guarded(const std::function<int()>& command) {
 namespace {
 
 Scene readAndParse(const std::string& path, const ImageOverride& image, std::string* identity) {
-    const std::string text = readSceneFile(path);
+    const std::string source = sceneSourceName(path);
+    std::string text = readSceneFile(path);
+    if (!image.settings.empty()) {
+        text = withSettings(text, source, image.settings);  // the scene rendered, for its identity too
+    }
     if (identity) {
         *identity = sceneTextIdentity(text);
     }
-    Progress progress("loading " + path, text.size(), Progress::Unit::Bytes);
+    Progress progress("loading " + source, text.size(), Progress::Unit::Bytes);
     ParseProgress parseProgress;  // none unless shown: the parser's fastest path
     if (Progress::shown()) {
         parseProgress = [&](std::size_t parsed, std::size_t) { progress.update(parsed); };
     }
-    Scene scene = parseScene(text, path, parseProgress);
+    Scene scene = parseScene(text, source, parseProgress);
     applyImageOverride(scene, image);
     return scene;
 }

@@ -30,11 +30,12 @@ enum ExitCode : int {
 // Auto: the GPU, or the CPU reference (with a note) when the GPU path cannot render.
 enum class Backend { Auto, Gpu, Cpu };
 
-// Command-line replacements for the scene file's image settings.
+// Command-line replacements for the scene file's image settings, and changes to any of its values.
 struct ImageOverride {
     std::optional<std::int64_t> width;
     std::optional<std::int64_t> height;
     std::optional<std::int64_t> samplesPerPixel;
+    std::vector<std::string> settings;  // --set PATH=VALUE, applied in order (scene/scene_settings.h)
 };
 
 struct VulkanOptions {

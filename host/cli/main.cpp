@@ -67,6 +67,17 @@ void addImageOptions(CLI::App& command, ImageOverride& image) {
         ->check(IntegerBetween<std::int64_t>(1, kMaxSamplesPerPixel));
 }
 
+// render, compare and pixel: changes to the scene's JSON before it is read (scene/scene_settings.h).
+void addSceneSettingOption(CLI::App& command, ImageOverride& image) {
+    command
+        .add_option("--set", image.settings,
+                    "Change the scene before reading it, e.g. --set camera.fov=60 or --set "
+                    "nodes[1].geometry.radius=1.5 (PATH as messages name places; VALUE JSON, else a string); "
+                    "repeatable")
+        ->type_name("PATH=VALUE")
+        ->allow_extra_args(false);  // one setting per --set, so scene files may follow it
+}
+
 CLI::Option* addThreadsOption(CLI::App& command, unsigned& threads, const char* what) {
     return command
         .add_option("--threads", threads,
@@ -112,6 +123,7 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                    "same image): on, off, or auto (for renders of at least 32 million samples, where it repays "
                    "compiling the extra kernels)");
     addImageOptions(*command, render.image);
+    addSceneSettingOption(*command, render.image);
     addDeviceOption(*command, render.vulkan);
     addThreadsOption(*command, render.threads, "CPU backend");
     command
@@ -186,6 +198,7 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
                    "shown but not judged")
         ->excludes(precisionOption);
     addImageOptions(*command, compare.image);
+    addSceneSettingOption(*command, compare.image);
     addDeviceOption(*command, compare.vulkan);
     command->add_option("--diff", compare.diffPath, "Write a heat map of the 8-bit differences (PNG)")
         ->check(NotEmpty());
@@ -346,6 +359,7 @@ void addPixelCommand(CLI::App& app, CommandLine& line) {
         ->check(IntegerBetween<std::int64_t>(0, kMaxSamplesPerPixel - 1))
         ->capture_default_str();
     addImageOptions(*command, pixel.image);
+    addSceneSettingOption(*command, pixel.image);
     addDeviceOption(*command, pixel.vulkan);
     command
         ->add_option("--json", pixel.jsonPath,

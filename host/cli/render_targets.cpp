@@ -59,6 +59,11 @@ std::vector<RenderTarget> renderTargets(const RenderOptions& options) {
             targets.push_back({scene.path, "", std::nullopt, scene.problem});
             continue;
         }
+        if (scene.path == kStandardInputPath) {
+            throw SceneError(
+                "the scene comes from standard input (-), so there is no file name to name its image after: "
+                "give -o (e.g. -o image.png, or -o - for PNG on standard output)");
+        }
         const std::string output = (directory / defaultName(scene.path, options.strip)).string();
         const auto [earlier, added] = sceneByOutput.emplace(fs::path(output).lexically_normal().string(), scene.path);
         if (!added) {

@@ -51,6 +51,9 @@ void collect(const fs::path& directory, const fs::path& root, std::vector<SceneF
 }  // namespace
 
 std::vector<SceneFile> sceneFiles(const std::vector<std::string>& paths) {
+    if (std::count(paths.begin(), paths.end(), kStandardInputPath) > 1) {
+        throw SceneError("standard input (-) is named more than once: it holds one scene");
+    }
     std::vector<SceneFile> files;
     for (const std::string& path : paths) {
         std::error_code error;

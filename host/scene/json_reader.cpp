@@ -1,6 +1,9 @@
 #include "scene/json_reader.h"
 
 #include <algorithm>
+#include <charconv>
+
+#include "util/closest_name.h"
 
 namespace hexray::inline scene {
 
@@ -54,6 +57,13 @@ std::string describe(const Json& value) {
 
 std::string rangeProblem(std::int64_t min, std::int64_t max, const std::string& got) {
     return "must be between " + std::to_string(min) + " and " + std::to_string(max) + " (got " + got + ")";
+}
+
+std::string suggestion(const std::string& typed, const std::vector<std::string>& known) {
+    std::vector<std::string> sorted = known;  // ties go to the first in the order messages list them
+    std::sort(sorted.begin(), sorted.end());
+    const std::optional<std::string> closest = closestName(typed, sorted);
+    return closest ? "; did you mean " + quotedForMessage(*closest) + "?" : "";
 }
 
 }  // namespace hexray::scene

@@ -2,7 +2,6 @@
 // Reading a scene file's JSON document: values checked as the format requires, each rejection a
 // SceneError that names the source and the value's path.
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
@@ -14,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/hex_colour.h"
 #include "scene/json_path.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -32,6 +32,9 @@ std::string joined(std::vector<std::string> items, bool sorted = true);
 std::string describe(const Json& value);
 
 std::string rangeProblem(std::int64_t min, std::int64_t max, const std::string& got);
+
+// "; did you mean \"color\"?" when one of `known` is close to `typed` (util/closest_name.h), else "".
+std::string suggestion(const std::string& typed, const std::vector<std::string>& known);
 
 // Bounds a number must respect; the message spells out the ones given.
 struct Bounds {
@@ -76,7 +79,8 @@ public:
         expectObject();
         for (const auto& [key, value] : value_.items()) {
             if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-                child(key, value).fail("unknown key (allowed: " + joined({allowed.begin(), allowed.end()}) + ")");
+                const std::vector<std::string> known(allowed.begin(), allowed.end());
+                child(key, value).fail("unknown key (allowed: " + joined(known) + ")" + suggestion(key, known));
             }
         }
     }
@@ -184,7 +188,7 @@ public:
         std::vector<std::string> names;
         for (const auto& [optionName, option] : options)
             names.emplace_back(optionName);
-        fail("unknown value " + quotedForMessage(name) + " (allowed: " + joined(names) + ")");
+        fail("unknown value " + quotedForMessage(name) + " (allowed: " + joined(names) + ")" + suggestion(name, names));
     }
 
     glm::dvec3 vec3() const {
@@ -217,7 +221,7 @@ public:
         return {xyz[0].length(), xyz[1].length(), xyz[2].length()};
     }
 
-    // [r, g, b] (linear, may exceed 1 for HDR) or web hex "#rrggbb" (byte / 255, no gamma).
+    // [r, g, b] (linear, may exceed 1 for HDR) or "#rrggbb" (sRGB as in CSS, linearised: scene/hex_colour.h).
     Color colour() const {
         static const std::string kForms = "[r, g, b] with finite components >= 0, or \"#rrggbb\"";
         if (value_.is_string()) {
@@ -287,21 +291,6 @@ private:
         if (value < min || value > max)
             fail(rangeProblem(min, max, std::to_string(value)));
         return value;
-    }
-
-    static std::optional<Color> parseHexColour(const std::string& text) {
-        if (text.size() != 7 || text[0] != '#')
-            return std::nullopt;
-        Color result;
-        for (int channel = 0; channel < 3; ++channel) {
-            unsigned byte = 0;
-            const char* first = text.data() + 1 + 2 * channel;
-            const auto parsed = std::from_chars(first, first + 2, byte, 16);  // accepts either case
-            if (parsed.ec != std::errc() || parsed.ptr != first + 2)
-                return std::nullopt;
-            result[channel] = double(byte) / 255.0;
-        }
-        return result;
     }
 
     const Json& value_;

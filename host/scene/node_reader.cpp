@@ -54,9 +54,10 @@ std::vector<Node> NodeReader::resolve(const std::vector<std::string>& shaderName
         nodes[i].shaderIndex = shaderIndices[nameIndex];
         if (nodes[i].shaderIndex == shaderNames.size()) {
             const JsonReader reference(Json(), source_, childPath(elementPath("nodes", i), "shader"));
-            reference.fail(
-                "unknown shader " + quotedForMessage(names_[nameIndex]) +
-                (shaderNames.empty() ? " (no shaders are defined)" : " (defined: " + joined(shaderNames) + ")"));
+            reference.fail("unknown shader " + quotedForMessage(names_[nameIndex]) +
+                           (shaderNames.empty() ? " (no shaders are defined)"
+                                                : " (defined: " + joined(shaderNames) + ")" +
+                                                      suggestion(names_[nameIndex], shaderNames)));
         }
     }
     if (firstProblem_)

@@ -148,7 +148,9 @@ Shader readShader(const JsonReader& shader) {
 }
 
 Scene readScene(const JsonReader& root, NodeReader&& nodes, LightReader&& lights) {
-    root.rejectUnknownKeys({"image", "camera", "background", "ambient", "lights", "shaders", "nodes"});
+    root.rejectUnknownKeys({"$schema", "image", "camera", "background", "ambient", "lights", "shaders", "nodes"});
+    if (const auto schema = root.find("$schema"))
+        schema->text();  // for editors (docs/schemas/hexray-scene.schema.json); hexray ignores it
     Scene scene;
     scene.image = readImage(root.at("image"));
     scene.camera = readCamera(root.at("camera"));
@@ -178,6 +180,19 @@ Scene readScene(const JsonReader& root, NodeReader&& nodes, LightReader&& lights
                      std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
 }
 
+// The rest of `file`, after `text` (which may have room reserved), refused beyond the cap.
+std::string readSceneText(std::FILE* file, const std::filesystem::path& path, std::string text = {}) {
+    char buffer[1 << 16];
+    while (const std::size_t count = std::fread(buffer, 1, sizeof buffer, file)) {
+        text.append(buffer, count);
+        if (text.size() > kMaxSceneFileBytes)
+            failTooLarge(path);
+    }
+    if (std::ferror(file))
+        failToRead(path, errno);
+    return text;
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& sourceName, const ParseProgress& progress) {
@@ -203,11 +218,17 @@ Scene parseScene(const std::string& text, const std::string& sourceName, const P
     return readScene(JsonReader(document, source, ""), std::move(nodes), std::move(lights));
 }
 
+std::string sceneSourceName(const std::string& path) {
+    return path == kStandardInputPath ? "<stdin>" : path;
+}
+
 Scene loadSceneFile(const std::filesystem::path& path) {
-    return parseScene(readSceneFile(path), path.string());
+    return parseScene(readSceneFile(path), sceneSourceName(path.string()));
 }
 
 std::string readSceneFile(const std::filesystem::path& path) {
+    if (path == kStandardInputPath)
+        return readSceneText(stdin, sceneSourceName(path));
     std::error_code ignored;
     if (std::filesystem::is_directory(path, ignored))
         failToRead(path, EISDIR);  // fopen would accept it
@@ -223,15 +244,7 @@ std::string readSceneFile(const std::filesystem::path& path) {
             failTooLarge(path);
         text.reserve(size);
     }
-    char buffer[1 << 16];
-    while (const std::size_t count = std::fread(buffer, 1, sizeof buffer, file.get())) {
-        text.append(buffer, count);
-        if (text.size() > kMaxSceneFileBytes)
-            failTooLarge(path);
-    }
-    if (std::ferror(file.get()))
-        failToRead(path, errno);
-    return text;
+    return readSceneText(file.get(), path, std::move(text));
 }
 
 void overrideImageSize(Scene& scene, std::int64_t width, std::int64_t height, const std::string& source) {

@@ -23,8 +23,13 @@ public:
 // Told, about every MiB of a large file, how many bytes the parser has read of how many.
 using ParseProgress = std::function<void(std::size_t parsedBytes, std::size_t totalBytes)>;
 
+// A scene path of "-" is standard input, which messages call <stdin>.
+inline constexpr const char* kStandardInputPath = "-";
+std::string sceneSourceName(const std::string& path);
+
 Scene loadSceneFile(const std::filesystem::path& path);
 // loadSceneFile in two steps, for a caller that wants the text too or the parse's progress.
+// Reads standard input for "-".
 std::string readSceneFile(const std::filesystem::path& path);
 Scene parseScene(const std::string& text, const std::string& sourceName, const ParseProgress& progress = {});
 

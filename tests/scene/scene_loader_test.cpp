@@ -1,6 +1,7 @@
 // The scene loader: what a valid file becomes, and the one message each kind of bad input gets.
 // Messages are compared whole where the format promises their shape, since the CLI shows them as is.
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +83,12 @@ std::string errorForChange(const std::string& from, const std::string& to) {
     return errorFor(validSceneWith(from, to));
 }
 
+// A "#rrggbb" component as the loader reads it: sRGB, as in CSS, made linear.
+double srgbByte(unsigned byte) {
+    const double encoded = byte / 255.0;
+    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
 void expectVec(const glm::dvec3& actual, const glm::dvec3& expected) {
     EXPECT_EQ(actual.x, expected.x);
     EXPECT_EQ(actual.y, expected.y);
@@ -149,10 +156,10 @@ TEST(SceneLoader, ParsesTheExampleScene) {
     expectVec(ball->color, {0.8, 0, 0});
     const auto* debug = std::get_if<ConstantShader>(&scene.shaders[1]);
     ASSERT_NE(debug, nullptr);
-    expectVec(debug->color, {0xe6 / 255.0, 0x99 / 255.0, 0xe6 / 255.0});
+    expectVec(debug->color, {srgbByte(0xe6), srgbByte(0x99), srgbByte(0xe6)});
     const auto* floor = std::get_if<CheckerShader>(&scene.shaders[2]);
     ASSERT_NE(floor, nullptr);
-    expectVec(floor->color1, {0, 0, 0xcc / 255.0});
+    expectVec(floor->color1, {0, 0, srgbByte(0xcc)});
     expectVec(floor->color2, {0.2, 0.3, 0.6});
     EXPECT_EQ(floor->size, 20.0);
 
@@ -227,8 +234,33 @@ TEST(SceneLoader, HexColoursAreCaseInsensitiveAndHdrComponentsAreKept) {
     const Scene scene = parseScene(
         validSceneWith(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": "#FfA00b", "background": [2.5, 0, 1e3])"),
         "colours.json");
-    expectVec(scene.ambient, {1.0, 0xa0 / 255.0, 0x0b / 255.0});
+    expectVec(scene.ambient, {1.0, srgbByte(0xa0), srgbByte(0x0b)});
     expectVec(scene.background, {2.5, 0, 1000});
+}
+
+// "#1a2433" is CSS's colour: sRGB, linearised on load (the sRGB-encoded PNG then shows those bytes
+// again); [r, g, b] stays linear as written.
+TEST(SceneLoader, HexColoursAreSrgbLikeCss) {
+    const Scene scene =
+        parseScene(validSceneWith(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": "#808080", "background": "#0a00ff")"),
+                   "colours.json");
+    EXPECT_NEAR(scene.ambient.r, 0.2158605, 1e-7);        // mid-grey is a fifth of the light, not half
+    EXPECT_EQ(scene.background.r, 10.0 / 255.0 / 12.92);  // the linear toe below 0.04045
+    EXPECT_EQ(scene.background.g, 0.0);
+    EXPECT_EQ(scene.background.b, 1.0);
+    const Scene linear =
+        parseScene(validSceneWith(R"("ambient": [0.1, 0.1, 0.1])", R"("ambient": [0.5, 0.5, 0.5])"), "linear.json");
+    EXPECT_EQ(linear.ambient.r, 0.5);
+}
+
+// The schema's commented example (tests/scene/schema/commented.json) is a scene: "$schema", a
+// string for editors, is accepted and ignored.
+TEST(SceneLoader, AcceptsTheSchemaKeyForEditors) {
+    const Scene scene = loadSceneFile(sourceDir() / "tests/scene/schema/commented.json");
+    EXPECT_EQ(scene.image.width, 320u);
+    EXPECT_EQ(scene.background.r, srgbByte(0x1a));
+    EXPECT_EQ(errorForChange(R"("ambient")", R"("$schema": 3, "ambient")"),
+              "test.json: [\"$schema\"]: expected a string (got number 3)");
 }
 
 TEST(SceneLoader, AnIntegralFloatIsAnInteger) {
@@ -397,6 +429,19 @@ TEST(SceneLoader, LineAndBlockCommentsAreIgnored) {
     EXPECT_EQ(errorFor("{\n  /* never closed"),
               "test.json:2:18: JSON syntax error: syntax error while parsing object key - invalid comment; missing "
               "closing '*/'; last read: '{<U+000A>  /* never closed'; expected string literal");
+}
+
+// A comment is read as whitespace, so the place of an error after it counts the comment's own
+// lines and characters (é is one column, not two bytes).
+TEST(SceneLoader, ErrorsAfterCommentsNameTheirLineAndColumn) {
+    EXPECT_EQ(errorFor("// café scene\n/* two\n   lines */ {\"image\": {\"width\": 8,, }}"),
+              "test.json:3:35: JSON syntax error: syntax error while parsing object key - unexpected ','; "
+              "expected string literal");
+    EXPECT_EQ(errorFor("{ /* é */ \"image\": 8 // é\n ]"),
+              "test.json:2:2: JSON syntax error: syntax error while parsing object - unexpected ']'; expected '}'");
+    // Errors found after parsing name the value's path, whatever the comments around it.
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": /* oops */ -1 /* negative */)"),
+              "test.json: nodes[0].geometry.radius: must be > 0 (got -1)");
 }
 
 // ---------------------------------------------------------------- structure and types
@@ -580,22 +625,45 @@ TEST(SceneLoaderRejects, BadColourArrays) {
 
 TEST(SceneLoaderRejects, UnknownShaderName) {
     EXPECT_EQ(errorForChange(R"("shader": "red")", R"("shader": "rde")"),
-              "test.json: nodes[0].shader: unknown shader \"rde\" (defined: red)");
-    EXPECT_EQ(errorFor(kExampleScene.substr(0, kExampleScene.find(R"("shader": "ball")")) + R"("shader": "flor"}]})"),
-              "test.json: nodes[1].shader: unknown shader \"flor\" (defined: ball, debug, floor)");
+              "test.json: nodes[0].shader: unknown shader \"rde\" (defined: red); did you mean \"red\"?");
+    EXPECT_EQ(
+        errorFor(kExampleScene.substr(0, kExampleScene.find(R"("shader": "ball")")) + R"("shader": "flor"}]})"),
+        "test.json: nodes[1].shader: unknown shader \"flor\" (defined: ball, debug, floor); did you mean \"floor\"?");
     EXPECT_EQ(errorForChange(R"("shaders": {"red": {"type": "lambert", "color": [1, 0, 0]}},)", ""),
               "test.json: nodes[0].shader: unknown shader \"red\" (no shaders are defined)");
 }
 
+// A near miss of a known key, value or shader name is named (util/closest_name.h); a far one is not.
+TEST(SceneLoaderRejects, SuggestsTheNameMeant) {
+    EXPECT_EQ(
+        errorForChange(R"("intensity": 100)", R"("intensity": 100, "colour": [1, 1, 1])"),
+        "test.json: lights[0].colour: unknown key (allowed: color, intensity, position); did you mean \"color\"?");
+    EXPECT_EQ(errorForChange(R"("radius": 1)", R"("raduis": 1)"),
+              "test.json: nodes[0].geometry.raduis: unknown key (allowed: center, radius, type); did you mean "
+              "\"radius\"?");
+    EXPECT_EQ(errorForChange(R"("type": "lambert")", R"("type": "lamber")"),
+              "test.json: shaders.red.type: unknown value \"lamber\" (allowed: checker, constant, lambert); did you "
+              "mean \"lambert\"?");
+    EXPECT_EQ(errorForChange(R"("shader": "red")", R"("shader": "Red")"),
+              "test.json: nodes[0].shader: unknown shader \"Red\" (defined: red); did you mean \"red\"?");
+    EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 8, "depth": 3)"),
+              "test.json: image.depth: unknown key (allowed: encoding, height, sampling, spp, width)");
+    EXPECT_EQ(errorForChange(R"("shader": "red")", R"("shader": "blue")"),
+              "test.json: nodes[0].shader: unknown shader \"blue\" (defined: red)");
+}
+
 TEST(SceneLoaderRejects, UnknownKeysAtEveryDepth) {
     EXPECT_EQ(errorForChange(R"("lights":)", R"("lihgts":)"),
-              "test.json: lihgts: unknown key (allowed: ambient, background, camera, image, lights, nodes, shaders)");
+              "test.json: lihgts: unknown key (allowed: $schema, ambient, background, camera, image, lights, nodes, "
+              "shaders); did you mean \"lights\"?");
     EXPECT_EQ(errorForChange(R"("width": 8)", R"("width": 8, "depth": 3)"),
               "test.json: image.depth: unknown key (allowed: encoding, height, sampling, spp, width)");
     EXPECT_EQ(errorForChange(R"("position": [0, 1, -5])", R"("position": [0, 1, -5], "fvo": 60)"),
-              "test.json: camera.fvo: unknown key (allowed: aspect, fov, lookAt, pitch, position, roll, up, yaw)");
-    EXPECT_EQ(errorForChange(R"("intensity": 100)", R"("intensity": 100, "colour": [1, 1, 1])"),
-              "test.json: lights[0].colour: unknown key (allowed: color, intensity, position)");
+              "test.json: camera.fvo: unknown key (allowed: aspect, fov, lookAt, pitch, position, roll, up, yaw); did "
+              "you mean \"fov\"?");
+    EXPECT_EQ(
+        errorForChange(R"("intensity": 100)", R"("intensity": 100, "colour": [1, 1, 1])"),
+        "test.json: lights[0].colour: unknown key (allowed: color, intensity, position); did you mean \"color\"?");
     EXPECT_EQ(errorForChange(R"("color": [1, 0, 0])", R"("color": [1, 0, 0], "size": 2)"),
               "test.json: shaders.red.size: unknown key (allowed: color, type)");
     EXPECT_EQ(errorForChange(R"("radius": 1)", R"("radius": 1, "y": 0)"),
@@ -611,8 +679,9 @@ TEST(SceneLoaderRejects, KeysThatAreNotIdentifiersAreQuotedInPaths) {
 }
 
 TEST(SceneLoaderRejects, BadEnumStrings) {
-    EXPECT_EQ(errorForChange(R"("height": 6)", R"("height": 6, "sampling": "centre")"),
-              "test.json: image.sampling: unknown value \"centre\" (allowed: center, corner)");
+    EXPECT_EQ(
+        errorForChange(R"("height": 6)", R"("height": 6, "sampling": "centre")"),
+        "test.json: image.sampling: unknown value \"centre\" (allowed: center, corner); did you mean \"center\"?");
     EXPECT_EQ(errorForChange(R"("height": 6)", R"("height": 6, "encoding": "gamma")"),
               "test.json: image.encoding: unknown value \"gamma\" (allowed: linear, srgb)");
     EXPECT_EQ(errorForChange(R"("type": "sphere")", R"("type": "cube")"),
@@ -715,7 +784,7 @@ TEST(SceneLoaderNodes, EachBadNodeIsNamedWithItsFirstProblem) {
         {R"({"geometry": {"center": [0, 0, 0], "radius": 1}, "shader": "red"})",
          "nodes[0].geometry.type: missing required field"},
         {R"({"geometry": {"type": "Sphere", "center": [0, 0, 0], "radius": 1}, "shader": "red"})",
-         "nodes[0].geometry.type: unknown value \"Sphere\" (allowed: plane, sphere)"},
+         "nodes[0].geometry.type: unknown value \"Sphere\" (allowed: plane, sphere); did you mean \"sphere\"?"},
         {R"({"geometry": {"type": "sphere", "center": [0, 0], "radius": 1}, "shader": "red"})",
          "nodes[0].geometry.center: expected an array of 3 numbers [x, y, z] (got an array of 2 elements)"},
         {R"({"geometry": {"type": "sphere", "center": [0, 0, 0, 0], "radius": 1}, "shader": "red"})",
