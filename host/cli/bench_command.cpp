@@ -15,6 +15,7 @@
 #include "cli/command_support.h"
 #include "cli/json_document.h"
 #include "cli/progress.h"
+#include "cli/quiet.h"
 #include "cpu/cpu_renderer.h"
 #include "demo_scene.h"
 #include "io/output_file.h"
@@ -215,7 +216,7 @@ std::vector<BenchMeasurement> runRounds(const BenchOptions& options, BenchBacken
                       Progress::Unit::Measurements);
     std::uint64_t done = 0;
     for (unsigned round = 0; round < options.rounds; ++round) {
-        if (!Progress::shown()) {  // a log gets one line a round
+        if (!Progress::shown() && !quiet()) {  // a log gets one line a round
             std::fprintf(stderr, "bench: round %u of %u\n", round + 1, options.rounds);
         }
         for (std::size_t i = 0; i < bench.configurations.size(); ++i) {

@@ -27,6 +27,9 @@ enum ExitCode : int {
     kSizeMismatch = 9,       // diff: the two images differ in size
 };
 
+// The subcommands, as messages list them.
+inline constexpr const char* kCommandNames = "render, merge, compare, diff, bench, pixel, devices, cache";
+
 // Auto: the GPU, or the CPU reference (with a note) when the GPU path cannot render.
 enum class Backend { Auto, Gpu, Cpu };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -14,6 +15,7 @@
 #include "cli/comparison_record.h"
 #include "cli/json_document.h"
 #include "cli/progress.h"
+#include "cli/quiet.h"
 #include "cli/report_directory.h"
 #include "cli/report_page.h"
 #include "cli/scene_files.h"
@@ -187,6 +189,13 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
                                 unsigned threads, BandOutputs* outputs) {
     const bool aov = outputs && outputs->withAovs();
     Progress progress("comparing " + path, scene.image.height);
+    // The CPU reference's rows as they finish, so that the line moves within a band too.
+    const auto referenceRowsDone = [&](std::uint32_t firstRow) -> std::function<void(std::uint32_t)> {
+        if (!Progress::shown()) {
+            return {};
+        }
+        return [&progress, firstRow](std::uint32_t rows) { progress.update(firstRow + rows); };
+    };
     const RenderPlan plan = renderer.plan(scene, {requested});
     // The reference's margins are read against the arithmetic of the render it is compared with.
     const CpuBandRenderer reference(scene, threads, Acceleration::Auto, aov, decisionRoundoff(plan.precision));
@@ -199,7 +208,7 @@ BandedComparison compareInBands(GpuRenderer& renderer, const std::string& path, 
         scene, plan, aov ? GpuOutput::LinearClassesAndAov : GpuOutput::LinearAndClasses,
         [&](std::uint32_t firstRow, const GpuRenderResult& band) {
             const auto start = std::chrono::steady_clock::now();
-            reference.render(firstRow, band.image.height, cpu);
+            reference.render(firstRow, band.image.height, cpu, referenceRowsDone(firstRow));
             cpuMilliseconds += millisecondsSince(start);
             const Rgb8Image reference8 = encodeImage(cpu.image, encoding);
             const Rgb8Image gpu8 = encodeImage(band.image, encoding);
@@ -257,7 +266,7 @@ std::optional<Scene> loadForComparison(const SceneFile& file, const ImageOverrid
         return loadScene(file.path, image, &identity);
     } catch (const SceneError& error) {
         printError(error.what());
-        if (table) {
+        if (table && !quiet()) {
             printFailedRow(file.name);
         }
         ComparisonRecord failed;
@@ -415,9 +424,9 @@ void compareScene(const CompareSession& session, const SceneFile& file, const Sc
                                                          session.options.threads, outputs ? &*outputs : nullptr);
         session.records.push_back(
             recordFor(file, scene, requested, compared, automatic, session.options, session.expectations));
-        if (session.table) {
+        if (session.table && !quiet()) {
             printTableRow(session.records.back());
-        } else {
+        } else if (!quiet()) {
             printComparison(session.records.back(), compared, session.context);
         }
         if (outputs) {
@@ -457,7 +466,10 @@ int writeReportIfAsked(const CompareOptions& options, ReportDirectory* report,
             }
         }
         report->commit(reportPage(records, document), document, stems);
-        std::printf("wrote report %s\n", printable((fs::path(options.reportDirectory) / kReportPage).string()).c_str());
+        if (!quiet()) {
+            std::printf("wrote report %s\n",
+                        printable((fs::path(options.reportDirectory) / kReportPage).string()).c_str());
+        }
         return int(kSuccess);
     });
     return written == kSuccess ? code : written;
@@ -495,7 +507,7 @@ int runCompare(const CompareOptions& options) {
         document["timings_ms"]["startup"] = millisecondsSince(startup);
         document["device"] = jsonDevice(context.selected());
         GpuRenderer renderer(context, comparisonBandBytes());
-        if (table) {
+        if (table && !quiet()) {
             printTableHeader();
         }
         const CompareSession session{
@@ -510,7 +522,9 @@ int runCompare(const CompareOptions& options) {
             }
         }
         const OutcomeCounts counts = countOutcomes(records);
-        printCountLine(counts);
+        if (!quiet()) {
+            printCountLine(counts);
+        }
         return !allLoaded ? int(kBadInput) : counts.gatePassed() ? int(kSuccess) : int(kToleranceExceeded);
     });
     const int verdict = withValidationVerdict(code, log);

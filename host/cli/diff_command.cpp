@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/command_support.h"
+#include "cli/quiet.h"
 #include "cli/commands.h"
 #include "cli/json_document.h"
 #include "compare/flip.h"
@@ -263,8 +264,10 @@ int diffCommand(const DiffOptions& options, nlohmann::json& document) {
         writePng(options.heatmapPath, flipHeatMap(result.flip));
         document["heatmap"] = options.heatmapPath;
     }
-    printReport(result, *test, options);
-    printRecordsIfTheyDiffer(options, testRecord, referenceRecord);
+    if (!quiet()) {
+        printReport(result, *test, options);
+        printRecordsIfTheyDiffer(options, testRecord, referenceRecord);
+    }
     return result.failed ? kToleranceExceeded : kSuccess;
 }
 

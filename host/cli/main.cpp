@@ -6,16 +6,22 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
+#include "cli/help_formatter.h"
 #include "cli/named_values.h"
 #include "cli/option_checks.h"
+#include "cli/quiet.h"
+#include "cli/terminal_output.h"
+#include "cli/usage_errors.h"
 #include "cpu/cpu_renderer.h"
 #include "kernels/kernel_cache.h"
 #include "io/output_plan.h"
@@ -29,22 +35,32 @@ using namespace hexray;
 using namespace hexray::cli;
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 success; 1 compare tolerance exceeded; 2 bad input (scene file or command line, a piece that\n"
-    "does not fit a merge, or an output that is an input or another output); 3 Vulkan unavailable or failed (no\n"
-    "driver or device, no compute queue, no float64 for --precision f64); 4 --validate and the validation layer\n"
-    "reported messages; 5 an output cannot be written (its directory is checked before any work); 6 any other\n"
-    "failure (out of memory: the message names what is too big, the scene or the image); 7 the Vulkan device\n"
-    "was lost or hung during the render; 8 the Vulkan driver ran out of device (or host) memory; 9 diff: the two\n"
-    "images differ in size.\n"
-    "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except an\n"
-    "unknown --device or a missing validation layer), 7 or 8. render of several scenes renders every one it can\n"
-    "and exits with the first failed scene's code.";
+    "Exit codes:\n"
+    "  0  success\n"
+    "  1  compare: the tolerance was exceeded; diff: more pixels differ than allowed\n"
+    "  2  bad input: a scene file or the command line, a piece that does not fit a merge, an output that "
+    "is an input or another output, or an image to a terminal\n"
+    "  3  Vulkan unavailable or failed: no driver or device, no compute queue, no float64 for --precision f64\n"
+    "  4  --validate, and the validation layer reported messages\n"
+    "  5  an output cannot be written (its directory is checked before any work)\n"
+    "  6  any other failure (out of memory: the message names what is too big, the scene or the image)\n"
+    "  7  the Vulkan device was lost or hung during the render\n"
+    "  8  the Vulkan driver ran out of device (or host) memory\n"
+    "  9  diff: the two images differ in size\n"
+    "render --backend auto (the default) renders on the CPU reference instead, with a note, after 3 (except "
+    "an unknown --device or a missing validation layer), 7 or 8. render of several scenes renders every one it "
+    "can and exits with the first failed scene's code.";
 
-constexpr const char* kCommands = "render, merge, compare, diff, bench, pixel, devices, cache";
+// A subcommand's help ends with an example and a pointer to the exit codes (printed once, by
+// hexray --help).
+void setExample(CLI::App& command, const std::string& example) {
+    command.footer("Example:\n  " + example + "\n\nExit codes: hexray --help lists them.");
+}
 
 // Every subcommand's options, as parsing fills them in.
 struct CommandLine {
     bool validate = false;
+    bool quiet = false;
     RenderOptions render;
     std::string renderStrip;
     MergeOptions merge;
@@ -143,6 +159,7 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "Also write the results as JSON (- for standard output; the report then goes to standard "
                      "error): per scene its size, backend, precision, kernel, timings and exit (docs/json-output.md)")
         ->check(NotEmpty());
+    setExample(*command, "hexray render scenes/lecture-demo.json -o demo.png --width 1920 --height 1080");
 }
 
 void addMergeCommand(CLI::App& app, CommandLine& line) {
@@ -154,6 +171,7 @@ void addMergeCommand(CLI::App& app, CommandLine& line) {
         ->required()
         ->check(NotEmpty());
     command->add_option("pieces", line.merge.piecePaths, "Every piece, in any order")->required();
+    setExample(*command, "hexray merge demo.png lecture-demo.strip-*-of-4.png");
 }
 
 // compare's results for CI: the expectations file and the machine-readable outputs.
@@ -238,6 +256,7 @@ void addCompareCommand(CLI::App& app, CommandLine& line) {
         ->check(NotEmpty())
         ->check(AovDirectoryName());
     addCompareGateOptions(*command, compare);
+    setExample(*command, "hexray compare scenes/ --json results.json --junit results.xml");
 }
 
 // The tolerance options given on compare's command line, which win over an expectations file's.
@@ -300,6 +319,7 @@ void addDiffCommand(CLI::App& app, CommandLine& line) {
     command
         ->add_option("--json", diff.jsonPath, "Write the results as JSON (docs/json-output.md; - for standard output)")
         ->check(NotEmpty());
+    setExample(*command, "hexray diff new.png reference.png --fail 0.01 --failpercent 0.5 --heatmap flip.png");
 }
 
 void addBenchCommand(CLI::App& app, CommandLine& line) {
@@ -342,6 +362,7 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
         ->add_option("--json", bench.jsonPath,
                      "Also write every figure as JSON (- for standard output; docs/json-output.md)")
         ->check(NotEmpty());
+    setExample(*command, "hexray bench scenes/lecture-demo.json --rounds 3 --csv bench.csv");
 }
 
 void addPixelCommand(CLI::App& app, CommandLine& line) {
@@ -366,11 +387,13 @@ void addPixelCommand(CLI::App& app, CommandLine& line) {
                      "Also write the explanation as JSON (- for standard output; the table then goes to standard "
                      "error): each backend's ray, candidates, hit, lights and colour (docs/json-output.md)")
         ->check(NotEmpty());
+    setExample(*command, "hexray pixel scenes/lecture-demo.json 400 300 --backend both");
 }
 
 void addDevicesCommand(CLI::App& app, CommandLine& line) {
     CLI::App* command = app.add_subcommand("devices", "List the Vulkan devices and the one hexray would use");
     addDeviceOption(*command, line.devices);
+    setExample(*command, "hexray devices --device llvmpipe");
 }
 
 void addCacheCommand(CLI::App& app, CommandLine& line) {
@@ -379,18 +402,20 @@ void addCacheCommand(CLI::App& app, CommandLine& line) {
         "Show where the kernel cache is (compiled kernels, $XDG_CACHE_HOME/hexray), its entries, size and "
         "bound (HEXRAY_KERNEL_CACHE_MAX_SIZE, e.g. 256M; default 128M)");
     command->add_flag("--clear", line.cache.clear, "Remove every entry");
+    setExample(*command, "hexray cache --clear");
 }
 
 void defineCommandLine(CLI::App& app, CommandLine& line) {
+    app.formatter(std::make_shared<HelpFormatter>());  // before the subcommands, which share it
     app.footer(kExitCodes);
-    app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return "hexray: error: " + printable(error.what()) + "\nRun with --help for more information.\n";
-    });
     app.require_subcommand(1);
     app.fallthrough();  // the global options below are accepted after the subcommand too
     app.add_flag("--validate", line.validate,
                  "Enable the Khronos validation layer; any warning or error it reports fails the command "
                  "(exit code 4). Also accepted after the command, as --version is");
+    app.add_flag("-q,--quiet", line.quiet,
+                 "No progress and no summary lines (\"wrote …\", compare's and diff's reports); errors, warnings "
+                 "and the data asked for still come out. Also accepted after the command");
     app.add_flag_callback(
         "--version", [] { throw CLI::CallForVersion("", 0); },
         "Print hexray's version and git revision, the Vulkan loader's version and the device and driver hexray "
@@ -403,22 +428,6 @@ void defineCommandLine(CLI::App& app, CommandLine& line) {
     addPixelCommand(app, line);
     addDevicesCommand(app, line);
     addCacheCommand(app, line);
-}
-
-// The first word that is not an option, when it names no command: CLI11 would only say that a
-// subcommand is required.
-std::optional<std::string> unknownCommand(int argc, char** argv, const CLI::App& app) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string word = argv[i];
-        if (word == "--") {
-            return std::nullopt;
-        }
-        if (!word.empty() && word[0] != '-') {
-            const auto named = [&](const CLI::App* command) { return command->check_name(word); };
-            return app.get_subcommands(named).empty() ? std::optional<std::string>(word) : std::nullopt;
-        }
-    }
-    return std::nullopt;
 }
 
 // What CLI11 cannot check on its own; throws CLI::ValidationError.
@@ -438,6 +447,23 @@ void checkCombinations(const CLI::App& app, const CommandLine& line) {
         namesStandardOutput(render.jsonPath) && namesStandardOutput(render.outputPath)) {
         throw CLI::ValidationError("--json", "standard output carries the image (-o -): write the document to a file");
     }
+}
+
+// An image output that would go to a terminal: the message refusing it.
+std::optional<std::string> imageToTerminal(const CommandLine& line) {
+    const std::pair<const char*, const std::string*> images[] = {{"-o", &line.render.outputPath},
+                                                                 {"the output", &line.merge.outputPath},
+                                                                 {"--diff", &line.compare.diffPath},
+                                                                 {"--mask", &line.compare.maskPath},
+                                                                 {"--heatmap", &line.diff.heatmapPath}};
+    for (const auto& [option, path] : images) {
+        if (!path->empty() && writesToTerminal(*path)) {
+            const std::string file = option[0] == '-' ? std::string(option) + " FILE" : "a file name";
+            return std::string(option) + " " + printable(*path) +
+                   ": standard output is a terminal, and an image is not text: pipe it (... | display) or give " + file;
+        }
+    }
+    return std::nullopt;
 }
 
 // The bench's paths, checked before its rounds (the bench itself only writes the CSV at the end).
@@ -511,9 +537,8 @@ int main(int argc, char** argv) {
         "hexray");
     CommandLine line;
     defineCommandLine(app, line);
-    if (const std::optional<std::string> word = unknownCommand(argc, argv, app)) {
-        printError("unknown command '" + printable(*word) + "' (the commands are " + kCommands +
-                   "; hexray --help describes them)");
+    if (const std::optional<std::string> message = unknownCommandMessage(argc, argv, app)) {
+        printError(*message);
         return kBadInput;
     }
     try {
@@ -521,15 +546,13 @@ int main(int argc, char** argv) {
         checkCombinations(app, line);
     } catch (const CLI::CallForVersion&) {
         return runVersion();
-    } catch (const CLI::RequiredError& error) {
-        if (!app.get_subcommands().empty()) {
-            return app.exit(error) == 0 ? kSuccess : kBadInput;
-        }
-        printError(std::string("a command is required: ") + kCommands + " (hexray --help describes them)");
-        return kBadInput;
     } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);
-        return code == 0 ? kSuccess : kBadInput;
+        return reportParseError(app, error);
+    }
+    setQuiet(line.quiet);
+    if (const std::optional<std::string> refusal = imageToTerminal(line)) {
+        printError(*refusal);
+        return kBadInput;
     }
     try {  // refused before any work, whatever the command
         KernelCache::configuredMaxBytes();

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/command_support.h"
+#include "cli/quiet.h"
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "strip/strip_merge.h"
@@ -19,8 +20,10 @@ int runMerge(const MergeOptions& options) {
         plan.addFile("the output", options.outputPath);
         plan.check();
         const StripStamp stamp = mergeStrips(options.outputPath, options.piecePaths);
-        std::printf("wrote %s (%ux%u) from %u pieces\n", displayName(options.outputPath).c_str(), stamp.width,
-                    stamp.height, stamp.strip.count);
+        if (!quiet()) {
+            std::printf("wrote %s (%ux%u) from %u pieces\n", displayName(options.outputPath).c_str(), stamp.width,
+                        stamp.height, stamp.strip.count);
+        }
         return int(kSuccess);
     });
 }

@@ -2,6 +2,8 @@
 // Options whose values are names: one table per enum is the only list of its names, read by the
 // help text, the check and the conversion alike.
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "cli/commands.h"
 #include "gpu/render_plan.h"
 #include "precision/precision.h"
+#include "util/closest_name.h"
 
 namespace hexray::cli {
 
@@ -62,7 +65,12 @@ CLI::Option* addNamedOption(CLI::App& command, const std::string& flags, Enum& v
                     return {};
                 }
             }
-            return input + " not in " + list;
+            std::vector<std::string> known;
+            for (const auto& entry : names) {
+                known.push_back(entry.first);
+            }
+            const std::optional<std::string> near = closestName(input, known);  // "2" is no misspelt "on"
+            return input + " not in " + list + (near ? "; did you mean " + *near + "?" : "");
         },
         list);
     return command.add_option(flags, value, help)->transform(byName)->type_name("")->default_str(current);

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "cli/quiet.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -60,7 +61,7 @@ void Progress::update(std::uint64_t done) {
 }
 
 bool Progress::shown() {
-    return ::isatty(STDERR_FILENO) != 0;
+    return !quiet() && ::isatty(STDERR_FILENO) != 0;
 }
 
 }  // namespace hexray::cli

@@ -2,7 +2,7 @@
 // How far a long task has got, on one line of standard error redrawn in place:
 //   rendering scenes/big.json: 42% (6912 of 16384 rows), 3.1 s left
 // and erased when the task ends. Only when standard error is a terminal: a log file or a pipe
-// gets nothing.
+// gets nothing, and neither does --quiet.
 
 #include <chrono>
 #include <cstdint>
@@ -23,7 +23,7 @@ public:
     // `done` of the total are done. Redraws at most ten times a second; the first time at once.
     void update(std::uint64_t done);
 
-    // Whether progress lines are shown: standard error is a terminal.
+    // Whether progress lines are shown: standard error is a terminal and --quiet was not given.
     static bool shown();
 
 private:

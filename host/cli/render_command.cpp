@@ -13,6 +13,7 @@
 #include "cli/gpu_session.h"
 #include "cli/json_document.h"
 #include "cli/progress.h"
+#include "cli/quiet.h"
 #include "cli/render_record.h"
 #include "cli/render_targets.h"
 #include "cpu/cpu_renderer.h"
@@ -28,6 +29,7 @@
 #include "strip/strip_provenance.h"
 #include "strip/strip_stamp.h"
 #include "util/build_version.h"
+#include "util/formatted.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -298,12 +300,39 @@ std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallb
     return renderOnCpu(job, writer, aovs, record);
 }
 
+// "; 312.4 ms in all (start-up 150.2, load 1.9, kernel 84.7, render 20.1, write 9.8, other 45.7)":
+// where the scene's wall time went, for the summary line. Kernel: everything between the loaded
+// scene and the render (the plan, writing the kernel, glslang or the kernel cache, the driver's
+// pipelines, the scene's upload and the warm-up dispatch). `startup`: Vulkan's, when this scene
+// started it.
+std::string describeTimeParts(const SceneRecord& record, std::optional<double> startup, double wallMilliseconds) {
+    std::string parts;
+    double accounted = 0;
+    const auto add = [&](const char* name, double milliseconds) {
+        parts += formatted("%s%s %.1f", parts.empty() ? "" : ", ", name, milliseconds);
+        accounted += milliseconds;
+    };
+    if (startup) {
+        add("start-up", *startup);
+    }
+    add("load", record.loadMilliseconds.value_or(0));
+    if (record.gpu) {
+        const GpuSceneRecord& gpu = *record.gpu;
+        add("kernel", gpu.planMilliseconds + gpu.timing.uploadMilliseconds + gpu.timing.firstDispatchMilliseconds);
+    }
+    add("render", record.gpu ? record.gpu->timing.renderMilliseconds : record.cpu ? record.cpu->renderMilliseconds : 0);
+    add("write", record.writeMilliseconds.value_or(0));
+    add("other", std::max(0.0, wallMilliseconds - accounted));
+    return formatted("; %.1f ms in all (%s)", wallMilliseconds, parts.c_str());
+}
+
 int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback,
                 SceneRecord& record) {
     if (!target.problem.empty()) {
         throw SceneError(printable(target.scenePath) + ": " + target.problem);
     }
     const auto loadStart = std::chrono::steady_clock::now();
+    const bool startedVulkan = !gpu.startupMilliseconds();  // else an earlier scene did
     const SceneRender job(options, target);
     record.loadMilliseconds = millisecondsSince(loadStart);
     record.image = job.scene.image;
@@ -319,13 +348,20 @@ int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSes
     if (options.strip) {
         size = "rows " + std::to_string(job.rows.first) + "-" + std::to_string(job.rows.end() - 1) + " of " + size;
     }
-    std::printf("wrote %s (%s) — %s\n", displayName(target.outputPath).c_str(), size.c_str(), how.c_str());
+    if (!quiet()) {
+        std::printf("wrote %s (%s) — %s%s\n", displayName(target.outputPath).c_str(), size.c_str(), how.c_str(),
+                    describeTimeParts(record, startedVulkan ? gpu.startupMilliseconds() : std::nullopt,
+                                      millisecondsSince(loadStart))
+                        .c_str());
+    }
     if (aovs) {
         // Only now, so a failed render leaves the directory's earlier AOVs as they were.
         const std::size_t files = aovs->commit().size();
         record.aovFiles = files;
-        std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files,
-                    printable(options.aovDirectory).c_str());
+        if (!quiet()) {
+            std::printf("wrote %zu AOV files (OpenEXR and PNG previews) in %s\n", files,
+                        printable(options.aovDirectory).c_str());
+        }
     }
     return int(kSuccess);
 }
@@ -388,7 +424,7 @@ int renderEach(const RenderOptions& options, const std::vector<RenderTarget>& ta
             failed.push_back(target.scenePath);
         }
     }
-    if (targets.size() > 1) {
+    if (targets.size() > 1 && !quiet()) {
         std::string names;
         for (const std::string& name : failed)
             names += (names.empty() ? "; failed: " : ", ") + printable(name);

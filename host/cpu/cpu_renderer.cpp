@@ -1,6 +1,8 @@
 #include "cpu/cpu_renderer.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cfloat>
 #include <cstdint>
 #include <limits>
@@ -448,28 +450,43 @@ std::uint32_t CpuBandRenderer::rowsPerBand(std::size_t bandBytes) const {
     return std::uint32_t(std::clamp<std::size_t>(bandBytes / rowBytes, 1, std::max(frame_.scene.image.height, 1u)));
 }
 
-void CpuBandRenderer::render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band) const {
+void CpuBandRenderer::render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band,
+                             const std::function<void(std::uint32_t)>& rowsDone) const {
     prepareBand(band, frame_.scene.image.width, rows, withAovs_);
     if (frame_.scene.image.width == 0 || rows == 0) {
         return;
     }
     const RenderContext context{frame_.scene, frame_.eye, bvh_ ? &*bvh_ : nullptr, sheet_, roundoff_};
     const unsigned workers = std::min(threads_, rows);
+    // On a cache line of its own: the workers read `sheet_` and `band` for every pixel.
+    struct alignas(64) RowCount {
+        std::atomic<std::uint32_t> finished{0};
+    } count;
     // Rows are interleaved (worker w takes rows w, w + n, ...) so that expensive regions of
     // the image are shared out; each row is written by exactly one worker, so no locking.
     const auto renderRows = [&](unsigned worker) {
         for (std::uint32_t y = firstRow + worker; y < firstRow + rows; y += workers) {
             renderRow(context, y, firstRow, band);
+            count.finished.fetch_add(1, std::memory_order_relaxed);
         }
     };
-    // jthread joins on destruction, also if starting a later worker throws. The calling
-    // thread only waits: as a worker it would write its stack right beside `sheet_` and
-    // `band`, which every worker reads for every pixel (that false sharing cost up to
-    // half again the CPU time on two cores).
-    std::vector<std::jthread> threads;
-    threads.reserve(workers);
-    for (unsigned worker = 0; worker < workers; ++worker) {
-        threads.emplace_back(renderRows, worker);
+    {
+        // jthread joins on destruction, also if starting a later worker throws. The calling
+        // thread only waits (or reports the rows done): as a worker it would write its stack
+        // right beside `sheet_` and `band`, which every worker reads for every pixel (that false
+        // sharing cost up to half again the CPU time on two cores).
+        std::vector<std::jthread> threads;
+        threads.reserve(workers);
+        for (unsigned worker = 0; worker < workers; ++worker) {
+            threads.emplace_back(renderRows, worker);
+        }
+        while (rowsDone && count.finished.load(std::memory_order_relaxed) < rows) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            rowsDone(count.finished.load(std::memory_order_relaxed));
+        }
+    }
+    if (rowsDone) {
+        rowsDone(rows);
     }
 }
 

@@ -3,6 +3,7 @@
 // in double precision and for clarity rather than speed, in the eye's frame (eye_frame.h).
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -67,8 +68,11 @@ public:
     // Rows that keep a band's storage near `bandBytes` at this scene's width (at least one).
     std::uint32_t rowsPerBand(std::size_t bandBytes) const;
 
-    // Renders rows [firstRow, firstRow + rows) into `band`, resized to width x rows.
-    void render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band) const;
+    // Renders rows [firstRow, firstRow + rows) into `band`, resized to width x rows. With
+    // `rowsDone`, the calling thread tells it how many of the band's rows are finished, a few
+    // times a second while the workers render and once at the end with `rows`.
+    void render(std::uint32_t firstRow, std::uint32_t rows, CpuRender& band,
+                const std::function<void(std::uint32_t)>& rowsDone = {}) const;
 
 private:
     EyeFrameScene frame_;

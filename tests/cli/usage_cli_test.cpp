@@ -53,7 +53,7 @@ TEST_F(CliTest, AnUnknownCommandIsNamedWithTheKnownOnes) {
         << none.err;
     const RunResult noScene = hexray("render");
     EXPECT_EQ(noScene.exitCode, 2);
-    EXPECT_NE(noScene.err.find("scenes is required"), std::string::npos) << noScene.err;
+    EXPECT_NE(noScene.err.find("hexray: error: render needs its scenes argument"), std::string::npos) << noScene.err;
 }
 
 TEST_F(CliTest, GlobalOptionsAreAcceptedAfterTheCommand) {

@@ -184,6 +184,24 @@ TEST(CpuBandRenderer, BandsOfAnyHeightAreTheWholeRendersRows) {
     }
 }
 
+// The rows-done reports (compare's progress line) count up to the band's rows, and the band is
+// the one rendered without them.
+TEST(CpuBandRenderer, ReportsRowsDoneUpToTheBandWithTheSameRows) {
+    const Scene scene = variedScene();
+    const CpuBandRenderer renderer(scene, 2, Acceleration::Auto, true);
+    CpuRender quiet;
+    renderer.render(3, 17, quiet);
+    std::vector<std::uint32_t> reports;
+    CpuRender reported;
+    renderer.render(3, 17, reported, [&](std::uint32_t rows) { reports.push_back(rows); });
+    ASSERT_FALSE(reports.empty());
+    EXPECT_EQ(reports.back(), 17u);
+    EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
+    EXPECT_TRUE(reported.image.pixels == quiet.image.pixels);
+    EXPECT_TRUE(reported.classes == quiet.classes);
+    EXPECT_TRUE(reported.margins == quiet.margins);
+}
+
 TEST(CpuBandRenderer, ThreadsAreCappedAtTheImageHeightAndTheMaximum) {
     Scene scene = variedScene();
     EXPECT_EQ(CpuBandRenderer(scene, 4000000000u).threadCount(), 23u);
