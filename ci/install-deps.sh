@@ -20,6 +20,7 @@ packages=(
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
   clang-format-14 clang-tidy-14  # ci/lint.sh: the house style
   git  # ci/lint.sh lists the tracked files; the build records the revision
+  help2man  # `cmake --install`'s man page, made from hexray's own --help (cmake/man_page.cmake)
 )
 case "${1:-}" in
   --bench) packages+=(libembree-dev python3-matplotlib) ;;
