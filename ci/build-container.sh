@@ -32,7 +32,7 @@ podman_options=(--ulimit "nofile=$(ulimit -Hn):$(ulimit -Hn)")
 nproc=$(ulimit -Hu)
 if [ "$nproc" = unlimited ] || [ "$nproc" -gt 32768 ]; then nproc=32768; fi
 podman_options+=(--ulimit "nproc=$nproc:$nproc")
-if [ -s /sys/fs/cgroup/unified/cgroup.controllers ]; then
+if [ -n "$(cat /sys/fs/cgroup/unified/cgroup.controllers 2>/dev/null)" ]; then  # cgroupfs files show size 0
   command -v runc >/dev/null || { echo "build-container.sh: hybrid cgroups need runc (apt-get install runc)" >&2; exit 2; }
   podman_options+=(--runtime runc)
 fi
