@@ -27,6 +27,7 @@ test_packages=(
   python3-yaml  # the test that parses docs/scale-out.md's manifests (tests/cli/scale_out_commands.py)
   clang-14 libclang-rt-14-dev  # the fuzzers: clang with libFuzzer and its sanitizers
   clang-format-14 clang-tidy-14  # ci/lint.sh: the house style
+  help2man  # `cmake --install`'s man page, made from hexray's own --help (cmake/man_page.cmake)
 )
 case "${1:-}" in
   --render) ;;
