@@ -99,7 +99,7 @@ TEST_F(ControlCharacterTest, CompareTablesAndCommandLineWordsAreEscaped) {
     fs::copy_file(test::sourcePath("scenes/lecture-demo.json"), dir_ / "scenes" / "plain.json");
     expectEscaped("compare scenes --width 8 --height 8", "| " + escaped_ + " |");
     expectEscaped("'" + raw_ + "'", "unknown command '" + escaped_ + "'");
-    expectEscaped("render scene.json --frobnicate='" + raw_ + "'", escaped_);
+    expectEscaped("render scene.json '--frob" + raw_ + "=1'", "unknown option '--frob" + escaped_ + "'");
 }
 
 }  // namespace
