@@ -22,11 +22,15 @@ def layer_units(build_dir, out_dir):
     commands = json.loads((build_dir / "compile_commands.json").read_text())
     layers = {}
     for entry in commands:
-        target = re.search(r"CMakeFiles/(hexray_\w+)\.dir/host/", entry["command"])
+        # A source of its own, or a unity source that includes several (HEXRAY_UNITY_BUILD).
+        target = re.search(r"CMakeFiles/(hexray_\w+)\.dir/(?:host|Unity)/", entry["command"])
         if target:
             layers.setdefault(target.group(1), []).append(entry)
     units = []
     for layer, entries in sorted(layers.items()):
+        # A source compiled apart has options of its own (build_version.cpp's version defines): the
+        # layer's unit takes its command, since the unity sources' adds nothing it lacks.
+        entries.sort(key=lambda e: "/Unity/" in e["command"])
         unit = out_dir / f"{layer}.cpp"
         unit.write_text("".join(f'#include "{e["file"]}"\n' for e in entries))
         command = entries[0]["command"]
