@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Builds the hexray executable and its command-line tests with AddressSanitizer and
-# UndefinedBehaviorSanitizer in build-asan/ and runs those tests there: the executable as users
-# run it (every subcommand, bad inputs, faults, signals, outputs), GPU work on lavapipe (Mesa and
-# the Vulkan loader are not instrumented, hexray's host code is). Any sanitizer report fails.
+# Builds the hexray executable with AddressSanitizer and UndefinedBehaviorSanitizer in build-asan/
+# and runs the release build's command-line tests against it (HEXRAY_UNDER_TEST): the executable
+# as users run it (every subcommand, bad inputs, faults, signals, outputs), GPU work on lavapipe
+# (Mesa and the Vulkan loader are not instrumented, hexray's host code is). Any sanitizer report
+# fails. The tests only start the executable, so they need no instrumenting themselves.
 # The readers of untrusted files are fuzzed under the same sanitizers (ci/fuzz.sh); the unit and
-# GPU tests run in the release build. Needs the packages from ci/install-deps.sh; ci/test.sh runs
-# it after the normal build and tests.
+# GPU tests run in the release build. Needs the packages from ci/install-deps.sh and the release
+# build's tests (build/tests/hexray_cli_tests); ci/test.sh runs it after the normal build and tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,7 +19,8 @@ export LSAN_OPTIONS="suppressions=$PWD/ci/lsan.supp:print_suppressions=0"
 
 # The flags are CMakePresets.json's "asan" (-g1: line tables, all a report's stack needs).
 cmake --preset asan
-cmake --build --preset asan --parallel "$(nproc)" --target hexray hexray_cli_tests
+cmake --build --preset asan --parallel "$(nproc)" --target hexray
+export HEXRAY_UNDER_TEST="$PWD/build-asan/hexray"
 
 cc -shared -fPIC -O1 -o build-asan/keep-libraries-loaded.so ci/keep-libraries-loaded.c
 export LD_PRELOAD="$PWD/build-asan/keep-libraries-loaded.so"
@@ -37,6 +39,8 @@ repeated+=":CompareGateCliTest.AnExpectationThatNoLongerHolds*:CompareGateCliTes
 repeated+=":ReportTest.EveryImageLoads*:ReportTest.AMissingImage*:ReportTest.TheGpuRenderFlips*"
 repeated+=":ReportTest.AFailedScene*:ReportTest.AMissingBrowser*"
 repeated+=":JsonCliTest.Render*:JsonCliTest.Pixel*:BenchCliTest.*"
+# AddressSanitizer reserves terabytes of address space: the memory tests' ulimit -v cannot apply.
+repeated+=":MemoryCliTest.*"
 
 # One process per core, each a shard of the tests (GoogleTest's own sharding).
 shards=$(nproc)
@@ -45,7 +49,7 @@ trap 'rm -rf "$logs"' EXIT
 pids=()
 for ((shard = 0; shard < shards; shard++)); do
   GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard \
-    build-asan/tests/hexray_cli_tests --gtest_filter="-$repeated" --gtest_brief=1 >"$logs/$shard" 2>&1 &
+    build/tests/hexray_cli_tests --gtest_filter="-$repeated" --gtest_brief=1 >"$logs/$shard" 2>&1 &
   pids+=($!)
 done
 status=0

@@ -31,6 +31,13 @@ struct RunResult {
     std::string err;
 };
 
+// The executable under test: build/hexray, or the one HEXRAY_UNDER_TEST names (ci/sanitize.sh runs
+// these tests against its ASan + UBSan build of hexray).
+inline std::string hexrayExecutable() {
+    const char* underTest = std::getenv("HEXRAY_UNDER_TEST");
+    return underTest != nullptr && *underTest != '\0' ? underTest : HEXRAY_EXECUTABLE;
+}
+
 inline std::string readFile(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::stringstream text;
@@ -50,7 +57,7 @@ protected:
     RunResult shell(const std::string& script) const {
         const fs::path out = dir_ / "stdout.txt";
         const fs::path err = dir_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.string() + "' && HEXRAY='" HEXRAY_EXECUTABLE "' && { " + script +
+        const std::string command = "cd '" + dir_.string() + "' && HEXRAY='" + hexrayExecutable() + "' && { " + script +
                                     "\n} >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
         const int status = std::system(command.c_str());
         RunResult result;
@@ -71,7 +78,7 @@ protected:
     // background job would ignore SIGINT and SIGQUIT) and `environment` ("NAME=value") added to
     // this process's; stdout and stderr go to the usual files.
     pid_t start(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {}) const {
-        std::vector<std::string> words = {HEXRAY_EXECUTABLE};
+        std::vector<std::string> words = {hexrayExecutable()};
         words.insert(words.end(), arguments.begin(), arguments.end());
         std::vector<char*> argv;
         for (std::string& word : words) {

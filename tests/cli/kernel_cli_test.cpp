@@ -188,7 +188,7 @@ TEST_F(KernelCliTest, AnUnusableCacheIsNoCacheAndNoError) {
 TEST_F(KernelCliTest, TwoProcessesSharingTheCacheBothSucceed) {
     const std::string cache = (dir_ / "cache").string();
     const std::string render =
-        "'" HEXRAY_EXECUTABLE "' render " + scene("lecture-demo.json") + " --width 40 --height 30 -o ";
+        "'" + hexrayExecutable() + "' render " + scene("lecture-demo.json") + " --width 40 --height 30 -o ";
     const std::string command = "cd '" + dir_.string() + "' && export XDG_CACHE_HOME='" + cache + "' && (" + render +
                                 "a.png >/dev/null & " + render + "b.png >/dev/null & wait) && cmp a.png b.png";
     EXPECT_EQ(std::system(command.c_str()), 0);

@@ -17,12 +17,6 @@ namespace {
 using test::RunResult;
 namespace fs = std::filesystem;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
 // Nothing to hit: the cheapest pixels, so that a large image renders in seconds on the CPU.
 constexpr const char* kEmptyScene =
     R"({"image": {"width": 64, "height": 64}, "camera": {"position": [0, 1, 0]}, "background": [0.2, 0.3, 0.4],
@@ -32,9 +26,6 @@ class MemoryCliTest : public test::CliTest {
 protected:
     void SetUp() override {
         CliTest::SetUp();
-        if (kAddressSanitizer) {
-            GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: ulimit -v cannot apply";
-        }
         writeScene("empty.json", kEmptyScene);
     }
 

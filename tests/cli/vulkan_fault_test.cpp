@@ -141,7 +141,7 @@ TEST_F(CliTest, AnUnknownInjectedFaultIsAnErrorNotIgnored) {
 }
 
 TEST_F(CliTest, TwoRendersAtOnceBothFinishWithTheSequentialImage) {
-    const std::string render = "'" HEXRAY_EXECUTABLE "' render " + scene("spheres-and-lights.json") +
+    const std::string render = "'" + test::hexrayExecutable() + "' render " + scene("spheres-and-lights.json") +
                                " --backend gpu --width 800 --height 600 --spp 2";
     const RunResult sequential = hexray("render " + scene("spheres-and-lights.json") +
                                         " --backend gpu --width 800 --height 600 --spp 2 -o sequential.png");
