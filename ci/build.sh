@@ -13,5 +13,5 @@ if [ "${1:-}" = --render ]; then
   testing=OFF
   targets=(--target hexray)
 fi
-cmake --preset release -DHEXRAY_WERROR="${HEXRAY_WERROR:-OFF}" -DBUILD_TESTING="$testing"
+bash ci/configure.sh release -DHEXRAY_WERROR="${HEXRAY_WERROR:-OFF}" -DBUILD_TESTING="$testing"
 cmake --build --preset release --parallel "$(nproc)" "${targets[@]}"

@@ -15,7 +15,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = --differential ]; then
-  cmake --preset release >/dev/null
+  bash ci/configure.sh release >/dev/null
   cmake --build --preset release --parallel "$(nproc)" --target hexray_differential_fuzzer >/dev/null
   lavapipe_icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -n 1)
   export VK_DRIVER_FILES="$lavapipe_icd" VK_ICD_FILENAMES="$lavapipe_icd"
@@ -53,7 +53,7 @@ piece_seconds=$((seconds / 4))
 cache_seconds=$((seconds / 4))
 scene_seconds=$((seconds - piece_seconds - cache_seconds))
 
-cmake --preset fuzz
+bash ci/configure.sh fuzz
 cmake --build --preset fuzz --parallel "$(nproc)"
 
 # New inputs go to scratch corpora; the seed folders are only read. Scene inputs are capped at

@@ -9,7 +9,7 @@ set -euo pipefail
 
 # Building and running hexray.
 packages=(
-  g++ make cmake pkg-config
+  g++ make ninja-build cmake pkg-config  # Ninja: the presets' build tool
   libvulkan-dev mesa-vulkan-drivers glslang-tools
   glslang-dev spirv-tools  # glslang as a library: generated kernels are compiled at run time
   libglm-dev libstb-dev libspng-dev libopenexr-dev nlohmann-json3-dev libcli11-dev

@@ -18,7 +18,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/ci/lsan.supp:print_suppressions=0"
 
 # The flags are CMakePresets.json's "asan" (-g1: line tables, all a report's stack needs).
-cmake --preset asan
+bash ci/configure.sh asan
 cmake --build --preset asan --parallel "$(nproc)" --target hexray
 export HEXRAY_UNDER_TEST="$PWD/build-asan/hexray"
 
