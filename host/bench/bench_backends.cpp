@@ -111,14 +111,14 @@ std::string BenchBackends::name(BenchBackend backend) const {
             return "cpu-reference";
         case BenchBackend::Embree:
 #ifdef HEXRAY_WITH_EMBREE
-            return "embree " + std::to_string(embreeAtItsBest_->packetWidth()) + "-ray packets, f32 shading";
+            return "embree " + std::to_string(embreeAtItsBest_->packetWidth()) + "-ray packets (f32 shading)";
 #else
             return "embree";
 #endif
         case BenchBackend::EmbreeF64Packets:
-            return "embree 8-ray packets, f64 shading";
+            return "embree 8-ray packets (f64 shading)";
         case BenchBackend::EmbreeF64Single:
-            return "embree single rays, f64 shading";
+            return "embree single rays (f64 shading)";
     }
     return "";
 }

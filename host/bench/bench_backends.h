@@ -89,8 +89,8 @@ public:
     // The GPU renderer's pipelines made so far (GpuRenderer::pipelinesCreated).
     std::uint64_t gpuPipelinesCreated() const { return gpu_.pipelinesCreated(); }
 
-    // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree 8-ray packets, f32 shading" (the
-    // packet width this CPU runs), "embree 8-ray packets, f64 shading", "embree single rays, f64 shading".
+    // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree 8-ray packets (f32 shading)" (the
+    // packet width this CPU runs), "embree 8-ray packets (f64 shading)", "embree single rays (f64 shading)".
     std::string name(BenchBackend backend) const;
     // The threads the backend renders with, for the per-pixel cost; 0 for a real GPU.
     unsigned threads(BenchBackend backend) const;
