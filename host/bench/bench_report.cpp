@@ -228,7 +228,7 @@ void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<Be
     std::printf(
         "| spheres | resolution | backend | kernel | precision | culling | spp | Mpix/s median | Mpix/s best | frame "
         "ms | host plan "
-        "ms | upload ms | threads | core-ns per pixel | vs Embree (faster mode) | RMSE vs CPU ref, same spp, "
+        "ms | upload ms | threads | core-ns per pixel | vs Embree (fastest row) | RMSE vs CPU ref, same spp, "
         "unambiguous px (levels) | mean FLIP vs CPU ref | > 1 level | topology mismatches |\n");
     std::printf("|---:|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, true)) {
