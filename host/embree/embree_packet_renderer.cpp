@@ -108,8 +108,10 @@ void cameraRays(const EmbreeFloatScene& scene, std::uint32_t left, std::uint32_t
     constexpr std::uint32_t kTileWidth = PacketApi<W>::kTileWidth;
     const glm::vec2 offset = scene.sampleOffsets[sample];
     for (std::uint32_t lane = 0; lane < W; ++lane) {
-        const float x = float(left + lane % kTileWidth);
-        const float y = float(top + lane / kTileWidth);
+        const std::uint32_t column = left + lane % kTileWidth;
+        const std::uint32_t row = top + lane / kTileWidth;
+        const float x = float(column);
+        const float y = float(row);
         lanes.valid[lane] = x < scene.width && y < scene.height ? -1 : 0;
         const float sx = (x + offset.x) / scene.width;
         const float sy = (y + offset.y) / scene.height;
@@ -303,7 +305,7 @@ void addLight(const EmbreeFloatScene& scene, std::size_t index, Lanes<W>& lanes)
 
 // The tiles whose top row is `top`: every sample of a tile as one packet, its colours summed.
 template <std::uint32_t W>
-void renderTileRow(const EmbreeFloatScene& scene, std::uint32_t top, EmbreeRender& render) {
+void renderPacketRow(const EmbreeFloatScene& scene, std::uint32_t top, EmbreeRender& render) {
     constexpr std::uint32_t kTileWidth = PacketApi<W>::kTileWidth;
     const std::uint32_t width = render.image.width;
     const std::uint32_t height = render.image.height;
@@ -348,7 +350,7 @@ void renderImage(unsigned threadCount, const EmbreeFloatScene& scene, EmbreeRend
     constexpr std::uint32_t kTileHeight = W / PacketApi<W>::kTileWidth;
     renderInBands(threadCount, render.image.height, kTileHeight, [&](std::uint32_t top) {
         const FlushDenormals flush;
-        renderTileRow<W>(scene, top, render);
+        renderPacketRow<W>(scene, top, render);
     });
 }
 
