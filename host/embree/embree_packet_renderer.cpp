@@ -345,12 +345,25 @@ void renderPacketRow(const EmbreeFloatScene& scene, std::uint32_t top, EmbreeRen
     }
 }
 
+// The same compiled for AVX2 with everything inlined, so that the lanes' loops vectorise as wide
+// as an 8-ray packet where the CPU can (Embree picks its own kernels by the CPU likewise).
+template <std::uint32_t W>
+__attribute__((flatten, target("avx2,fma"))) void renderPacketRowAvx2(const EmbreeFloatScene& scene, std::uint32_t top,
+                                                                      EmbreeRender& render) {
+    renderPacketRow<W>(scene, top, render);
+}
+
 template <std::uint32_t W>
 void renderImage(unsigned threadCount, const EmbreeFloatScene& scene, EmbreeRender& render) {
     constexpr std::uint32_t kTileHeight = W / PacketApi<W>::kTileWidth;
+    const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     renderInBands(threadCount, render.image.height, kTileHeight, [&](std::uint32_t top) {
         const FlushDenormals flush;
-        renderPacketRow<W>(scene, top, render);
+        if (avx2) {
+            renderPacketRowAvx2<W>(scene, top, render);
+        } else {
+            renderPacketRow<W>(scene, top, render);
+        }
     });
 }
 
