@@ -88,18 +88,26 @@ picks; **lavapipe hand-written** (demo scene only) = \`host/bench/lecture_demo_c
 demo scene as straight-line code with its values as literals and textbook float arithmetic, run
 through the renderer's public interface: the yardstick for what lavapipe can do for that scene;
 **cpu-reference** = the double-precision reference (\`host/cpu\`), which also computes every
-decision's margin and is built for clarity, not speed; **embree** = Intel's Embree 3 on the
-same scenes, camera rays and shading (\`host/embree\`: spheres as Embree sphere points in
-float, camera-relative; planes analytic; hit points rebuilt and shaded in double), one ray at a
-time (\`rtcIntersect1\`/\`rtcOccluded1\`) and in coherent 8-ray packets of 4×2 pixels
-(\`rtcIntersect8\`/\`rtcOccluded8\`).
+decision's margin and is built for clarity, not speed; **embree N-ray packets (f32 shading)** =
+Intel's Embree 3 as its authors would use it, on the same scenes, camera rays and shading model
+(\`host/embree/embree_packet_renderer.*\`): the widest packet the CPU runs natively (16 rays on
+AVX-512, 8 on AVX2, else 4), each the camera rays of a square tile (4×4, 4×2, 2×2) in one coherent
+\`rtcIntersectN\`, the shadow rays toward each light in one incoherent \`rtcOccludedN\`, spheres as
+Embree sphere points and planes analytic, everything in float and camera-relative, shaded over the
+packet's lanes in structure-of-arrays loops, denormals flushed to zero; **embree 8-ray packets
+(f64 shading)** and **embree single rays (f64 shading)** (on request, \`--backends
+embree-f64-packets,embree-f64-single\`) = Embree's hits rebuilt and shaded in double through the
+CPU reference's code (\`host/embree/embree_renderer.*\`): what hexray's double shading costs on
+Embree's traversal, not Embree's own speed. \`--backends\` chooses the rows
+([command-line.md](command-line.md)); the **kernel**, **precision** and **culling** columns tell
+apart rows that differ in those.
 
 Columns: **Mpix/s** = pixels / render time (lavapipe: dispatch time from timestamps, after a
 warm-up dispatch of each kernel; CPU reference: wall time, all cores, BVH build included;
 Embree: tracing and shading wall time, all cores, its BVH build excluded), median and best of
 the rounds; **frame ms** = median wall time of the whole frame in-process (planning, upload,
 render, read back); **vs hand-written** / **vs Embree** = this row's Mpix/s over the
-hand-written kernel's / the faster Embree mode's at the same scene and sample count;
+hand-written kernel's / the fastest Embree row's at the same scene and sample count;
 **primary tests/px**, **shadow rays/px**, **shadow tests/px** = what the row's generated kernel
 runs per pixel on average (lavapipe runs every test a straight-line kernel contains, whatever
 the pixel): camera-ray node tests, lights with a shadow test, and shadow node tests;
@@ -143,7 +151,7 @@ whose full frame that predicts to exceed \`--max-frame-seconds\` (30) is not mea
 N (the notes under the table say which). **host plan ms** = the GPU's planning (the structures
 it builds on the host for the scene: its candidate lists), **upload ms** = packing and uploading
 them: both are in frame ms, not in the render time. **core-ns per pixel** = render time ×
-threads / pixels. **vs Embree** = this row's Mpix/s over the faster Embree mode's at the same N
+threads / pixels. **vs Embree** = this row's Mpix/s over the fastest Embree row's at the same N
 (above 1: faster than Embree). The error columns here are against the CPU reference at the same
 sample count (1 spp), so the cpu-reference rows read 0 by construction.
 

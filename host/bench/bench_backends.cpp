@@ -8,6 +8,7 @@
 #include "cpu/cpu_renderer.h"
 #include "util/milliseconds_since.h"
 #ifdef HEXRAY_WITH_EMBREE
+#include "embree/embree_packet_renderer.h"
 #include "embree/embree_renderer.h"
 #endif
 
@@ -66,7 +67,8 @@ BenchBackends::BenchBackends(const VulkanContext::Options& vulkan)
     : context_(vulkan),
       gpu_(context_, GpuRenderer::kDefaultMaxBandBytes, KernelCache(KernelCache::defaultDirectory()),
            kBenchKeptKernels),
-      embree_(new EmbreeRenderer(cpuThreadCount(0))) {
+      embree_(new EmbreeRenderer(cpuThreadCount(0))),
+      embreeAtItsBest_(new EmbreePacketRenderer(cpuThreadCount(0))) {
 #else
 BenchBackends::BenchBackends(const VulkanContext::Options& vulkan)
     : context_(vulkan),
@@ -80,6 +82,12 @@ BenchBackends::BenchBackends(const VulkanContext::Options& vulkan)
 BenchBackends::~BenchBackends() = default;
 
 void BenchBackends::EmbreeDeleter::operator()([[maybe_unused]] EmbreeRenderer* renderer) const {
+#ifdef HEXRAY_WITH_EMBREE
+    delete renderer;
+#endif
+}
+
+void BenchBackends::EmbreeDeleter::operator()([[maybe_unused]] EmbreePacketRenderer* renderer) const {
 #ifdef HEXRAY_WITH_EMBREE
     delete renderer;
 #endif
@@ -101,10 +109,16 @@ std::string BenchBackends::name(BenchBackend backend) const {
             return gpuName_ + " hand-written";
         case BenchBackend::Cpu:
             return "cpu-reference";
-        case BenchBackend::EmbreeSingle:
-            return "embree single rays";
-        case BenchBackend::EmbreePackets:
-            return "embree 8-ray packets";
+        case BenchBackend::Embree:
+#ifdef HEXRAY_WITH_EMBREE
+            return "embree " + std::to_string(embreeAtItsBest_->packetWidth()) + "-ray packets (f32 shading)";
+#else
+            return "embree";
+#endif
+        case BenchBackend::EmbreeF64Packets:
+            return "embree 8-ray packets (f64 shading)";
+        case BenchBackend::EmbreeF64Single:
+            return "embree single rays (f64 shading)";
     }
     return "";
 }
@@ -115,8 +129,9 @@ unsigned BenchBackends::threads(BenchBackend backend) const {
         case BenchBackend::GpuHandWritten:
             return isLavapipe_ ? lavapipeThreads() : 0;
         case BenchBackend::Cpu:
-        case BenchBackend::EmbreeSingle:
-        case BenchBackend::EmbreePackets:
+        case BenchBackend::Embree:
+        case BenchBackend::EmbreeF64Packets:
+        case BenchBackend::EmbreeF64Single:
             return cpuThreadCount(0);
     }
     return 0;
@@ -160,21 +175,27 @@ void BenchBackends::measure(const Scene& scene, const BenchConfiguration& config
             measurement.margins = std::move(render.margins);
             return;
         }
-        case BenchBackend::EmbreeSingle:
-        case BenchBackend::EmbreePackets: {
-#ifdef HEXRAY_WITH_EMBREE
-            const EmbreeTracing tracing = configuration.backend == BenchBackend::EmbreeSingle
-                                              ? EmbreeTracing::SingleRays
-                                              : EmbreeTracing::Packets;
-            EmbreeRender render = embree_->render(scene, tracing);
-            measurement.renderMilliseconds.push_back(render.renderMilliseconds);
-            measurement.frameMilliseconds.push_back(millisecondsSince(start));
-            measurement.image = std::move(render.image);
-            measurement.classes = std::move(render.classes);
-#endif
+        case BenchBackend::Embree:
+        case BenchBackend::EmbreeF64Packets:
+        case BenchBackend::EmbreeF64Single:
+            measureEmbree(scene, configuration.backend, measurement);
             return;
-        }
     }
+}
+
+void BenchBackends::measureEmbree([[maybe_unused]] const Scene& scene, [[maybe_unused]] BenchBackend backend,
+                                  [[maybe_unused]] BenchMeasurement& measurement) {
+#ifdef HEXRAY_WITH_EMBREE
+    const auto start = std::chrono::steady_clock::now();
+    EmbreeRender render = backend == BenchBackend::Embree ? embreeAtItsBest_->render(scene)
+                          : backend == BenchBackend::EmbreeF64Packets
+                              ? embree_->render(scene, EmbreeTracing::Packets)
+                              : embree_->render(scene, EmbreeTracing::SingleRays);
+    measurement.renderMilliseconds.push_back(render.renderMilliseconds);
+    measurement.frameMilliseconds.push_back(millisecondsSince(start));
+    measurement.image = std::move(render.image);
+    measurement.classes = std::move(render.classes);
+#endif
 }
 
 std::optional<WorkPerPixel> BenchBackends::work(const Scene& scene, const BenchConfiguration& configuration) const {

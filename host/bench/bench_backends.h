@@ -21,17 +21,19 @@
 #include "vulkan/vulkan_context.h"
 
 namespace hexray::inline embree {
-class EmbreeRenderer;  // embree/embree_renderer.h
+class EmbreeRenderer;        // embree/embree_renderer.h
+class EmbreePacketRenderer;  // embree/embree_packet_renderer.h
 }  // namespace hexray::embree
 
 namespace hexray::inline bench {
 
 enum class BenchBackend {
-    Gpu,             // the renderer, as planRender decides for a precision and culling
-    GpuHandWritten,  // the lecture demo's hand-written kernel (bench/lecture_demo_ceiling.h)
-    Cpu,             // the CPU reference
-    EmbreeSingle,    // Embree 3, one ray at a time
-    EmbreePackets,   // Embree 3, coherent 8-ray packets
+    Gpu,               // the renderer, as planRender decides for a precision and culling
+    GpuHandWritten,    // the lecture demo's hand-written kernel (bench/lecture_demo_ceiling.h)
+    Cpu,               // the CPU reference
+    Embree,            // Embree 3 at its best: the widest native packets, shading in float (EmbreePacketRenderer)
+    EmbreeF64Packets,  // Embree 3, 8-ray packets, shading in double through the CPU reference's code
+    EmbreeF64Single,   // Embree 3, one ray at a time, shading in double as above
 };
 
 // The GPU kernel a configuration ran: the plan decides, whatever the configuration asked (culling
@@ -87,7 +89,8 @@ public:
     // The GPU renderer's pipelines made so far (GpuRenderer::pipelinesCreated).
     std::uint64_t gpuPipelinesCreated() const { return gpu_.pipelinesCreated(); }
 
-    // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree single rays", "embree 8-ray packets".
+    // "lavapipe", "lavapipe hand-written", "cpu-reference", "embree 8-ray packets (f32 shading)" (the
+    // packet width this CPU runs), "embree 8-ray packets (f64 shading)", "embree single rays (f64 shading)".
     std::string name(BenchBackend backend) const;
     // The threads the backend renders with, for the per-pixel cost; 0 for a real GPU.
     unsigned threads(BenchBackend backend) const;
@@ -104,6 +107,7 @@ public:
 private:
     void measureGpu(const Scene& scene, const BenchConfiguration& configuration, bool withClasses,
                     BenchMeasurement& measurement);
+    void measureEmbree(const Scene& scene, BenchBackend backend, BenchMeasurement& measurement);
 
     std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();  // before context_
     VulkanContext context_;
@@ -114,8 +118,10 @@ private:
     // Complete only where Embree is built in, so its deleter is defined there (bench_backends.cpp).
     struct EmbreeDeleter {
         void operator()(EmbreeRenderer* renderer) const;
+        void operator()(EmbreePacketRenderer* renderer) const;
     };
-    std::unique_ptr<EmbreeRenderer, EmbreeDeleter> embree_;  // null without Embree
+    std::unique_ptr<EmbreeRenderer, EmbreeDeleter> embree_;                 // null without Embree
+    std::unique_ptr<EmbreePacketRenderer, EmbreeDeleter> embreeAtItsBest_;  // null without Embree
 };
 
 }  // namespace hexray::bench

@@ -14,7 +14,8 @@ double median(std::vector<double> values) {
 }
 
 bool isEmbree(BenchBackend backend) {
-    return backend == BenchBackend::EmbreeSingle || backend == BenchBackend::EmbreePackets;
+    return backend == BenchBackend::Embree || backend == BenchBackend::EmbreeF64Packets ||
+           backend == BenchBackend::EmbreeF64Single;
 }
 
 // What was asked and what ran: the plan's precision and kernel for the GPU, each other backend's
@@ -36,9 +37,12 @@ void describeConfiguration(const BenchConfiguration& configuration, const BenchM
         case BenchBackend::Cpu:
             row.precision = Precision::F64;
             return;
-        case BenchBackend::EmbreeSingle:
-        case BenchBackend::EmbreePackets:
+        case BenchBackend::Embree:
             row.precision = Precision::F32;
+            return;
+        case BenchBackend::EmbreeF64Packets:
+        case BenchBackend::EmbreeF64Single:
+            row.precision = Precision::F32;  // the arithmetic that decides the hits
             return;
     }
 }
@@ -145,9 +149,11 @@ std::string precisionText(const BenchRow& row) {
             return "f32 textbook";
         case BenchBackend::Cpu:
             return "f64 (double)";
-        case BenchBackend::EmbreeSingle:
-        case BenchBackend::EmbreePackets:
+        case BenchBackend::Embree:
             return "f32 (Embree)";
+        case BenchBackend::EmbreeF64Packets:
+        case BenchBackend::EmbreeF64Single:
+            return "f32 hits, f64 shading";
     }
     return "";
 }
@@ -162,6 +168,11 @@ std::string cullingText(const BenchRow& row) {
         return "on (not run)";
     }
     return *row.cullingAsked ? "on" : "off";
+}
+
+// The GPU kernel that ran; "–" for the other backends.
+const char* kernelText(const BenchRow& row) {
+    return row.kernel == BenchKernel::None ? "–" : benchKernelName(row.kernel);
 }
 
 std::string mismatches(const BenchRow& row) {
@@ -187,24 +198,25 @@ std::vector<const BenchRow*> rowsOf(const std::vector<BenchScene>& scenes, const
 void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
                     const BenchBackends& backends) {
     std::printf(
-        "| scene | resolution | backend | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
+        "| scene | resolution | backend | kernel | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
         "| vs hand-written | primary tests/px | shadow rays/px | shadow tests/px | sampling error: RMSE vs "
         "converged (levels) | precision error: RMSE vs CPU ref, same spp, unambiguous px (levels) | "
         "mean FLIP vs CPU ref, same spp | > 1 level, same spp | topology mismatches |\n");
-    std::printf("|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("|---|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, false)) {
         const BenchScene& bench = scenes[row->configuration.scene];
         const auto work = [&](double WorkPerPixel::*field) {
             return row->work ? format("%.2f", (*row->work).*field) : "–";
         };
         std::printf(
-            "| %s | %ux%u | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %s | %s | %s | %.3f | %s | %.3f%% "
+            "| %s | %ux%u | %s | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %s | %s | %s | %.3f | %s | %.3f%% "
             "| %s |\n",
             bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
-            backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(), cullingText(*row).c_str(),
-            row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
-            row->frameMs, optional(row->versusHandWritten, "%.2f").c_str(), work(&WorkPerPixel::primaryTests).c_str(),
-            work(&WorkPerPixel::shadowRays).c_str(), work(&WorkPerPixel::shadowTests).c_str(),
+            backends.name(row->configuration.backend).c_str(), kernelText(*row), precisionText(*row).c_str(),
+            cullingText(*row).c_str(), row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(),
+            mpix(row->bestMpix).c_str(), row->frameMs, optional(row->versusHandWritten, "%.2f").c_str(),
+            work(&WorkPerPixel::primaryTests).c_str(), work(&WorkPerPixel::shadowRays).c_str(),
+            work(&WorkPerPixel::shadowTests).c_str(),
             optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f").c_str(),
             row->precisionError.rmse, optional(row->flipMean, "%.5f").c_str(),
             100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
@@ -214,19 +226,23 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
 void printCurveTable(const std::vector<BenchScene>& scenes, const std::vector<BenchRow>& rows,
                      const BenchBackends& backends) {
     std::printf(
-        "| spheres | resolution | backend | precision | spp | Mpix/s median | Mpix/s best | frame ms | host plan "
-        "ms | upload ms | threads | core-ns per pixel | vs Embree (faster mode) | RMSE vs CPU ref, same spp, "
+        "| spheres | resolution | backend | kernel | precision | culling | spp | Mpix/s median | Mpix/s best | frame "
+        "ms | host plan "
+        "ms | upload ms | threads | core-ns per pixel | vs Embree (fastest row) | RMSE vs CPU ref, same spp, "
         "unambiguous px (levels) | mean FLIP vs CPU ref | > 1 level | topology mismatches |\n");
-    std::printf("|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("|---:|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, true)) {
         const BenchScene& bench = scenes[row->configuration.scene];
         std::printf(
-            "| %u | %ux%u | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %s | %.3f%% | %s |\n",
+            "| %u | %ux%u | %s | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %u | %.0f | %s | %.3f | %s | %.3f%% | "
+            "%s "
+            "|\n",
             *bench.spheres, bench.scene.image.width, bench.scene.image.height,
-            backends.name(row->configuration.backend).c_str(), precisionText(*row).c_str(),
-            row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(), mpix(row->bestMpix).c_str(),
-            row->frameMs, optional(row->planMs, "%.1f").c_str(), optional(row->uploadMs, "%.1f").c_str(), row->threads,
-            row->coreNsPerPixel, optional(row->versusEmbree, "%.2f").c_str(), row->precisionError.rmse,
+            backends.name(row->configuration.backend).c_str(), kernelText(*row), precisionText(*row).c_str(),
+            cullingText(*row).c_str(), row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(),
+            mpix(row->bestMpix).c_str(), row->frameMs, optional(row->planMs, "%.1f").c_str(),
+            optional(row->uploadMs, "%.1f").c_str(), row->threads, row->coreNsPerPixel,
+            optional(row->versusEmbree, "%.2f").c_str(), row->precisionError.rmse,
             optional(row->flipMean, "%.5f").c_str(), 100.0 * row->precisionError.shareOverOneLevel,
             mismatches(*row).c_str());
     }

@@ -10,6 +10,7 @@
 #include "bench/bench_backends.h"
 #include "bench/bench_csv.h"
 #include "bench/bench_report.h"
+#include "bench/bench_selection.h"
 #include "bench/lecture_demo_ceiling.h"
 #include "cli/bench_json.h"
 #include "cli/command_support.h"
@@ -54,17 +55,25 @@ Scene withSamples(Scene scene, std::uint32_t samplesPerPixel) {
     return scene;
 }
 
-// The CPU reference at each sample count measured (judging precision and topology), and for a
-// file scene a converged one (judging what a viewer sees: mostly sampling error at 1 spp).
-void addReferences(const BenchOptions& options, BenchScene& bench) {
-    if (!bench.spheres) {
-        std::fprintf(stderr, "bench: converged reference for %s (%u spp on the CPU)...\n", bench.name.c_str(),
-                     options.referenceSamples);
-        const Scene converged = withSamples(bench.scene, options.referenceSamples);
-        bench.reference.converged = encodeImage(renderOnCpu(converged).image, converged.image.encoding);
+// For a file scene, a converged CPU reference (judging what a viewer sees: mostly sampling error at
+// 1 spp); part of the CPU reference's rows, so a bench at scale can leave it out.
+void addConvergedReferences(const BenchOptions& options, const BenchSelection& selection, Bench& bench) {
+    const bool anyFile = std::any_of(bench.scenes.begin(), bench.scenes.end(), [](auto& s) { return !s.spheres; });
+    if (!selection.contains(BenchRowKind::Cpu)) {
+        if (anyFile) {
+            bench.notes.push_back(
+                "Sampling error: not measured, as --backends leaves out cpu (the converged "
+                "reference is the CPU reference's).");
+        }
+        return;
     }
-    for (const std::uint32_t spp : options.samples) {
-        bench.reference.bySamples[spp] = renderOnCpu(withSamples(bench.scene, spp));
+    for (BenchScene& scene : bench.scenes) {
+        if (!scene.spheres) {
+            std::fprintf(stderr, "bench: converged reference for %s (%u spp on the CPU)...\n", scene.name.c_str(),
+                         options.referenceSamples);
+            const Scene converged = withSamples(scene.scene, options.referenceSamples);
+            scene.reference.converged = encodeImage(renderOnCpu(converged).image, converged.image.encoding);
+        }
     }
 }
 
@@ -80,33 +89,50 @@ std::vector<BenchScene> fileScenes(const BenchOptions& options) {
         applyImageOverride(demo, options.image);
         scenes.push_back({std::string(kDemoSceneName), std::nullopt, std::move(demo), {}});
     }
-    for (BenchScene& bench : scenes) {
-        addReferences(options, bench);
-    }
     return scenes;
 }
 
-// A file scene's configurations: the GPU in every precision, culled and whole (the textbook
-// formulation is never culled), the hand-written kernel where it applies, the CPU reference and
-// Embree's two modes.
-void addFileConfigurations(const BenchOptions& options, const BenchBackends& backends, std::size_t index,
-                           const Scene& scene, std::vector<BenchConfiguration>& configurations) {
-    for (const std::uint32_t spp : options.samples) {
-        configurations.push_back({index, BenchBackend::Gpu, Precision::F32Naive, Culling::Off, spp});
-        for (const Precision precision : {Precision::F32, Precision::F64}) {
-            if (precision == Precision::F64 && !backends.hasFloat64()) {
-                continue;
-            }
-            configurations.push_back({index, BenchBackend::Gpu, precision, Culling::Off, spp});
-            configurations.push_back({index, BenchBackend::Gpu, precision, Culling::On, spp});
+// The Embree rows chosen, in the order the tables list them.
+std::vector<BenchBackend> embreeBackends(const BenchSelection& selection, const BenchBackends& backends) {
+    std::vector<BenchBackend> chosen;
+    const std::pair<BenchRowKind, BenchBackend> embree[] = {
+        {BenchRowKind::Embree, BenchBackend::Embree},
+        {BenchRowKind::EmbreeF64Packets, BenchBackend::EmbreeF64Packets},
+        {BenchRowKind::EmbreeF64Single, BenchBackend::EmbreeF64Single}};
+    for (const auto& [kind, backend] : embree) {
+        if (backends.hasEmbree() && selection.contains(kind)) {
+            chosen.push_back(backend);
         }
-        if (isLectureDemoScene(withSamples(scene, spp))) {
+    }
+    return chosen;
+}
+
+// A file scene's configurations, of those chosen: the GPU in every precision, culled and whole (the
+// textbook formulation is never culled), the hand-written kernel where it applies, the CPU reference
+// and Embree.
+void addFileConfigurations(const BenchOptions& options, const BenchSelection& selection, const BenchBackends& backends,
+                           std::size_t index, const Scene& scene, std::vector<BenchConfiguration>& configurations) {
+    for (const std::uint32_t spp : options.samples) {
+        if (selection.contains(BenchRowKind::GpuF32Naive)) {
+            configurations.push_back({index, BenchBackend::Gpu, Precision::F32Naive, Culling::Off, spp});
+        }
+        for (const Precision precision : {Precision::F32, Precision::F64}) {
+            const bool chosen = precision == Precision::F32
+                                    ? selection.contains(BenchRowKind::GpuF32)
+                                    : selection.contains(BenchRowKind::GpuF64) && backends.hasFloat64();
+            if (chosen) {
+                configurations.push_back({index, BenchBackend::Gpu, precision, Culling::Off, spp});
+                configurations.push_back({index, BenchBackend::Gpu, precision, Culling::On, spp});
+            }
+        }
+        if (selection.contains(BenchRowKind::HandWritten) && isLectureDemoScene(withSamples(scene, spp))) {
             configurations.push_back({index, BenchBackend::GpuHandWritten, Precision::F32, Culling::Off, spp});
         }
-        configurations.push_back({index, BenchBackend::Cpu, Precision::Auto, Culling::Off, spp});
-        if (backends.hasEmbree()) {
-            configurations.push_back({index, BenchBackend::EmbreeSingle, Precision::Auto, Culling::Off, spp});
-            configurations.push_back({index, BenchBackend::EmbreePackets, Precision::Auto, Culling::Off, spp});
+        if (selection.contains(BenchRowKind::Cpu)) {
+            configurations.push_back({index, BenchBackend::Cpu, Precision::Auto, Culling::Off, spp});
+        }
+        for (const BenchBackend embree : embreeBackends(selection, backends)) {
+            configurations.push_back({index, embree, Precision::Auto, Culling::Off, spp});
         }
     }
 }
@@ -137,7 +163,7 @@ double predictFrameSeconds(BenchBackends& backends, const BenchScene& bench, con
 
 // The curve: a random-sphere scene per count, each backend at its natural precision, N ascending;
 // a backend predicted to need more than --max-frame-seconds at some N is left out there.
-void addCurve(const BenchOptions& options, BenchBackends& backends, Bench& bench) {
+void addCurve(const BenchOptions& options, const BenchSelection& selection, BenchBackends& backends, Bench& bench) {
     std::vector<std::uint32_t> counts = options.sphereCounts;
     std::sort(counts.begin(), counts.end());
     counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
@@ -147,10 +173,15 @@ void addCurve(const BenchOptions& options, BenchBackends& backends, Bench& bench
         applyImageOverride(scene, options.image);
         bench.scenes.push_back({"random-spheres", count, std::move(scene), {}});
     }
-    std::vector<BenchBackend> curveBackends = {BenchBackend::Gpu, BenchBackend::Cpu};
-    if (backends.hasEmbree()) {
-        curveBackends.insert(curveBackends.end(), {BenchBackend::EmbreeSingle, BenchBackend::EmbreePackets});
+    std::vector<BenchBackend> curveBackends;
+    if (selection.contains(BenchRowKind::GpuF32)) {
+        curveBackends.push_back(BenchBackend::Gpu);
     }
+    if (selection.contains(BenchRowKind::Cpu)) {
+        curveBackends.push_back(BenchBackend::Cpu);
+    }
+    const std::vector<BenchBackend> embree = embreeBackends(selection, backends);
+    curveBackends.insert(curveBackends.end(), embree.begin(), embree.end());
     for (const BenchBackend backend : curveBackends) {
         for (const std::uint32_t spp : options.samples) {
             std::string skipped;
@@ -182,9 +213,9 @@ void addCurve(const BenchOptions& options, BenchBackends& backends, Bench& bench
     }
 }
 
-// The curve's references: the CPU reference at each sample count, taken from its own row after
+// Every scene's references: the CPU reference at each sample count, taken from its own row after
 // the rounds (it is deterministic), rendered here only where that row is not measured.
-void addCurveReferences(const BenchOptions& options, Bench& bench) {
+void addMissingReferences(const BenchOptions& options, Bench& bench) {
     for (std::size_t index = 0; index < bench.scenes.size(); ++index) {
         BenchScene& scene = bench.scenes[index];
         for (const std::uint32_t spp : options.samples) {
@@ -192,17 +223,17 @@ void addCurveReferences(const BenchOptions& options, Bench& bench) {
                 std::any_of(bench.configurations.begin(), bench.configurations.end(), [&](const auto& c) {
                     return c.scene == index && c.backend == BenchBackend::Cpu && c.samplesPerPixel == spp;
                 });
-            if (!scene.spheres || measured) {
+            if (measured) {
                 continue;
             }
-            std::fprintf(stderr, "bench: reference for %u random spheres (%u spp on the CPU)...\n", *scene.spheres,
-                         spp);
+            const std::string name =
+                scene.spheres ? std::to_string(*scene.spheres) + " random spheres" : printable(scene.name);
+            std::fprintf(stderr, "bench: reference for %s (%u spp on the CPU)...\n", name.c_str(), spp);
             const auto start = std::chrono::steady_clock::now();
             scene.reference.bySamples[spp] = renderOnCpu(withSamples(scene.scene, spp));
             char text[160];
-            std::snprintf(text, sizeof text,
-                          "cpu-reference at %u spheres, %u spp: its one render (the reference) took %.1f s.",
-                          *scene.spheres, spp, millisecondsSince(start) * 1e-3);
+            std::snprintf(text, sizeof text, "cpu-reference on %s, %u spp: its one render (the reference) took %.1f s.",
+                          name.c_str(), spp, millisecondsSince(start) * 1e-3);
             bench.notes.push_back(text);
         }
     }
@@ -228,7 +259,7 @@ std::vector<BenchMeasurement> runRounds(const BenchOptions& options, BenchBacken
     }
     for (std::size_t i = 0; i < bench.configurations.size(); ++i) {
         BenchScene& scene = bench.scenes[bench.configurations[i].scene];
-        if (scene.spheres && bench.configurations[i].backend == BenchBackend::Cpu) {
+        if (bench.configurations[i].backend == BenchBackend::Cpu) {
             CpuRender& reference = scene.reference.bySamples[bench.configurations[i].samplesPerPixel];
             reference.image = measurements[i].image;
             reference.classes = measurements[i].classes;
@@ -255,7 +286,8 @@ nlohmann::json startDocument(const BenchOptions& options) {
                             {"samples", options.samples},
                             {"reference_samples", options.referenceSamples},
                             {"spheres", options.sphereCounts},
-                            {"max_frame_seconds", options.maxFrameSeconds}};
+                            {"max_frame_seconds", options.maxFrameSeconds},
+                            {"backends", options.backends.empty() ? defaultBenchRowNames() : options.backends}};
     document["embree"] = nullptr;
     document["scenes"] = nlohmann::json::array();
     document["notes"] = nlohmann::json::array();
@@ -271,13 +303,15 @@ int runBench(const BenchOptions& options) {
         BenchBackends backends({options.vulkan.validate ? &log : nullptr, options.vulkan.device});
         document["timings_ms"]["startup"] = backends.startupMilliseconds();
         document["device"] = jsonDevice(backends.device());
+        const BenchSelection selection = selectBenchRows(options.backends);
         Bench bench;
         bench.scenes = fileScenes(options);
         for (std::size_t index = 0; index < bench.scenes.size(); ++index) {
-            addFileConfigurations(options, backends, index, bench.scenes[index].scene, bench.configurations);
+            addFileConfigurations(options, selection, backends, index, bench.scenes[index].scene, bench.configurations);
         }
-        addCurve(options, backends, bench);
-        addCurveReferences(options, bench);
+        addConvergedReferences(options, selection, bench);
+        addCurve(options, selection, backends, bench);
+        addMissingReferences(options, bench);
         const std::vector<BenchMeasurement> measurements = runRounds(options, backends, bench);
         const std::vector<BenchRow> rows = benchRows(bench.scenes, bench.configurations, measurements, backends);
         bench.notes.push_back(backends.hasEmbree() ? "Embree: " + backends.embreeVersion() + "."

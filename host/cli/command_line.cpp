@@ -1,5 +1,6 @@
 // The command line, one function per subcommand; the work is in the *_command.cpp files.
 
+#include <algorithm>
 #include <climits>
 #include <cstdint>
 #include <cstdio>
@@ -12,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench/bench_selection.h"
 #include "cli/command_line.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -26,6 +28,7 @@
 #include "io/output_plan.h"
 #include "io/standard_output.h"
 #include "scene/scene.h"
+#include "util/closest_name.h"
 #include "util/printable.h"
 
 namespace {
@@ -321,6 +324,26 @@ void addDiffCommand(CLI::App& app, CommandLine& line) {
     setExample(*command, "hexray diff new.png reference.png --fail 0.01 --failpercent 0.5 --heatmap flip.png");
 }
 
+// --backends: each name one of the bench's rows (bench/bench_selection.h), else refused naming them all.
+CLI::Validator benchRowName() {
+    std::vector<std::string> names;
+    std::string list;
+    for (const BenchRowName& row : benchRowNames()) {
+        names.push_back(row.name);
+        list += (list.empty() ? "" : ",") + row.name;
+    }
+    list = "{" + list + "}";
+    return CLI::Validator(
+        [names, list](const std::string& input) -> std::string {
+            if (std::find(names.begin(), names.end(), input) != names.end()) {
+                return {};
+            }
+            const std::optional<std::string> near = closestName(input, names);
+            return input + " not in " + list + (near ? "; did you mean " + *near + "?" : "");
+        },
+        "");  // the help lists the names, each with its meaning
+}
+
 void addBenchCommand(CLI::App& app, CommandLine& line) {
     BenchOptions& bench = line.bench;
     CLI::App* command = app.add_subcommand(
@@ -343,6 +366,15 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
                      "not measured at that sphere count (its error columns still use a CPU reference render)")
         ->check(FiniteNumberAbove(0.0))
         ->capture_default_str();
+    command
+        ->add_option("--backends", bench.backends,
+                     "The rows to measure, comma-separated: gpu (gpu-f32, gpu-f64, gpu-f32-naive), hand-written, cpu "
+                     "(also the converged reference), embree (the widest packets, shading in float), "
+                     "embree-f64-packets, embree-f64-single, all (default: gpu,hand-written,cpu,embree)")
+        ->check(benchRowName())
+        ->type_name("NAME")
+        ->allow_extra_args(false)
+        ->delimiter(',');
     addImageOptions(*command, bench.image);
     addDeviceOption(*command, bench.vulkan);
     command->add_option("--rounds", bench.rounds, "Interleaved rounds")

@@ -109,6 +109,8 @@ struct BenchOptions {
     double maxFrameSeconds = 5.0;
     ImageOverride image;
     VulkanOptions vulkan;
+    // --backends: the names of the rows to measure (bench/bench_selection.h); empty, the default set.
+    std::vector<std::string> backends;
     unsigned rounds = 5;
     std::vector<std::uint32_t> samples = {1, 4};  // spp of the configurations measured
     std::uint32_t referenceSamples = 64;          // spp of the converged CPU reference

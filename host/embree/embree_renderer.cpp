@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
@@ -10,7 +9,6 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
-#include <thread>
 #include <tuple>
 #include <utility>
 #include <variant>
@@ -19,25 +17,20 @@
 
 #include "camera/camera.h"
 #include "cpu/cpu_shading.h"
+#include "embree/embree_calls.h"
+#include "embree/render_in_bands.h"
 #include "util/milliseconds_since.h"
 
 namespace hexray::inline embree {
 
 namespace {
 
-void check(RTCDevice device, const char* what) {
-    const RTCError error = rtcGetDeviceError(device);
-    if (error != RTC_ERROR_NONE) {
-        throw std::runtime_error(std::string("Embree: ") + what + " failed (RTCError " + std::to_string(error) + ")");
-    }
-}
-
 // The scene as Embree and the shading below see it.
 class Prepared {
 public:
     Prepared(RTCDevice device, const Scene& scene)
         : scene(scene), eye(scene.camera.position), spheres(rtcNewScene(device), &rtcReleaseScene) {
-        check(device, "rtcNewScene");
+        checkEmbree(device, "rtcNewScene");
         for (std::size_t index = 0; index < scene.nodes.size(); ++index) {
             auto& list = std::holds_alternative<Plane>(scene.nodes[index].geometry) ? planeNodes : sphereNodes;
             list.push_back(static_cast<std::uint32_t>(index));
@@ -46,7 +39,7 @@ public:
             attachSpheres(device);
         }
         rtcCommitScene(spheres.get());
-        check(device, "rtcCommitScene");
+        checkEmbree(device, "rtcCommitScene");
     }
 
     const Scene& scene;
@@ -60,10 +53,10 @@ private:
     void attachSpheres(RTCDevice device) {
         const std::unique_ptr<RTCGeometryTy, decltype(&rtcReleaseGeometry)> geometry(
             rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT), &rtcReleaseGeometry);
-        check(device, "rtcNewGeometry");
+        checkEmbree(device, "rtcNewGeometry");
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
             geometry.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), sphereNodes.size()));
-        check(device, "rtcSetNewGeometryBuffer");
+        checkEmbree(device, "rtcSetNewGeometryBuffer");
         for (std::size_t i = 0; i < sphereNodes.size(); ++i) {
             const Sphere& sphere = std::get<Sphere>(scene.nodes[sphereNodes[i]].geometry);
             const glm::vec3 centre(sphere.center - eye);  // subtracted in double, then rounded once
@@ -83,13 +76,6 @@ struct Surface {
     glm::dvec3 outwardNormal;  // plane: +Y
     glm::dvec3 facingNormal;   // turned toward the ray's side
 };
-
-RTCIntersectContext intersectContext(RTCIntersectContextFlags flags) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = flags;
-    return context;
-}
 
 // The nearest hit along the camera ray `direction` (unit, world) from the eye, given the
 // nearest sphere Embree found along it (t, scene node), if any.
@@ -462,24 +448,6 @@ void renderTileRow(const Prepared& prepared, const PixelSheet& sheet, std::uint3
             }
         }
     }
-}
-
-// Calls renderBand(top) for each band of `bandHeight` rows, on `threadCount` threads that take
-// the next band when done: the costly bands are not all one thread's.
-template <class RenderBand>
-void renderInBands(unsigned threadCount, std::uint32_t height, std::uint32_t bandHeight, const RenderBand& renderBand) {
-    const std::uint32_t bands = (height + bandHeight - 1) / bandHeight;
-    std::atomic<std::uint32_t> nextBand{0};
-    const auto work = [&] {
-        for (std::uint32_t band = nextBand++; band < bands; band = nextBand++) {
-            renderBand(band * bandHeight);
-        }
-    };
-    std::vector<std::jthread> workers;
-    for (unsigned worker = 1; worker < std::min<unsigned>(threadCount, std::max(bands, 1u)); ++worker) {
-        workers.emplace_back(work);
-    }
-    work();
 }
 
 }  // namespace

@@ -223,6 +223,80 @@ TEST_F(BenchCliTest, JsonToStandardOutputLeavesTheTablesOnStandardError) {
     EXPECT_EQ(validateJson("out.json").exitCode, 0);
 }
 
+// The (backend, precision used, culling asked) of every row.
+std::multiset<std::string> rowKinds(const Rows& rows) {
+    std::multiset<std::string> kinds;
+    for (std::size_t row = 1; row < rows.size(); ++row) {
+        kinds.insert(field(rows, row, "scene") + " " + field(rows, row, "backend") + " " +
+                     field(rows, row, "precision_used") + " " + field(rows, row, "culling_asked"));
+    }
+    return kinds;
+}
+
+TEST_F(BenchCliTest, BackendsChoosesTheRowsOfEveryScene) {
+    const Rows rows =
+        benchCsv(scene("lecture-demo.json") + " --spheres 2 --max-frame-seconds 1e9 --backends gpu-f32,cpu");
+    SCOPED_TRACE(text_);
+    EXPECT_EQ(rowKinds(rows),
+              (std::multiset<std::string>{"lecture-demo lavapipe f32 off", "lecture-demo lavapipe f32 on",
+                                          "lecture-demo cpu-reference f64 ", "random-spheres lavapipe f32 off",
+                                          "random-spheres cpu-reference f64 "}));
+}
+
+TEST_F(BenchCliTest, BackendsWithoutTheCpuStillJudgesTheImagesButNotTheirSampling) {
+    const RunResult run = hexray("bench " + scene("lecture-demo.json") + kSmallBench +
+                                 " --backends gpu-f32-naive,gpu-f32 --csv b.csv --json b.json");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    text_ = readFile(dir_ / "b.csv");
+    const Rows rows = csvRows(text_);
+    SCOPED_TRACE(text_);
+    EXPECT_EQ(rowKinds(rows),
+              (std::multiset<std::string>{"lecture-demo lavapipe f32-naive off", "lecture-demo lavapipe f32 off",
+                                          "lecture-demo lavapipe f32 on"}));
+    for (std::size_t row = 1; row < rows.size(); ++row) {
+        EXPECT_EQ(field(rows, row, "sampling_rmse_levels"), "");  // no converged reference
+        EXPECT_FALSE(field(rows, row, "precision_rmse_levels").empty());
+        EXPECT_FALSE(field(rows, row, "topology_mismatches").empty());
+    }
+    EXPECT_NE(run.out.find("Sampling error: not measured, as --backends leaves out cpu"), std::string::npos) << run.out;
+    const nlohmann::json document = nlohmann::json::parse(readFile(dir_ / "b.json"));
+    EXPECT_EQ(document["settings"]["backends"], nlohmann::json({"gpu-f32-naive", "gpu-f32"}));
+    EXPECT_EQ(validateJson("b.json").exitCode, 0);
+}
+
+TEST_F(BenchCliTest, TheDefaultBackendsAreRecorded) {
+    const RunResult run = hexray("bench " + scene("lecture-demo.json") + kSmallBench + " --json b.json");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json document = nlohmann::json::parse(readFile(dir_ / "b.json"));
+    EXPECT_EQ(document["settings"]["backends"], nlohmann::json({"gpu", "hand-written", "cpu", "embree"}));
+}
+
+#ifdef HEXRAY_WITH_EMBREE
+// Embree's rows: the yardstick at its best by default, the rows that shade in double on request,
+// each named for how it traces and shades; all agree with the reference on every unambiguous pixel.
+TEST_F(BenchCliTest, BackendsChoosesEmbreesRowsByName) {
+    const Rows rows = benchCsv(scene("lecture-demo.json") + " --backends embree,embree-f64-packets,embree-f64-single");
+    SCOPED_TRACE(text_);
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_TRUE(field(rows, 1, "backend").ends_with("-ray packets (f32 shading)")) << field(rows, 1, "backend");
+    EXPECT_EQ(field(rows, 2, "backend"), "embree 8-ray packets (f64 shading)");
+    EXPECT_EQ(field(rows, 3, "backend"), "embree single rays (f64 shading)");
+    for (std::size_t row = 1; row < rows.size(); ++row) {
+        EXPECT_EQ(field(rows, row, "topology_mismatches"), "0") << field(rows, row, "backend");
+    }
+}
+#endif
+
+TEST_F(BenchCliTest, AnUnknownBackendIsAUsageErrorThatSuggestsTheNearestName) {
+    const RunResult run =
+        hexray("bench " + scene("lecture-demo.json") + kSmallBench + " --backends gpu,embre --csv b.csv");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_NE(run.err.find("--backends: embre not in {gpu,"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("did you mean embree?"), std::string::npos) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_TRUE(createdFiles().empty());
+}
+
 TEST_F(BenchCliTest, AFailedBenchStillWritesItsDocument) {
     writeScene("bad.json", "{\"image\": ");
     const RunResult run = hexray("bench bad.json" + std::string(kSmallBench) + " --json b.json");
