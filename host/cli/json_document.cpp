@@ -1,11 +1,15 @@
 #include "cli/json_document.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "cli/command_support.h"
 #include "cli/commands.h"
+#include "io/output_error.h"
 #include "io/output_file.h"
 #include "util/build_version.h"
 #include "util/milliseconds_since.h"
@@ -87,7 +91,17 @@ int finishJson(const std::string& path, nlohmann::json& document, int code) {
     }
     recordExit(document, code);
     const int written = guarded([&] {
-        writeJson(path, document);
+        try {
+            writeJson(path, document);
+        } catch (const OutputError& error) {
+            // The command checks its outputs before any work: a path it already reported is not
+            // reported again.
+            const std::vector<std::string>& printed = errorsPrinted();
+            if (std::find(printed.begin(), printed.end(), std::string(error.what())) != printed.end()) {
+                return int(kOutputFailed);
+            }
+            throw;
+        }
         return int(kSuccess);
     });
     return written == kSuccess ? code : written;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -240,6 +241,23 @@ TEST_F(JsonCliTest, JsonRefusesToReplaceTheSceneDirectlyOrThroughASymlink) {
         }
     }
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+TEST_F(JsonCliTest, ADocumentPathInAMissingDirectoryIsReportedOnceAndNothingIsWritten) {
+    ASSERT_EQ(hexray("render " + demoScene() + kSmall + " --backend cpu -o image.png").exitCode, 0);
+    const std::vector<std::string> commands = {"render " + demoScene() + kSmall + " --backend cpu -o out.png",
+                                               "compare " + demoScene() + kSmall, "diff image.png image.png",
+                                               "pixel " + demoScene() + " 1 1 --backend cpu"};
+    for (const std::string& command : commands) {
+        const test::RunResult run = hexray(command + " --json missing/doc.json");
+        EXPECT_EQ(run.exitCode, 5) << command << "\n" << run.err;
+        const std::string message = "missing/doc.json: cannot create output file";
+        const std::size_t first = run.err.find(message);
+        EXPECT_NE(first, std::string::npos) << command << "\n" << run.err;
+        EXPECT_EQ(run.err.find(message, first + 1), std::string::npos) << command << " says it twice:\n" << run.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+    EXPECT_FALSE(fs::exists(dir_ / "missing"));
 }
 
 TEST_F(JsonCliTest, ImageAndDocumentCannotBothGoToStandardOutput) {
