@@ -16,16 +16,11 @@
 #include "shader_interface.h"
 #include "util/milliseconds_since.h"
 #include "util/parallel_parts.h"
-#include "unit_roundoff.h"
 
 namespace hexray::inline accel {
 namespace {
 
 using namespace candidates;  // the tunables
-
-double roundoff(FloatWidth width) {
-    return width == FloatWidth::F64 ? FLOAT64_UNIT_ROUNDOFF : FLOAT32_UNIT_ROUNDOFF;
-}
 
 // ---------------------------------------------------------------- the scene, placed
 
@@ -100,7 +95,7 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
 class Reach {
 public:
     Reach(FloatWidth width, Formulation formulation)
-        : unit_(kRoundingUnits * roundoff(width)), textbook_(formulation == Formulation::Textbook) {}
+        : unit_(kRoundingUnits * unitRoundoff(width)), textbook_(formulation == Formulation::Textbook) {}
 
     // To a camera ray: `distance` from the eye; the sphere's centre and the eye are `center`
     // and `eye` large.

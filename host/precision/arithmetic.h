@@ -4,10 +4,17 @@
 
 #include <glm/vec3.hpp>
 
+#include "unit_roundoff.h"
+
 namespace hexray::inline precision {
 
 // The shader's arithmetic for positions and distances (colours are always float).
 enum class FloatWidth { F32, F64 };
+
+// The unit roundoff of a float width (shaders/unit_roundoff.h: the figures C++ and GLSL share).
+constexpr double unitRoundoff(FloatWidth width) {
+    return width == FloatWidth::F64 ? FLOAT64_UNIT_ROUNDOFF : FLOAT32_UNIT_ROUNDOFF;
+}
 
 // Textbook: the formulas as a course writes them (f32-naive). Robust: cancellation-free
 // intersections, hit points on the surface, error-bound shadow offsets; a generated kernel

@@ -4,7 +4,7 @@ namespace hexray::inline precision {
 
 DecisionRoundoff decisionRoundoff(Precision precision) {
     if (precision == Precision::F64) {
-        return {FLOAT64_UNIT_ROUNDOFF, FLOAT32_UNIT_ROUNDOFF};
+        return {unitRoundoff(FloatWidth::F64), unitRoundoff(FloatWidth::F32)};
     }
     return {};
 }

@@ -1,16 +1,17 @@
 #pragma once
 // What the CPU reference's margins are read against when it is compared with a GPU render.
 
+#include "precision/arithmetic.h"
 #include "precision/precision.h"
-#include "unit_roundoff.h"
 
 namespace hexray::inline precision {
 
 // The unit roundoff of the arithmetic a comparison tests, per kind of decision: float32's 2^-24
 // by default; double's 2^-53 for what a float64 shader computes in double.
 struct DecisionRoundoff {
-    double general = FLOAT32_UNIT_ROUNDOFF;
-    double sphereChecker = FLOAT32_UNIT_ROUNDOFF;  // a sphere's checker cell, from its angular texture coordinates
+    double general = unitRoundoff(FloatWidth::F32);
+    double sphereChecker =
+        unitRoundoff(FloatWidth::F32);  // a sphere's checker cell, from its angular texture coordinates
 };
 
 // The unit roundoff the shader makes each kind of decision with in `precision` (never Auto):
