@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(
         Misuse{"CommandMisspelt", "rendr SCENE",
                "unknown command 'rendr'; did you mean render? (hexray --help describes the commands)"},
         Misuse{"CommandUnknown", "frobnicate SCENE",
-               "unknown command 'frobnicate' (the commands are render, merge, compare, diff, bench, pixel, devices, "
+               "unknown command 'frobnicate' (the commands are render, watch, merge, compare, diff, bench, pixel, devices, "
                "cache; hexray --help describes them)"},
         Misuse{"OptionMisspelt", "render SCENE --widht 8",
                "unknown option '--widht' for render; did you mean --width? (hexray render --help describes the "
@@ -116,7 +116,7 @@ INSTANTIATE_TEST_SUITE_P(
         Misuse{"NamedValueMisspelt", "render SCENE --backend gpuu",
                "--backend: gpuu not in {auto,gpu,cpu}; did you mean gpu?"},
         Misuse{"NoCommand", "--validate",
-               "a command is required: render, merge, compare, diff, bench, pixel, devices, cache (hexray --help "
+               "a command is required: render, watch, merge, compare, diff, bench, pixel, devices, cache (hexray --help "
                "describes them)"}),
     [](const auto& info) { return std::string(info.param.name); });
 
