@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <deque>
+#include <filesystem>
 #include <functional>
 #include <future>
 #include <optional>
@@ -29,6 +30,7 @@
 #include "image/image_row_writer.h"
 #include "image/provenance.h"
 #include "io/output_plan.h"
+#include "kernels/shader_compiler.h"
 #include "scene/scene_loader.h"
 #include "util/build_version.h"
 #include "util/printable.h"
@@ -299,6 +301,10 @@ RenderTarget watchTarget(const WatchOptions& options) {
     if (targets.size() != 1 || !targets[0].problem.empty() || options.scenePath == "-") {
         throw SceneError(printable(options.scenePath) + ": watch needs one scene file");
     }
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(options.scenePath, error)) {  // a typo, not a scene to be written
+        throw SceneError(printable(options.scenePath) + ": no such scene file");
+    }
     OutputPlan plan;
     plan.addInput("the scene", targets[0].scenePath);
     plan.addFile("-o", targets[0].outputPath);
@@ -315,7 +321,8 @@ int runWatch(const WatchOptions& options) {
     ValidationLog log;
     const int code = guarded([&] {
         const RenderTarget target = watchTarget(options);
-        WatchEvents events(target.scenePath);  // before any thread starts: it blocks the stop signals
+        WatchEvents events(target.scenePath);       // before any thread starts: it blocks the stop signals
+        const ShaderCompilerWarmUp compilerWarmUp;  // glslang sets itself up while Vulkan starts
         GpuSession gpu(options.vulkan, log);
         SceneWatch watch(options, target, events, gpu);
         return watch.run();
