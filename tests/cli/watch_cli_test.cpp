@@ -194,6 +194,26 @@ TEST_F(WatchCliTest, TheTierUpsImageIsTheBufferedAndTheDataDrivenKernelsImage) {
     EXPECT_EQ(readPng(dir_ / "render.png").bytes, specialised.bytes);
 }
 
+// The stop signals wait for the image being written: the test hook stops watch once a temporary
+// exists (the image's, or the kernel cache's), and SIGTERM arrives then.
+TEST_F(WatchCliTest, ASignalWhileTheImageIsWrittenEndsWithTheImageWholeAndNoTemporaries) {
+    writeScene("scene.json", demoScene());
+    pid_ = start({"watch", "scene.json", "-o", "out.png"}, {"HEXRAY_TEST_STOP_AT_TEMPORARY=file"});
+    ASSERT_GT(pid_, 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid_, &status, WUNTRACED), pid_);
+    ASSERT_TRUE(WIFSTOPPED(status)) << readFile(dir_ / "stderr.txt");
+    ::kill(pid_, SIGTERM);
+    do {  // each later temporary stops it again
+        ::kill(pid_, SIGCONT);
+    } while (::waitpid(pid_, &status, WUNTRACED) == pid_ && WIFSTOPPED(status));
+    pid_ = -1;
+    ASSERT_TRUE(WIFEXITED(status)) << readFile(dir_ / "stderr.txt");
+    EXPECT_EQ(WEXITSTATUS(status), 0) << readFile(dir_ / "stderr.txt");
+    EXPECT_EQ(createdFiles(), std::vector<std::string>{"out.png"});
+    EXPECT_GT(pixel(28, 24).r, 40);
+}
+
 TEST_F(WatchCliTest, UsageMistakesAndOutputsItCannotWriteAreRefused) {
     writeScene("scene.json", demoScene());
     const std::vector<std::pair<std::string, std::string>> refused = {
