@@ -123,6 +123,9 @@ void writeColor(uint index, vec3 color) {
 }
 
 void main() {
+#ifdef HEXRAY_SCENE_VALUES_IN_BUFFER
+    loadSceneValues();  // once: a use of each would be a load in every lane
+#endif
     if (OUTPUT_MODE == OUTPUT_TRACE) {
         traceMain();
         return;

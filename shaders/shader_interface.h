@@ -32,7 +32,8 @@ HEXRAY_CONSTANT uint TILE_BINDING = 10u;    // a tile class's kernel: the tiles 
 HEXRAY_CONSTANT uint CANDIDATE_ENTRY_BINDING = 11u;  // candidate lists: the lists, one after another
 HEXRAY_CONSTANT uint CANDIDATE_SPHERE_BINDING = 12u; // candidate lists: the spheres they name
 HEXRAY_CONSTANT uint CARRY_BINDING = 13u;   // light batches: what a pixel has so far, between dispatches
-HEXRAY_CONSTANT uint BINDING_COUNT = 14u;
+HEXRAY_CONSTANT uint SCENE_VALUE_BINDING = 14u;  // a generated kernel's scene values, when not specialization constants
+HEXRAY_CONSTANT uint BINDING_COUNT = 15u;
 // The candidate bindings are uniform texel buffers (RGBA32UI grids and spheres, R32UI cells and
 // entries): lavapipe reads a texel buffer at a different index in each lane with vector gathers,
 // a storage buffer one lane and one component at a time.

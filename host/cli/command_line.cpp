@@ -65,6 +65,7 @@ struct CommandLine {
     bool quiet = false;
     RenderOptions render;
     std::string renderStrip;
+    WatchOptions watch;
     MergeOptions merge;
     CompareOptions compare;
     DiffOptions diff;
@@ -162,6 +163,31 @@ void addRenderCommand(CLI::App& app, CommandLine& line) {
                      "error): per scene its size, backend, precision, kernel, timings and exit (docs/json-output.md)")
         ->check(NotEmpty());
     setExample(*command, "hexray render scenes/lecture-demo.json -o demo.png --width 1920 --height 1080");
+}
+
+void addWatchCommand(CLI::App& app, CommandLine& line) {
+    WatchOptions& watch = line.watch;
+    CLI::App* command = app.add_subcommand(
+        "watch",
+        "Render a scene on the GPU, then again each time its file is saved, in one process that keeps the "
+        "device and its kernels; until Ctrl-C (exit 0). A scene that fails to load is reported and waited on");
+    command->add_option("scene", watch.scenePath, "Scene file (JSON)")->required();
+    command->add_option("-o,--output", watch.outputPath,
+                        "Output PNG, replaced whole at each render (default: <scene name>.png here; a directory: "
+                        "<scene name>.png in it)");
+    addNamedOption(*command, "--kernel", watch.kernel, kWatchKernelNames,
+                   "tiered: each edit at once with the scene's kernel reading its values from a buffer (an edited "
+                   "value needs no new pipeline), then again (the same image) with its values compiled in once a "
+                   "background thread has built that; buffered, specialised or data-driven: only that kernel");
+    command
+        ->add_option("--frames", watch.frames,
+                     "Stop after writing N images (a tiered edit writes two); default: at SIGINT or SIGTERM")
+        ->check(IntegerBetween<std::uint64_t>(1, UINT64_MAX));
+    addPrecisionOption(*command, watch.precision);
+    addImageOptions(*command, watch.image);
+    addSceneSettingOption(*command, watch.image);
+    addDeviceOption(*command, watch.vulkan);
+    setExample(*command, "hexray watch scenes/lecture-demo.json -o demo.png --frames 2");
 }
 
 void addMergeCommand(CLI::App& app, CommandLine& line) {
@@ -452,6 +478,7 @@ void defineCommandLine(CLI::App& app, CommandLine& line) {
         "Print hexray's version and git revision, the Vulkan loader's version and the device and driver hexray "
         "would use");
     addRenderCommand(app, line);
+    addWatchCommand(app, line);
     addMergeCommand(app, line);
     addCompareCommand(app, line);
     addDiffCommand(app, line);
@@ -482,11 +509,9 @@ void checkCombinations(const CLI::App& app, const CommandLine& line) {
 
 // An image output that would go to a terminal: the message refusing it.
 std::optional<std::string> imageToTerminal(const CommandLine& line) {
-    const std::pair<const char*, const std::string*> images[] = {{"-o", &line.render.outputPath},
-                                                                 {"the output", &line.merge.outputPath},
-                                                                 {"--diff", &line.compare.diffPath},
-                                                                 {"--mask", &line.compare.maskPath},
-                                                                 {"--heatmap", &line.diff.heatmapPath}};
+    const std::pair<const char*, const std::string*> images[] = {
+        {"-o", &line.render.outputPath},    {"-o", &line.watch.outputPath},     {"the output", &line.merge.outputPath},
+        {"--diff", &line.compare.diffPath}, {"--mask", &line.compare.maskPath}, {"--heatmap", &line.diff.heatmapPath}};
     for (const auto& [option, path] : images) {
         if (!path->empty() && writesToTerminal(*path)) {
             const std::string file = option[0] == '-' ? std::string(option) + " FILE" : "a file name";
@@ -532,6 +557,10 @@ int runPixelCommand(CommandLine& line) {
 int runCommand(const CLI::App& app, CommandLine& line) {
     if (app.got_subcommand("render")) {
         return runRenderCommand(line);
+    }
+    if (app.got_subcommand("watch")) {
+        line.watch.vulkan.validate = line.validate;
+        return runWatch(line.watch);
     }
     if (app.got_subcommand("merge")) {
         return runMerge(line.merge);

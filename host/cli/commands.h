@@ -28,7 +28,7 @@ enum ExitCode : int {
 };
 
 // The subcommands, as messages list them.
-inline constexpr const char* kCommandNames = "render, merge, compare, diff, bench, pixel, devices, cache";
+inline constexpr const char* kCommandNames = "render, watch, merge, compare, diff, bench, pixel, devices, cache";
 
 // Auto: the GPU, or the CPU reference (with a note) when the GPU path cannot render.
 enum class Backend { Auto, Gpu, Cpu };
@@ -60,6 +60,22 @@ struct RenderOptions {
     std::string aovDirectory;    // empty: no AOVs (see image/aov.h)
     std::optional<Strip> strip;  // only these rows, recorded in the file for `hexray merge`
     std::string jsonPath;        // empty: no --json document
+};
+
+// Which kernel `hexray watch` renders an edit with. Tiered: at once with the scene's generated kernel
+// reading its values from a buffer (Buffered: a value edit needs no new pipeline), then with the
+// specialised one (values compiled in, as `render` uses) once a background thread has built it.
+// Or only one of them, or the data-driven kernel (the same program for every scene).
+enum class WatchKernel { Tiered, Buffered, Specialised, DataDriven };
+
+struct WatchOptions {
+    std::string scenePath;
+    std::string outputPath;  // empty: <scene name>.png here; else a PNG file, or a directory to put it in
+    ImageOverride image;
+    VulkanOptions vulkan;
+    Precision precision = Precision::Auto;
+    WatchKernel kernel = WatchKernel::Tiered;
+    std::uint64_t frames = 0;  // stop after writing this many images; 0: at SIGINT or SIGTERM
 };
 
 struct MergeOptions {
@@ -143,6 +159,9 @@ int runDevices(const VulkanOptions& options);
 int runBench(const BenchOptions& options);
 int runPixel(const PixelOptions& options);
 int runMerge(const MergeOptions& options);
+// `hexray watch`: renders the scene, then again each time its file is saved, until SIGINT or
+// SIGTERM (exit 0) or --frames images; a scene that fails to load is reported and waited on.
+int runWatch(const WatchOptions& options);
 // `hexray diff TEST REF`: exit 0 pass (warnings printed), 1 fail, 2 unreadable, 9 sizes differ.
 int runDiff(const DiffOptions& options);
 // `hexray cache`: the kernel cache's directory, entries, size and bound; or, with --clear, empties it.

@@ -23,6 +23,10 @@ using NameTable = std::vector<std::pair<std::string, Enum>>;
 inline const NameTable<Backend> kBackendNames{{"auto", Backend::Auto}, {"gpu", Backend::Gpu}, {"cpu", Backend::Cpu}};
 inline const NameTable<PixelBackend> kPixelBackendNames{
     {"both", PixelBackend::Both}, {"gpu", PixelBackend::Gpu}, {"cpu", PixelBackend::Cpu}};
+inline const NameTable<WatchKernel> kWatchKernelNames{{"tiered", WatchKernel::Tiered},
+                                                      {"buffered", WatchKernel::Buffered},
+                                                      {"specialised", WatchKernel::Specialised},
+                                                      {"data-driven", WatchKernel::DataDriven}};
 inline const NameTable<Culling> kCullingNames{{"auto", Culling::Auto}, {"on", Culling::On}, {"off", Culling::Off}};
 
 // The precisions, in the order the help lists them (their names are precision.h's).

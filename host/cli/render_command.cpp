@@ -15,6 +15,7 @@
 #include "cli/progress.h"
 #include "cli/quiet.h"
 #include "cli/render_record.h"
+#include "cli/render_summary.h"
 #include "cli/render_targets.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_renderer.h"
@@ -96,38 +97,6 @@ struct SceneRender {
     Progress progress() const { return Progress("rendering " + target.scenePath, rows.count); }
 };
 
-// How the data-driven kernel's work is split to stay within the device's loop limit (loop_budget.h).
-std::string describeBatches(const LightBatches& batches) {
-    if (!batches.splits()) {
-        return "";
-    }
-    if (batches.lightEnds.size() == 1) {
-        return ", " + std::to_string(batches.samplesPerDispatch) + " samples a dispatch (the device's loop limit)";
-    }
-    return ", " + std::to_string(batches.lightEnds.size()) + " batches of lights a sample (the device's loop limit)";
-}
-
-// "generated for the scene, written in 0.12 ms, glslang 9.8 ms", for the summary line.
-std::string describeKernel(const RenderPlan& plan, const KernelBuild& build) {
-    if (!plan.kernel.code) {
-        return plan.kernel.name + " (prebuilt)" + describeBatches(plan.lightBatches);
-    }
-    const std::size_t classes = plan.tileClasses.kernels.size();
-    const std::string name =
-        classes ? "generated for each of " + std::to_string(classes) + " tile classes" : plan.kernel.name;
-    char text[160];
-    std::snprintf(text, sizeof text, "%s, written in %.2f ms, ", name.c_str(), build.generateMilliseconds);
-    std::string description = text;
-    if (build.fromDiskCache) {
-        std::snprintf(text, sizeof text, "SPIR-V from the kernel cache (read and checked in %.1f ms)",
-                      build.loadMilliseconds);
-    } else {
-        std::snprintf(text, sizeof text, "glslang %.1f ms", build.compileMilliseconds);
-    }
-    description += text;
-    return description;
-}
-
 // The image's rows from the device into `writer`: 8-bit as the shader encodes them, or linear
 // for OpenEXR.
 GpuRenderResult renderImageOnGpu(const SceneRender& job, GpuSession& gpu, const RenderPlan& plan,
@@ -184,22 +153,8 @@ std::string renderOnGpu(const SceneRender& job, GpuSession& gpu, std::optional<I
                 aovs->writeRows({band.image.height, band.depth, band.normals, band.classes, {}});
             });
     }
-    record.gpu = GpuSceneRecord{.precision = plan.precision,
-                                .kernelName = plan.kernel.name,
-                                .generatedKernel = plan.kernel.code != nullptr,
-                                .tileClasses = plan.tileClasses.kernels.size(),
-                                .candidateLists = result.usedCandidateLists,
-                                .warnings = plan.warnings,
-                                .planMilliseconds = planMilliseconds,
-                                .timing = result.timing};
-    char how[512];
-    std::snprintf(how, sizeof how,
-                  "gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's "
-                  "compile",
-                  precision.c_str(), device.c_str(), result.timing.renderMilliseconds,
-                  result.timing.fromTimestamps ? "" : " (wall clock)",
-                  describeKernel(plan, result.timing.kernel).c_str(), result.timing.firstDispatchMilliseconds);
-    return how;
+    record.gpu = gpuSceneRecord(plan, result, planMilliseconds);
+    return describeGpuRender(plan, result, device);
 }
 
 // Rows per band of the CPU reference: within the memory budget; on a terminal, also small enough
@@ -300,32 +255,6 @@ std::string renderImage(const SceneRender& job, GpuSession& gpu, Fallback& fallb
     return renderOnCpu(job, writer, aovs, record);
 }
 
-// "; 312.4 ms in all (start-up 150.2, load 1.9, kernel 84.7, render 20.1, write 9.8, other 45.7)":
-// where the scene's wall time went, for the summary line. Kernel: everything between the loaded
-// scene and the render (the plan, writing the kernel, glslang or the kernel cache, the driver's
-// pipelines, the scene's upload and the warm-up dispatch). `startup`: Vulkan's, when this scene
-// started it.
-std::string describeTimeParts(const SceneRecord& record, std::optional<double> startup, double wallMilliseconds) {
-    std::string parts;
-    double accounted = 0;
-    const auto add = [&](const char* name, double milliseconds) {
-        parts += formatted("%s%s %.1f", parts.empty() ? "" : ", ", name, milliseconds);
-        accounted += milliseconds;
-    };
-    if (startup) {
-        add("start-up", *startup);
-    }
-    add("load", record.loadMilliseconds.value_or(0));
-    if (record.gpu) {
-        const GpuSceneRecord& gpu = *record.gpu;
-        add("kernel", gpu.planMilliseconds + gpu.timing.uploadMilliseconds + gpu.timing.firstDispatchMilliseconds);
-    }
-    add("render", record.gpu ? record.gpu->timing.renderMilliseconds : record.cpu ? record.cpu->renderMilliseconds : 0);
-    add("write", record.writeMilliseconds.value_or(0));
-    add("other", std::max(0.0, wallMilliseconds - accounted));
-    return formatted("; %.1f ms in all (%s)", wallMilliseconds, parts.c_str());
-}
-
 int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSession& gpu, Fallback& fallback,
                 SceneRecord& record) {
     if (!target.problem.empty()) {
@@ -348,12 +277,9 @@ int renderScene(const RenderOptions& options, const RenderTarget& target, GpuSes
     if (options.strip) {
         size = "rows " + std::to_string(job.rows.first) + "-" + std::to_string(job.rows.end() - 1) + " of " + size;
     }
-    if (!quiet()) {
-        std::printf("wrote %s (%s) — %s%s\n", displayName(target.outputPath).c_str(), size.c_str(), how.c_str(),
-                    describeTimeParts(record, startedVulkan ? gpu.startupMilliseconds() : std::nullopt,
-                                      millisecondsSince(loadStart))
-                        .c_str());
-    }
+    printWrote(target.outputPath, size, how,
+               describeTimeParts(record, startedVulkan ? gpu.startupMilliseconds() : std::nullopt,
+                                 millisecondsSince(loadStart)));
     if (aovs) {
         // Only now, so a failed render leaves the directory's earlier AOVs as they were.
         const std::size_t files = aovs->commit().size();

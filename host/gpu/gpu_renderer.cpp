@@ -103,6 +103,18 @@ struct PackedScene {
     // A generated kernel's specialization constants: their values, and each component's size.
     std::vector<std::byte> constants;
     std::vector<std::uint32_t> constantSizes;
+    bool valuesInBuffer = false;  // the kernel reads `constants` from a buffer instead
+
+    // What the pipeline is specialised with, and what the buffer of values holds: one or the other.
+    std::span<const std::byte> specValues() const {
+        return valuesInBuffer ? std::span<const std::byte>() : std::span(constants);
+    }
+    std::span<const std::uint32_t> specSizes() const {
+        return valuesInBuffer ? std::span<const std::uint32_t>() : std::span(constantSizes);
+    }
+    std::span<const std::byte> bufferedValues() const {
+        return valuesInBuffer ? std::span(constants) : std::span<const std::byte>();
+    }
 };
 
 template <typename T>
@@ -127,6 +139,7 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
     if (plan.kernel.code) {
         const std::vector<SceneConstant> constants = sceneConstants(*plan.kernel.code);
         bytes.constants = sceneConstantValues(constants, packed);
+        bytes.valuesInBuffer = plan.kernel.code->valuesInBuffer;
         for (const SceneConstant& constant : constants) {
             const std::uint32_t size = constant.real ? sizeof(Real) : sizeof(float);
             bytes.constantSizes.insert(bytes.constantSizes.end(), constant.components, size);
@@ -557,7 +570,7 @@ BandShape bandShape(const Scene& scene, GpuOutput output, bool tracing, bool lig
 // A render's buffers with its descriptor set, command buffer and fence: created together,
 // destroyed together, or after a hang left together to the device (abandon(), LeakIfAbandoned).
 struct BandBuffers {
-    HostVisibleBuffer frame, nodes, lights, pixels, classes, encoded, aov, trace, tiles, carry;
+    HostVisibleBuffer frame, nodes, lights, pixels, classes, encoded, aov, trace, tiles, carry, sceneValues;
     CandidateBuffers candidates;
     vk::raii::DescriptorPool pool = nullptr;
     vk::raii::DescriptorSets sets = nullptr;
@@ -566,8 +579,8 @@ struct BandBuffers {
 
     // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
     std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> byBinding() {
-        return {&frame,  &nodes, &lights, &pixels, &classes, &encoded, nullptr,
-                nullptr, &aov,   &trace,  &tiles,  nullptr,  nullptr,  &carry};
+        return {&frame, &nodes, &lights, &pixels, &classes, &encoded, nullptr,     nullptr,
+                &aov,   &trace, &tiles,  nullptr, nullptr,  &carry,   &sceneValues};
     }
     void abandon() {
         for (HostVisibleBuffer* buffer : byBinding()) {
@@ -663,6 +676,7 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
                         HostVisibleBuffer(device, physicalDevice, traceRequest.size(), storage),
                         HostVisibleBuffer(device, physicalDevice, shape.tiles * sizeof(glm::uvec2), storage),
                         output(shape.batched, sizeof(gpu::GpuPixelCarry)),
+                        HostVisibleBuffer(device, physicalDevice, packed.bufferedValues().size(), storage),
                         holdingScene(scene, plan, [&] {
                             return CandidateBuffers(device, physicalDevice, plan.candidates.get(),
                                                     packed.candidateSpheres);
@@ -671,6 +685,7 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
     buffers.frame.upload(std::span(packed.frame));
     buffers.nodes.upload(std::span(packed.nodes));
     buffers.lights.upload(std::span(packed.lights));
+    buffers.sceneValues.upload(packed.bufferedValues());
     bindBandBuffers(buffers, device, commandPool, setLayout, uniformScene);
     return buffers;
 }
@@ -752,7 +767,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
         classification ? std::span<const Kernel>(plan.tileClasses.kernels) : std::span<const Kernel>(&plan.kernel, 1);
     const std::uint32_t lightCount = std::uint32_t(scene.lights.size());
     const BandWork work{
-        pipelinesFor(kernels, plan, specialization, packed.constants, packed.constantSizes, result.timing.kernel),
+        pipelinesFor(kernels, plan, specialization, packed.specValues(), packed.specSizes(), result.timing.kernel),
         classification, plan.lightBatches.work(scene.image.samplesPerPixel, lightCount), scene.image.width};
     const vk::DeviceSize bandBytes =
         std::min<vk::DeviceSize>(context_.physicalDevice().getProperties().limits.maxStorageBufferRange, maxBandBytes_);

@@ -273,7 +273,8 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         }
     }
     if (plan.layout == SceneLayout::Uniform) {
-        const SceneCode code = sceneCodeFor(scene, plan);
+        SceneCode code = sceneCodeFor(scene, plan);
+        code.valuesInBuffer = request.valuesInBuffer;
         plan.kernel = Kernel{"generated for the scene", std::make_shared<const SceneCode>(code), {}};
         if (cullingPays(scene, plan, request.culling)) {
             plan.tileClasses = tileClassesFor(scene, code);

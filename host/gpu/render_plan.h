@@ -56,6 +56,9 @@ struct PlanRequest {
     // (loop_budget.h). 0: the device's, kLavapipeLoopPasses on lavapipe and no limit elsewhere. A
     // smaller one splits renders into light batches on any device (tests force them so).
     std::uint64_t loopPassLimit = 0;
+    // A generated kernel reads the scene's values from a buffer rather than having them compiled in
+    // (SceneCode::valuesInBuffer): its pipeline serves every scene of the same structure.
+    bool valuesInBuffer = false;
 };
 
 struct TileClassification;

@@ -142,6 +142,10 @@ private:
 
     // One specialization constant per component, and the vector of them.
     void constants() {
+        if (code_.valuesInBuffer) {
+            bufferedConstants();
+            return;
+        }
         std::uint32_t id = gpu::FIRST_SCENE_CONSTANT_ID;
         for (const SceneConstant& constant : sceneConstants(code_)) {
             const char* scalar = constant.real ? "real" : "float";
@@ -163,6 +167,41 @@ private:
             out_ << "#define " << constant.name << " " << vector << "(" << parts << ")\n";
         }
         out_ << "#define SCENE_BACKGROUND BACKGROUND_COLOR\n\n";
+    }
+
+    // The same names as constants() declares, as variables that main() loads once from the storage
+    // buffer of the scene's values: 32-bit words packed as the specialization data is (a double in two).
+    void bufferedConstants() {
+        const std::vector<SceneConstant> list = sceneConstants(code_);
+        std::uint32_t words = 0;
+        for (const SceneConstant& constant : list) {
+            words += constant.components * (constant.real && code_.width == FloatWidth::F64 ? 2 : 1);
+        }
+        out_ << "#define HEXRAY_SCENE_VALUES_IN_BUFFER\n"
+             << "layout(std430, set = 0, binding = " << gpu::SCENE_VALUE_BINDING
+             << ") readonly buffer SceneValues {\n    uint sceneValueWords[" << std::max(1u, words) << "];\n};\n";
+        std::string loads;
+        std::uint32_t k = 0;
+        for (const SceneConstant& constant : list) {
+            const bool f64 = constant.real && code_.width == FloatWidth::F64;
+            std::string parts;
+            for (std::uint32_t c = 0; c < constant.components; ++c, k += f64 ? 2 : 1) {
+                const std::string part =
+                    constant.components == 1 ? constant.name : constant.name + "_" + std::to_string(c);
+                const std::string word = "sceneValueWords[" + std::to_string(k) + "]";
+                const std::string next = "sceneValueWords[" + std::to_string(k + 1) + "]";
+                out_ << (constant.real ? "real " : "float ") << part << ";\n";
+                loads += "    " + part + " = " +
+                         (f64 ? "packDouble2x32(uvec2(" + word + ", " + next + "))" : "uintBitsToFloat(" + word + ")") +
+                         ";\n";
+                parts += (c ? ", " : "") + part;
+            }
+            if (constant.components > 1) {
+                const std::string vector = "vec" + std::to_string(constant.components) + (constant.real ? "r" : "");
+                out_ << "#define " << constant.name << " " << vector << "(" << parts << ")\n";
+            }
+        }
+        out_ << "void loadSceneValues() {\n" << loads << "}\n#define SCENE_BACKGROUND BACKGROUND_COLOR\n\n";
     }
 
     // The distance along a camera ray to node i, as an expression.
@@ -192,7 +231,7 @@ private:
             if (!code_.nodes[i].cameraTested) {
                 continue;
             }
-            const std::string t = "t" + std::to_string(i);
+            const std::string t = std::string("t").append(std::to_string(i));
             out_ << "    real " << t << " = " << cameraDistance(i) << ";\n"
                  << "    hit = " << call("nearer", "hit", t, u(i)) << ";\n";
         }

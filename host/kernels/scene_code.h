@@ -59,6 +59,10 @@ struct SceneCode {
     Formulation formulation = Formulation::Robust;
     bool eyeAtOrigin = true;  // camera-relative placement: camera rays start at exactly 0
     bool tileList = false;    // a tile class's kernel: it renders the tiles listed for it
+    // The scene's values read from a storage buffer (SCENE_VALUE_BINDING, the same bytes in the same
+    // order) instead of specialization constants: a little slower to run, but one pipeline serves
+    // every scene of this structure, so an edited value renders without a new one (`hexray watch`).
+    bool valuesInBuffer = false;
 };
 
 }  // namespace hexray::kernels

@@ -259,7 +259,10 @@ void VulkanContext::submitAndWait(const vk::raii::CommandBuffer& commands, const
                                   std::chrono::nanoseconds timeout) const {
     vk::Result result;
     try {
-        queue_.submit(vk::SubmitInfo({}, {}, *commands), *fence);
+        {
+            const std::lock_guard lock(queueMutex_);
+            queue_.submit(vk::SubmitInfo({}, {}, *commands), *fence);
+        }
         // An injected hang does not wait, so the abandoned work is still running, as a real
         // hang's would be.
         const bool hang = injected(InjectedFault::DeviceHang);

@@ -90,7 +90,8 @@ public:
     VulkanContext(const VulkanContext&) = delete;
     VulkanContext& operator=(const VulkanContext&) = delete;
 
-    // Submits `commands` and waits for `fence` at most `timeout`. Throws VulkanError:
+    // Submits `commands` and waits for `fence` at most `timeout`; safe to call from several threads
+    // (each with its own command buffer and fence: `hexray watch` renders on two). Throws VulkanError:
     // DeviceLost when the device is lost, or when it does not finish in time, in which case
     // the device is abandoned (never destroyed: vkDestroyDevice would wait for the hung work).
     void submitAndWait(const vk::raii::CommandBuffer& commands, const vk::raii::Fence& fence,
@@ -119,7 +120,8 @@ private:
     std::uint32_t queueFamily_ = 0;
     vk::raii::Device device_;
     vk::raii::Queue queue_;
-    mutable bool abandoned_ = false;  // the device hung: leak it and the instance at teardown
+    mutable std::mutex queueMutex_;                // vkQueueSubmit needs the queue externally synchronized
+    mutable std::atomic<bool> abandoned_ = false;  // the device hung: leak it and the instance at teardown
 };
 
 // "discrete GPU", "integrated GPU", "virtual GPU", "CPU" or "other".

@@ -86,7 +86,8 @@ INSTANTIATE_TEST_SUITE_P(
         Misuse{"CommandMisspelt", "rendr SCENE",
                "unknown command 'rendr'; did you mean render? (hexray --help describes the commands)"},
         Misuse{"CommandUnknown", "frobnicate SCENE",
-               "unknown command 'frobnicate' (the commands are render, merge, compare, diff, bench, pixel, devices, "
+               "unknown command 'frobnicate' (the commands are render, watch, merge, compare, diff, bench, pixel, "
+               "devices, "
                "cache; hexray --help describes them)"},
         Misuse{"OptionMisspelt", "render SCENE --widht 8",
                "unknown option '--widht' for render; did you mean --width? (hexray render --help describes the "
@@ -115,9 +116,10 @@ INSTANTIATE_TEST_SUITE_P(
                "--precision and --all cannot be given together"},
         Misuse{"NamedValueMisspelt", "render SCENE --backend gpuu",
                "--backend: gpuu not in {auto,gpu,cpu}; did you mean gpu?"},
-        Misuse{"NoCommand", "--validate",
-               "a command is required: render, merge, compare, diff, bench, pixel, devices, cache (hexray --help "
-               "describes them)"}),
+        Misuse{
+            "NoCommand", "--validate",
+            "a command is required: render, watch, merge, compare, diff, bench, pixel, devices, cache (hexray --help "
+            "describes them)"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(CliTest, QuietLeavesNoProgressAndNoSummaryButTheImagesAndTheErrors) {

@@ -40,16 +40,17 @@ TEST_F(CliTest, AnUnknownCommandIsNamedWithTheKnownOnes) {
         const RunResult run = hexray(line);
         EXPECT_EQ(run.exitCode, 2) << line;
         EXPECT_NE(
-            run.err.find("hexray: error: unknown command 'frobnicate' (the commands are render, merge, compare, diff, "
-                         "bench, pixel, devices"),
+            run.err.find(
+                "hexray: error: unknown command 'frobnicate' (the commands are render, watch, merge, compare, diff, "
+                "bench, pixel, devices"),
             std::string::npos)
             << run.err;
     }
     const RunResult none = hexray("--validate");
     EXPECT_EQ(none.exitCode, 2);
-    EXPECT_NE(
-        none.err.find("hexray: error: a command is required: render, merge, compare, diff, bench, pixel, devices"),
-        std::string::npos)
+    EXPECT_NE(none.err.find(
+                  "hexray: error: a command is required: render, watch, merge, compare, diff, bench, pixel, devices"),
+              std::string::npos)
         << none.err;
     const RunResult noScene = hexray("render");
     EXPECT_EQ(noScene.exitCode, 2);
