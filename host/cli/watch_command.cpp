@@ -1,10 +1,11 @@
 // `hexray watch`: one process that keeps the device, its pipelines and its caches, and renders the
-// scene again each time its file is saved. A scene's generated kernel needs glslang and a pipeline
-// of its own (the driver's compile) for every edit, its values being specialization constants;
-// the data-driven kernel reads the scene from buffers and its pipeline is built once. So an edit
-// renders at once with the data-driven kernel, and the generated one is built and rendered on a
-// background thread, its image (the same) written when it is ready and no newer edit superseded
-// it: the way a JIT tiers up. Only the main thread writes files and prints.
+// scene again each time its file is saved. A scene's generated kernel with its values as
+// specialization constants needs a pipeline of its own (the driver's compile) for every edit; the
+// same kernel reading its values from a buffer needs one per structure only. So an edit renders at
+// once with the buffered kernel, and the specialised one is built and rendered on a background
+// thread, its image (the same) written when it is ready and no newer edit superseded it: the way
+// a JIT tiers up. (The data-driven kernel needs no new pipeline at all, but renders a small scene
+// far slower on lavapipe.) Only the main thread writes files and prints.
 
 #include <algorithm>
 #include <chrono>
