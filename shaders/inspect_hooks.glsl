@@ -17,7 +17,7 @@ layout(std430, set = 0, binding = AOV_BINDING) writeonly buffer AovBlock {
 
 struct TraceHeader {
     uvec4 request;     // .xy pixel, .z sample (written by the host)
-    uvec4 result;      // .x written, .y hit node, .z class flags
+    uvec4 result;      // .x written, .y hit node, .z class flags, .w in doubt (f32-certified)
     vec4r rayOrigin;
     vec4r rayDirection;
     vec4r hitPosition;  // .w t

@@ -30,6 +30,14 @@
 #define SCENE_BACKGROUND frame.background.rgb
 #endif
 
+// Whether a decision of the pixel is in doubt (certified.glsl): the host then renders it again in
+// f64. A pixel says so in its alpha (0 for 1), a trace in its result's .w.
+#ifdef HEXRAY_CERTIFIED
+#define PIXEL_IN_DOUBT pixelInDoubt
+#else
+#define PIXEL_IN_DOUBT false
+#endif
+
 Hit findNearestHit(Ray ray);
 // The colour of a hit and its pixel-class flags (ODD_CHECKER_BIT, a bit per lit light).
 vec3 shade(Ray ray, Hit hit, out uint flags);
@@ -88,6 +96,7 @@ void traceMain() {
     }
     traceActive = false;
     trace.header.pixelColor = vec4(sampleAverage(sum), 1.0);
+    trace.header.result.w = PIXEL_IN_DOUBT ? 1u : 0u;
     trace.header.result.x = 1u;
 }
 
@@ -116,10 +125,19 @@ void writeClass(uint index, uint node, uint flags, Ray firstRay, Hit firstHit) {
 
 void writeColor(uint index, vec3 color) {
     if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
-        pixels[index] = vec4(color, 1.0);
+        pixels[index] = vec4(color, PIXEL_IN_DOUBT ? 0.0 : 1.0);
     } else {
-        encodedPixels[index] = encode8(color);
+        encodedPixels[index] = encode8(color) & (PIXEL_IN_DOUBT ? 0x00ffffffu : 0xffffffffu);
     }
+}
+
+// Where the pixel's results go: its place in the band, or in the list of pixels it came from.
+uint outputIndex(uvec2 pixel) {
+#ifdef HEXRAY_PIXEL_LIST
+    return listPlace();
+#else
+    return pixel.y * frame.imageSize.x + pixel.x;
+#endif
 }
 
 void main() {
@@ -134,7 +152,7 @@ void main() {
     if (pixel.x >= frame.imageSize.x || pixel.y >= band.rowCount) {
         return;
     }
-    uint index = pixel.y * frame.imageSize.x + pixel.x;
+    uint index = outputIndex(pixel);
     // The pixel is classified by its first sample (as the CPU reference does).
     uint node = NO_NODE;
     uint flags = 0u;

@@ -39,8 +39,22 @@ layout(push_constant) uniform BandBlock {
 } band;
 
 // The pixel of the band this invocation renders: one workgroup per WORKGROUP_SIZE^2 tile, all the
-// band's tiles in a grid, or (a tile class's kernel, HEXRAY_TILE_LIST) the class's tiles, listed.
-#ifdef HEXRAY_TILE_LIST
+// band's tiles in a grid, or (a tile class's kernel, HEXRAY_TILE_LIST) the class's tiles, listed;
+// or (f32-certified's f64 pass, HEXRAY_PIXEL_LIST) the pixels listed, one per invocation, in rows
+// of the whole image (padding lies past its width), each written at its place in the list.
+#if defined(HEXRAY_PIXEL_LIST)
+layout(std430, set = 0, binding = TILE_BINDING) readonly buffer PixelListBlock {
+    uvec2 listedPixels[];
+};
+
+uint listPlace() {
+    return gl_WorkGroupID.x * (WORKGROUP_SIZE * WORKGROUP_SIZE) + gl_LocalInvocationIndex;
+}
+
+uvec2 bandPixel() {
+    return listedPixels[listPlace()];
+}
+#elif defined(HEXRAY_TILE_LIST)
 layout(std430, set = 0, binding = TILE_BINDING) readonly buffer TileBlock {
     uvec2 tiles[];  // (column, row) of tiles in the band
 };

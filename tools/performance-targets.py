@@ -41,6 +41,25 @@ def scene_targets(rows, scene, width, spp="1"):
     return lines
 
 
+def certified_targets(rows, scene, width):
+    """f32-certified against today's f32 in the same run: at least 0.9x its speed, every spp and culling."""
+    lines = []
+    for spp in sorted({row["spp"] for row in rows if row["scene"] == scene and row["width"] == width}, key=int):
+        for culling in ("off", "on"):
+            by_precision = {row["precision_used"]: row
+                            for row in rows_where(rows, scene=scene, width=width, spp=spp, backend="lavapipe",
+                                                  culling_asked=culling)}
+            if "f32" in by_precision and "f32-certified" in by_precision:
+                f32, certified = by_precision["f32"], by_precision["f32-certified"]
+                ratio = mpix(certified) / mpix(f32)
+                lines.append((f"{scene}: f32-certified >= 0.9x f32, {spp} spp, culling {culling}",
+                              f"{mpix(certified):.1f} / {mpix(f32):.1f} = {ratio:.2f} "
+                              f"(f64 pass: {100 * float(certified['f64_pass_pixel_share']):.2f} % of pixels, "
+                              f"{100 * float(certified['f64_pass_vector_share']):.2f} % of vectors)",
+                              ratio >= 0.9))
+    return lines
+
+
 def curve_targets(rows):
     lines = []
     curve = [row for row in rows if row["spheres"] and row["spp"] == "1"]
@@ -79,6 +98,7 @@ def main(path):
     lines = []
     for scene, width in sorted({(row["scene"], row["width"]) for row in rows if not row["spheres"]}):
         lines += scene_targets(rows, scene, width)
+        lines += certified_targets(rows, scene, width)
     lines += curve_targets(rows)
     print("| target | figure (this run) | met |")
     print("|---|---|:-:|")

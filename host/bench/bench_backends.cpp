@@ -153,6 +153,7 @@ void BenchBackends::measureGpu(const Scene& scene, const BenchConfiguration& con
     measurement.precision = plan.precision;
     measurement.kernel = kernelOf(plan, handWritten);
     measurement.culled = plan.tileClasses.classification != nullptr;
+    measurement.fallback = render.timing.fallback;
     if (withClasses && !handWritten) {
         measurement.classes = gpu_.render(scene, plan, GpuOutput::LinearAndClasses).classes;
     }

@@ -72,6 +72,7 @@ struct BenchMeasurement {
     Precision precision = Precision::Auto;   // GPU: the plan's
     BenchKernel kernel = BenchKernel::None;  // GPU: the kernel the plan chose
     bool culled = false;                     // GPU: rendered by tile classes (culling applied)
+    CertifiedFallback fallback;              // GPU f32-certified: the last round's pixels rendered again in f64
 };
 
 class BenchBackends {

@@ -85,6 +85,8 @@ std::vector<Column> columns(const BenchBackends& backends) {
         {"shadow_rays_per_pixel", [](S, R r) { return number(optionalField(r.work, &WorkPerPixel::shadowRays)); }},
         {"shadow_tests_per_pixel", [](S, R r) { return number(optionalField(r.work, &WorkPerPixel::shadowTests)); }},
         {"sampling_rmse_levels", [](S, R r) { return number(optionalField(r.samplingError, &ErrorMetrics::rmse)); }},
+        {"f64_pass_pixel_share", [](S, R r) { return number(r.fallbackPixelShare); }},
+        {"f64_pass_vector_share", [](S, R r) { return number(r.fallbackVectorShare); }},
         {"precision_rmse_levels", [](S, R r) { return number(r.precisionError.rmse); }},
         {"precision_flip_mean", [](S, R r) { return number(r.flipMean); }},
         {"precision_max_abs_levels", [](S, R r) { return number(r.precisionError.maxAbs); }},

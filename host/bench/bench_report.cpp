@@ -29,6 +29,11 @@ void describeConfiguration(const BenchConfiguration& configuration, const BenchM
             row.precision = measurement.precision;
             row.cullingAsked = configuration.culling == Culling::On;
             row.cullingUsed = measurement.culled;
+            if (measurement.precision == Precision::F32Certified && measurement.fallback.totalVectors > 0) {
+                const CertifiedFallback& fallback = measurement.fallback;
+                row.fallbackPixelShare = double(fallback.pixels) / double(fallback.totalPixels);
+                row.fallbackVectorShare = double(fallback.vectors) / double(fallback.totalVectors);
+            }
             return;
         case BenchBackend::GpuHandWritten:
             row.precision = Precision::F32Naive;
@@ -141,6 +146,11 @@ std::string optional(const std::optional<double>& value, const char* pattern) {
     return value ? format(pattern, *value) : "–";
 }
 
+// A share as a percentage, "–" for none.
+std::string percent(const std::optional<double>& share) {
+    return share ? format("%.3f%%", 100.0 * *share) : "–";
+}
+
 std::string precisionText(const BenchRow& row) {
     switch (row.configuration.backend) {
         case BenchBackend::Gpu:
@@ -201,8 +211,10 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
         "| scene | resolution | backend | kernel | precision | culling | spp | Mpix/s median | Mpix/s best | frame ms "
         "| vs hand-written | primary tests/px | shadow rays/px | shadow tests/px | sampling error: RMSE vs "
         "converged (levels) | precision error: RMSE vs CPU ref, same spp, unambiguous px (levels) | "
-        "mean FLIP vs CPU ref, same spp | > 1 level, same spp | topology mismatches |\n");
-    std::printf("|---|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        "mean FLIP vs CPU ref, same spp | > 1 level, same spp | topology mismatches | f64 pass: pixels | f64 pass: "
+        "8-lane vectors |\n");
+    std::printf(
+        "|---|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const BenchRow* row : rowsOf(scenes, rows, false)) {
         const BenchScene& bench = scenes[row->configuration.scene];
         const auto work = [&](double WorkPerPixel::*field) {
@@ -210,7 +222,7 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
         };
         std::printf(
             "| %s | %ux%u | %s | %s | %s | %s | %u | %s | %s | %.1f | %s | %s | %s | %s | %s | %.3f | %s | %.3f%% "
-            "| %s |\n",
+            "| %s | %s | %s |\n",
             bench.name.c_str(), bench.scene.image.width, bench.scene.image.height,
             backends.name(row->configuration.backend).c_str(), kernelText(*row), precisionText(*row).c_str(),
             cullingText(*row).c_str(), row->configuration.samplesPerPixel, mpix(row->medianMpix).c_str(),
@@ -219,7 +231,8 @@ void printFileTable(const std::vector<BenchScene>& scenes, const std::vector<Ben
             work(&WorkPerPixel::shadowTests).c_str(),
             optional(row->samplingError ? std::optional(row->samplingError->rmse) : std::nullopt, "%.3f").c_str(),
             row->precisionError.rmse, optional(row->flipMean, "%.5f").c_str(),
-            100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str());
+            100.0 * row->precisionError.shareOverOneLevel, mismatches(*row).c_str(),
+            percent(row->fallbackPixelShare).c_str(), percent(row->fallbackVectorShare).c_str());
     }
 }
 

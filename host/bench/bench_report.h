@@ -56,6 +56,9 @@ struct BenchRow {
     std::optional<double> flipMean;
     std::optional<TopologyComparison> topology;  // none for a backend without pixel classes
     std::optional<WorkPerPixel> work;            // GPU kernels generated for the scene
+    // f32-certified: the shares of the pixels, and of the 8-pixel vectors (lavapipe's lanes), that a
+    // decision in doubt sent to the f64 pass.
+    std::optional<double> fallbackPixelShare, fallbackVectorShare;
 };
 
 bool isGpu(BenchBackend backend);

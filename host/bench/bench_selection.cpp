@@ -7,18 +7,19 @@ namespace hexray::inline bench {
 const std::vector<BenchRowName>& benchRowNames() {
     using K = BenchRowKind;
     static const std::vector<BenchRowName> names = {
-        {"gpu", {K::GpuF32, K::GpuF64, K::GpuF32Naive}},
+        {"gpu", {K::GpuF32, K::GpuF64, K::GpuF32Naive, K::GpuF32Certified}},
         {"gpu-f32", {K::GpuF32}},
         {"gpu-f64", {K::GpuF64}},
         {"gpu-f32-naive", {K::GpuF32Naive}},
+        {"gpu-f32-certified", {K::GpuF32Certified}},
         {"hand-written", {K::HandWritten}},
         {"cpu", {K::Cpu}},
         {"embree", {K::Embree}},
         {"embree-f64-packets", {K::EmbreeF64Packets}},
         {"embree-f64-single", {K::EmbreeF64Single}},
         {"all",
-         {K::GpuF32, K::GpuF64, K::GpuF32Naive, K::HandWritten, K::Cpu, K::Embree, K::EmbreeF64Packets,
-          K::EmbreeF64Single}},
+         {K::GpuF32, K::GpuF64, K::GpuF32Naive, K::GpuF32Certified, K::HandWritten, K::Cpu, K::Embree,
+          K::EmbreeF64Packets, K::EmbreeF64Single}},
     };
     return names;
 }

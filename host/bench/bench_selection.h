@@ -13,6 +13,7 @@ enum class BenchRowKind {
     GpuF32,            // the renderer in f32, culled and whole (the curve: whole)
     GpuF64,            // the renderer in f64, culled and whole, where the device has float64
     GpuF32Naive,       // the renderer's textbook f32 formulation
+    GpuF32Certified,   // the renderer in f32-certified, culled and whole, where the device has float64
     HandWritten,       // the lecture demo's hand-written kernel, on the lecture demo
     Cpu,               // the CPU reference, and the converged reference of the sampling error
     Embree,            // Embree at its best: the widest packets, shading in float

@@ -116,10 +116,11 @@ void addFileConfigurations(const BenchOptions& options, const BenchSelection& se
         if (selection.contains(BenchRowKind::GpuF32Naive)) {
             configurations.push_back({index, BenchBackend::Gpu, Precision::F32Naive, Culling::Off, spp});
         }
-        for (const Precision precision : {Precision::F32, Precision::F64}) {
-            const bool chosen = precision == Precision::F32
-                                    ? selection.contains(BenchRowKind::GpuF32)
-                                    : selection.contains(BenchRowKind::GpuF64) && backends.hasFloat64();
+        const std::pair<Precision, bool> precisions[] = {
+            {Precision::F32, selection.contains(BenchRowKind::GpuF32)},
+            {Precision::F64, selection.contains(BenchRowKind::GpuF64) && backends.hasFloat64()},
+            {Precision::F32Certified, selection.contains(BenchRowKind::GpuF32Certified) && backends.hasFloat64()}};
+        for (const auto& [precision, chosen] : precisions) {
             if (chosen) {
                 configurations.push_back({index, BenchBackend::Gpu, precision, Culling::Off, spp});
                 configurations.push_back({index, BenchBackend::Gpu, precision, Culling::On, spp});

@@ -114,8 +114,10 @@ void addDeviceOption(CLI::App& command, VulkanOptions& vulkan) {
 CLI::Option* addPrecisionOption(CLI::App& command, Precision& precision) {
     return addNamedOption(command, "--precision", precision, precisionNames(),
                           "Shader arithmetic: auto (per scene: f32 when its float32 error stays below 1e-3 of the "
-                          "scene's smallest feature, else f64), f32, f64 (needs shaderFloat64), or f32-naive (the "
-                          "textbook formulas, for comparison)");
+                          "scene's smallest feature, else f64), f32, f64 (needs shaderFloat64), f32-naive (the "
+                          "textbook formulas, for comparison), or f32-certified (f32 checking each decision against "
+                          "its error bound, the pixels in doubt rendered again in f64: f64's decisions; needs "
+                          "shaderFloat64)");
 }
 
 void addRenderCommand(CLI::App& app, CommandLine& line) {
@@ -394,7 +396,8 @@ void addBenchCommand(CLI::App& app, CommandLine& line) {
         ->capture_default_str();
     command
         ->add_option("--backends", bench.backends,
-                     "The rows to measure, comma-separated: gpu (gpu-f32, gpu-f64, gpu-f32-naive), hand-written, cpu "
+                     "The rows to measure, comma-separated: gpu (gpu-f32, gpu-f64, gpu-f32-naive, gpu-f32-certified), "
+                     "hand-written, cpu "
                      "(also the converged reference), embree (the widest packets, shading in float), "
                      "embree-f64-packets, embree-f64-single, all (default: gpu,hand-written,cpu,embree)")
         ->check(benchRowName())

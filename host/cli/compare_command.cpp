@@ -299,6 +299,7 @@ std::vector<Precision> precisionsToCompare(const CompareOptions& options, const 
     std::vector<Precision> precisions = {Precision::F32Naive, Precision::F32};
     if (context.selected().hasFloat64) {
         precisions.push_back(Precision::F64);
+        precisions.push_back(Precision::F32Certified);
     }
     return precisions;
 }

@@ -80,8 +80,10 @@ std::vector<std::string> readStrings(const JsonReader& value) {
 std::vector<Precision> readPrecisions(const JsonReader& value) {
     std::vector<Precision> precisions;
     for (const JsonReader& element : value.elements()) {
-        precisions.push_back(element.choice<Precision>(
-            {{"f32-naive", Precision::F32Naive}, {"f32", Precision::F32}, {"f64", Precision::F64}}));
+        precisions.push_back(element.choice<Precision>({{"f32-naive", Precision::F32Naive},
+                                                        {"f32", Precision::F32},
+                                                        {"f64", Precision::F64},
+                                                        {"f32-certified", Precision::F32Certified}}));
     }
     if (precisions.empty()) {
         value.fail("must name at least one (leave the key out for every precision)");

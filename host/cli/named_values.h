@@ -32,7 +32,8 @@ inline const NameTable<Culling> kCullingNames{{"auto", Culling::Auto}, {"on", Cu
 // The precisions, in the order the help lists them (their names are precision.h's).
 inline NameTable<Precision> precisionNames() {
     NameTable<Precision> names;
-    for (const Precision precision : {Precision::Auto, Precision::F32, Precision::F64, Precision::F32Naive}) {
+    for (const Precision precision :
+         {Precision::Auto, Precision::F32, Precision::F64, Precision::F32Naive, Precision::F32Certified}) {
         names.emplace_back(std::string(precisionName(precision)), precision);
     }
     return names;

@@ -156,13 +156,15 @@ GpuPixelTrace traceOnGpu(const PixelOptions& options, const Scene& scene, Valida
     const auto traceStart = std::chrono::steady_clock::now();
     const GpuPixelTrace trace = renderer.tracePixel(scene, options.precision, x, y, sample);
     record.gpuTraceMilliseconds = millisecondsSince(traceStart);
-    std::printf(
-        "gpu: %s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(), context.selected().name.c_str(),
-        trace.cameraRelative ? formatted("the shader works camera-relative, lengths divided by %g; printed here in "
-                                         "world units (eye added back, lengths multiplied by %g)",
-                                         trace.scale, trace.scale)
-                                   .c_str()
-                             : "the shader works in world coordinates");
+    std::printf("gpu: %s%s on %s; %s\n", std::string(precisionName(trace.precision)).c_str(),
+                trace.tracedAgainInF64 ? " (a decision was in doubt: this is the f64 pass's trace)" : "",
+                context.selected().name.c_str(),
+                trace.cameraRelative
+                    ? formatted("the shader works camera-relative, lengths divided by %g; printed here in "
+                                "world units (eye added back, lengths multiplied by %g)",
+                                trace.scale, trace.scale)
+                          .c_str()
+                    : "the shader works in world coordinates");
     return trace;
 }
 

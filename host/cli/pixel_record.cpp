@@ -167,6 +167,7 @@ json gpuSide(const Scene& scene, const GpuPixelTrace& shader) {
             {"camera_relative", shader.cameraRelative},
             {"length_scale", jsonNumber(shader.scale)},
             {"candidate_lists", shader.usedCandidateLists},
+            {"traced_again_in_f64", shader.tracedAgainInF64},
             {"trace", shaderTrace(scene, shader)}};
 }
 

@@ -23,12 +23,24 @@ json requested(const RenderOptions& options) {
             {"aov_directory", optionalText(options.aovDirectory)}};
 }
 
+// f32-certified: the pixels a decision in doubt sent to the f64 pass; null for other precisions.
+json f64Pass(const GpuSceneRecord& gpu) {
+    const CertifiedFallback& pass = gpu.timing.fallback;
+    if (gpu.precision != Precision::F32Certified || pass.totalPixels == 0) {
+        return nullptr;
+    }
+    return {{"pixels", pass.pixels},
+            {"pixel_share", double(pass.pixels) / double(pass.totalPixels)},
+            {"vector_share", double(pass.vectors) / double(pass.totalVectors)}};
+}
+
 json kernel(const GpuSceneRecord& gpu) {
     return {{"kind", gpu.generatedKernel ? "generated" : "data-driven"},
             {"name", gpu.kernelName},
             {"tile_classes", gpu.tileClasses},
             {"candidate_lists", gpu.candidateLists},
-            {"from_disk_cache", gpu.generatedKernel ? json(gpu.timing.kernel.fromDiskCache) : json(nullptr)}};
+            {"from_disk_cache", gpu.generatedKernel ? json(gpu.timing.kernel.fromDiskCache) : json(nullptr)},
+            {"f64_pass", f64Pass(gpu)}};
 }
 
 // Every stage's milliseconds; null for a stage the scene's backend has not, or did not reach.

@@ -43,10 +43,19 @@ std::string describeGpuRender(const RenderPlan& plan, const GpuRenderResult& res
                               const std::string& tier) {
     const std::string precision(precisionName(plan.precision));
     const std::string kernel = (tier.empty() ? "" : tier + ": ") + describeKernel(plan, result.timing.kernel);
-    return formatted("gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's compile",
+    const CertifiedFallback& pass = result.timing.fallback;
+    const std::string f64Pass =
+        plan.precision == Precision::F32Certified && pass.totalPixels > 0
+            ? formatted(
+                  "; %llu pixels in doubt rendered again in f64 (%.3f%% of the pixels, %.3f%% of the 8-lane "
+                  "vectors)",
+                  static_cast<unsigned long long>(pass.pixels), 100.0 * double(pass.pixels) / double(pass.totalPixels),
+                  100.0 * double(pass.vectors) / double(pass.totalVectors))
+            : "";
+    return formatted("gpu %s (%s): render %.2f ms%s; kernel %s; first dispatch %.1f ms incl. the driver's compile%s",
                      precision.c_str(), device.c_str(), result.timing.renderMilliseconds,
                      result.timing.fromTimestamps ? "" : " (wall clock)", kernel.c_str(),
-                     result.timing.firstDispatchMilliseconds);
+                     result.timing.firstDispatchMilliseconds, f64Pass.c_str());
 }
 
 GpuSceneRecord gpuSceneRecord(const RenderPlan& plan, const GpuRenderResult& result, double planMilliseconds) {

@@ -443,6 +443,13 @@ GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan
     renderBands(scene, plan, GpuOutput::LinearAndClasses, bands, unpack, RowRange{}, request);
     trace.precision = plan.precision;
     trace.usedCandidateLists = bands.usedCandidateLists;
+    if (plan.fallback && trace.inDoubt) {
+        GpuPixelTrace again = tracePixel(scene, *plan.fallback, x, y, sample);
+        again.precision = plan.precision;
+        again.tracedAgainInF64 = true;
+        again.inDoubt = true;
+        return again;
+    }
     return trace;
 }
 
@@ -532,8 +539,8 @@ std::vector<Dispatch> warmUpDispatches(std::vector<Dispatch> dispatches) {
 
 // The band buffer's pixels from `offset` on (null for a buffer this render does not fill).
 template <typename Pixel>
-const Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
-    const auto* first = reinterpret_cast<const Pixel*>(buffer.data());
+Pixel* pixelsFrom(const HostVisibleBuffer& buffer, std::size_t offset) {
+    auto* first = reinterpret_cast<Pixel*>(buffer.data());
     return first ? first + offset : nullptr;
 }
 
@@ -595,6 +602,19 @@ struct BandBuffers {
         done.release();
     }
 };
+
+// The rows [firstRow + skipped, firstRow + rows) of a band of `width` pixels, as `buffers` hold them.
+RenderedBand bandOf(const BandBuffers& buffers, std::uint32_t width, std::uint32_t firstRow, std::uint32_t rows,
+                    std::uint32_t skipped) {
+    const std::size_t at = std::size_t(skipped) * width;
+    return {firstRow + skipped,
+            rows - skipped,
+            pixelsFrom<GpuPixel>(buffers.pixels, at),
+            pixelsFrom<GpuPixelClass>(buffers.classes, at),
+            pixelsFrom<GpuEncodedPixel>(buffers.encoded, at),
+            pixelsFrom<GpuAovPixel>(buffers.aov, at),
+            buffers.trace.data()};
+}
 
 // The descriptor set of `buffers`, every binding written; the command buffer and fence.
 void bindBandBuffers(BandBuffers& buffers, const vk::raii::Device& device, const vk::raii::CommandPool& commandPool,
@@ -804,12 +824,113 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     for (std::uint32_t firstRow = startRow; firstRow < endRow; firstRow += shape.rows) {
         const std::uint32_t rows = std::min(shape.rows, endRow - firstRow);
         timing.renderMilliseconds += run(bandDispatches(work, firstRow, rows, buffers.tiles), true);
-        const std::uint32_t skipped = std::max(firstRow, rowRange.first) - firstRow;
-        const std::size_t offset = std::size_t(skipped) * scene.image.width;
-        consume(Band{firstRow + skipped, rows - skipped, pixelsFrom<GpuPixel>(buffers.pixels, offset),
-                     pixelsFrom<GpuPixelClass>(buffers.classes, offset),
-                     pixelsFrom<gpu::GpuEncodedPixel>(buffers.encoded, offset),
-                     pixelsFrom<gpu::GpuAovPixel>(buffers.aov, offset), buffers.trace.data()});
+        if (plan.fallback) {
+            renderPixelsInDoubt(scene, *plan.fallback, output, bandOf(buffers, scene.image.width, firstRow, rows, 0),
+                                result);
+        }
+        consume(bandOf(buffers, scene.image.width, firstRow, rows, std::max(firstRow, rowRange.first) - firstRow));
+    }
+}
+
+namespace {
+
+// The pixels of a band that a certified kernel left in doubt, in rows of the whole image, with their
+// places in the band; and how many of the band's vectors (8-pixel rows of a tile, the lanes lavapipe
+// runs together) hold one, of how many.
+struct PixelsInDoubt {
+    std::vector<glm::uvec2> pixels;
+    std::vector<std::size_t> places;
+    std::uint64_t vectors = 0;
+    std::uint64_t totalVectors = 0;
+};
+
+template <typename Pixel, typename InDoubt>
+PixelsInDoubt findPixelsInDoubt(const Pixel* band, std::uint32_t width, std::uint32_t firstRow, std::uint32_t rows,
+                                InDoubt inDoubt) {
+    PixelsInDoubt found;
+    for (std::uint32_t y = 0; y < rows; ++y) {
+        for (std::uint32_t vectorStart = 0; vectorStart < width; vectorStart += WORKGROUP_SIZE) {
+            bool vectorInDoubt = false;
+            for (std::uint32_t x = vectorStart; x < std::min(width, vectorStart + WORKGROUP_SIZE); ++x) {
+                const std::size_t place = std::size_t(y) * width + x;
+                if (inDoubt(band[place])) {
+                    found.pixels.emplace_back(x, firstRow + y);
+                    found.places.push_back(place);
+                    vectorInDoubt = true;
+                }
+            }
+            found.vectors += vectorInDoubt ? 1 : 0;
+        }
+    }
+    found.totalVectors = std::uint64_t(rows) * groupsFor(width);
+    return found;
+}
+
+// The listed render's results, each into its pixel's place in the band.
+void mergeListed(const BandBuffers& listed, std::span<const std::size_t> places, GpuOutput output, GpuPixel* pixels,
+                 GpuPixelClass* classes, gpu::GpuEncodedPixel* encoded, gpu::GpuAovPixel* aovs) {
+    for (std::size_t i = 0; i < places.size(); ++i) {
+        const std::size_t place = places[i];
+        if (output == GpuOutput::Encoded8) {
+            encoded[place] = pixelsFrom<gpu::GpuEncodedPixel>(listed.encoded, 0)[i];
+            continue;
+        }
+        pixels[place] = pixelsFrom<GpuPixel>(listed.pixels, 0)[i];
+        classes[place] = pixelsFrom<GpuPixelClass>(listed.classes, 0)[i];
+        if (output == GpuOutput::LinearClassesAndAov) {
+            aovs[place] = pixelsFrom<gpu::GpuAovPixel>(listed.aov, 0)[i];
+        }
+    }
+}
+
+}  // namespace
+
+void GpuRenderer::renderPixelsInDoubt(const Scene& scene, const RenderPlan& fallback, GpuOutput output,
+                                      const Band& band, GpuRenderResult& result) {
+    const std::uint32_t width = scene.image.width;
+    PixelsInDoubt found = output == GpuOutput::Encoded8
+                              ? findPixelsInDoubt(band.encoded, width, band.firstRow, band.rows,
+                                                  [](gpu::GpuEncodedPixel pixel) { return (pixel >> 24) == 0; })
+                              : findPixelsInDoubt(band.pixels, width, band.firstRow, band.rows,
+                                                  [](const GpuPixel& pixel) { return pixel.w == 0.0f; });
+    CertifiedFallback& stats = result.timing.fallback;
+    stats.pixels += found.pixels.size();
+    stats.totalPixels += std::uint64_t(band.rows) * width;
+    stats.vectors += found.vectors;
+    stats.totalVectors += found.totalVectors;
+    if (!found.pixels.empty()) {
+        // Whole workgroups, the padding past the image's width (the kernel skips it).
+        constexpr std::size_t kGroup = WORKGROUP_SIZE * WORKGROUP_SIZE;
+        const std::size_t listed = (found.pixels.size() + kGroup - 1) / kGroup * kGroup;
+        found.pixels.resize(listed, glm::uvec2(UINT32_MAX));
+        const gpu::Specialization specialization{outputModeFor(scene, output, false), scene.image.samplesPerPixel};
+        const PackedScene packed = packFor(scene, fallback);
+        const vk::raii::Pipeline* pipeline =
+            pipelinesFor(std::span(&fallback.kernel, 1), fallback, specialization, packed.specValues(),
+                         packed.specSizes(), result.timing.kernel)[0];
+        const BandShape shape{output != GpuOutput::Encoded8,
+                              output == GpuOutput::LinearClassesAndAov,
+                              false,
+                              scene.image.height,
+                              listed,
+                              listed};
+        const SceneBindings& sceneBindings = bindings(fallback.layout);
+        BandBuffers buffers =
+            makeBandBuffers(context_, commandPool_, sceneBindings.setLayout, scene, fallback, packed, shape, {});
+        const LeakIfAbandoned leakIfAbandoned{context_, [&] { buffers.abandon(); }};
+        buffers.tiles.upload(std::as_bytes(std::span(found.pixels)));
+        const GpuBand all{
+            0, scene.image.height, 0, 0, scene.image.samplesPerPixel, 0, std::uint32_t(scene.lights.size()), 0};
+        const Dispatch warmUp{pipeline, all, 1, 1};
+        const Dispatch dispatch{pipeline, all, std::uint32_t(listed / kGroup), 1};
+        const Timestamps timestamps{timestamps_, timestampMask_, nanosecondsPerTick_};
+        const auto run = [&](const Dispatch& one, bool timed) {
+            return submitBand(context_, timestamps, buffers, sceneBindings.pipelineLayout, scene, std::span(&one, 1),
+                              timed);
+        };
+        result.timing.firstDispatchMilliseconds += run(warmUp, false);
+        result.timing.renderMilliseconds += run(dispatch, true);
+        mergeListed(buffers, found.places, output, band.pixels, band.classes, band.encoded, band.aovs);
     }
 }
 

@@ -23,12 +23,21 @@
 
 namespace hexray::inline gpu {
 
+// f32-certified: the pixels a decision of which was in doubt, rendered again in f64.
+struct CertifiedFallback {
+    std::uint64_t pixels = 0;        // rendered again
+    std::uint64_t totalPixels = 0;   // rendered
+    std::uint64_t vectors = 0;       // 8-pixel rows of a tile (a lavapipe vector) with a pixel in doubt
+    std::uint64_t totalVectors = 0;  // 8-pixel rows of a tile rendered
+};
+
 struct GpuTiming {
     double renderMilliseconds = 0;         // all bands, measured after the warm-up dispatch
     double firstDispatchMilliseconds = 0;  // the warm-up: includes the driver's compile (lavapipe's JIT)
     bool fromTimestamps = false;           // false: host wall time (no timestamp support)
     double uploadMilliseconds = 0;         // packing the scene and uploading it (and its candidate lists) to the device
     KernelBuild kernel;                    // generating and compiling the kernel (when not yet built)
+    CertifiedFallback fallback;            // f32-certified only
 };
 
 // What render() produces: linear RGB and what each pixel shows, for comparisons; or only the
@@ -48,6 +57,18 @@ struct GpuRenderResult {
     Precision precision = Precision::F32;  // the plan's (never Auto)
     GpuTiming timing;
     bool usedCandidateLists = false;  // the spheres were found through candidate lists
+};
+
+// One band of rows as the device left it (in mapped memory); only the output's own buffer is
+// meaningful. GpuRenderer's own: what it hands from the dispatch to the read-back.
+struct RenderedBand {
+    std::uint32_t firstRow;
+    std::uint32_t rows;
+    gpu::GpuPixel* pixels;
+    gpu::GpuPixelClass* classes;
+    gpu::GpuEncodedPixel* encoded;
+    gpu::GpuAovPixel* aovs;
+    const std::byte* trace;
 };
 
 // Owns the pipelines for one device, each built on first use, and the kernel compiler; keeps the
@@ -118,22 +139,18 @@ public:
     std::size_t keptGeneratedKernels() const { return kernels_.keptKernels(); }
 
 private:
-    // One band of rows as the device left it; only the output's own buffer is meaningful.
-    struct Band {
-        std::uint32_t firstRow;
-        std::uint32_t rows;
-        const gpu::GpuPixel* pixels;
-        const gpu::GpuPixelClass* classes;
-        const gpu::GpuEncodedPixel* encoded;
-        const gpu::GpuAovPixel* aovs;
-        const std::byte* trace;
-    };
+    using Band = RenderedBand;
     // Renders the rows in `rowRange`. Sets `result`'s precision, timing and usedCandidateLists.
     // With `traceRequest` non-empty, one trace dispatch instead (see tracePixel): the trace buffer
     // starts as those bytes.
     void renderBands(const Scene& scene, const RenderPlan& plan, GpuOutput output, GpuRenderResult& result,
                      const std::function<void(const Band&)>& consume, RowRange rowRange,
                      std::span<const std::byte> traceRequest = {});
+
+    // f32-certified: renders again, with `fallback` (the f64 plan for listed pixels), each pixel of
+    // the band whose alpha the certified kernel set to 0, and writes it into the band's buffers.
+    void renderPixelsInDoubt(const Scene& scene, const RenderPlan& fallback, GpuOutput output, const Band& band,
+                             GpuRenderResult& result);
 
     // The descriptor set layout and pipeline layout for one way of uploading the scene.
     struct SceneBindings {

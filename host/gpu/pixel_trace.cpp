@@ -31,6 +31,7 @@ GpuPixelTrace unpackTraceAs(const Scene& scene, const std::byte* bytes, const Pl
     trace.rayDirection = glm::dvec3(header.rayDirection);
     trace.node = header.result.y;
     trace.flags = header.result.z;
+    trace.inDoubt = header.result.w != 0;
     trace.t = distance(header.hitPosition.w);
     trace.position = world(header.hitPosition);
     trace.normal = glm::dvec3(header.hitNormal);

@@ -46,6 +46,9 @@ struct GpuPixelTrace {
     glm::vec3 pixelColor{0};   // the pixel's (average of its samples)
     std::vector<GpuTraceLight> lights;
     bool usedCandidateLists = false;  // the trace followed the candidate lists, as the scene's render does
+    // f32-certified: a decision of the pixel was in doubt, and this is the f64 pass's trace of it.
+    bool tracedAgainInF64 = false;
+    bool inDoubt = false;  // the certified kernel's flag (false for every other kernel)
 };
 
 // The trace buffer's contents before the dispatch: which pixel and sample to trace, with room

@@ -12,6 +12,7 @@
 #include "accel/candidate_lists.h"
 #include "kernels/kept_kernels.h"
 #include "kernels/prebuilt_kernels.h"
+#include "gpu/certainty_bound.h"
 #include "gpu/plan_refused.h"
 #include "gpu/tile_classes.h"
 #include "scene/scene_contents.h"
@@ -211,9 +212,19 @@ void planLoops(const Scene& scene, const PlanRequest& request, const DeviceAbili
 }  // namespace
 
 Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device,
-                           std::vector<std::string>* warnings) {
+                           std::vector<std::string>* warnings, bool generatedKernel) {
     if (requested == Precision::Auto) {
         return choosePrecision(scene, device.float64);
+    }
+    if (requested == Precision::F32Certified && device.float64) {
+        const auto problem =
+            float32RangeProblem(scene) ? float32RangeProblem(scene) : certificationProblem(scene, generatedKernel);
+        if (problem) {
+            if (warnings) {
+                warnings->push_back("f32-certified cannot render this scene (" + *problem + "); rendering in f64");
+            }
+            return Precision::F64;
+        }
     }
     if (const auto problem = float32RangeProblem(scene); problem && requested == Precision::F32 && device.float64) {
         if (warnings) {
@@ -221,9 +232,10 @@ Precision resolvePrecision(const Scene& scene, Precision requested, const Device
         }
         return Precision::F64;
     }
-    if (requested == Precision::F64 && !device.float64) {
+    if ((requested == Precision::F64 || requested == Precision::F32Certified) && !device.float64) {
         throw PlanRefused(Refusal::NoFloat64,
-                          "--precision f64 needs shaderFloat64, which " + device.name + " does not have",
+                          "--precision " + std::string(precisionName(requested)) + " needs shaderFloat64, which " +
+                              device.name + " does not have",
                           "use --precision f32");
     }
     return requested;
@@ -258,9 +270,26 @@ Placement placementFor(const Scene& scene, Formulation formulation) {
     return Placement{true, makePixelSheet(scene.camera, sheetAspect(scene)).origin, placementScale(scene)};
 }
 
+namespace {
+
+// f32-certified's f64 pass: the scene's f64 kernel, whole (no tile classes), for a list of pixels.
+std::shared_ptr<const RenderPlan> fallbackPlan(const Scene& scene, const PlanRequest& request,
+                                               const DeviceAbilities& device) {
+    PlanRequest f64 = request;
+    f64.precision = Precision::F64;
+    f64.culling = Culling::Off;
+    RenderPlan plan = planRender(scene, f64, device);
+    SceneCode code = *plan.kernel.code;
+    code.pixelList = true;
+    plan.kernel = Kernel{"generated for the scene's pixels in doubt", std::make_shared<const SceneCode>(code), {}};
+    return std::make_shared<const RenderPlan>(std::move(plan));
+}
+
+}  // namespace
+
 RenderPlan planRender(const Scene& scene, const PlanRequest& request, const DeviceAbilities& device) {
     RenderPlan plan;
-    plan.precision = resolvePrecision(scene, request.precision, device, &plan.warnings);
+    plan.precision = resolvePrecision(scene, request.precision, device, &plan.warnings, request.generatedKernel);
     plan.width = plan.precision == Precision::F64 ? FloatWidth::F64 : FloatWidth::F32;
     plan.formulation = plan.precision == Precision::F32Naive ? Formulation::Textbook : Formulation::Robust;
     plan.placement = placementFor(scene, plan.formulation);
@@ -275,6 +304,7 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
     if (plan.layout == SceneLayout::Uniform) {
         SceneCode code = sceneCodeFor(scene, plan);
         code.valuesInBuffer = request.valuesInBuffer;
+        code.certified = plan.precision == Precision::F32Certified;
         plan.kernel = Kernel{"generated for the scene", std::make_shared<const SceneCode>(code), {}};
         if (cullingPays(scene, plan, request.culling)) {
             plan.tileClasses = tileClassesFor(scene, code);
@@ -285,6 +315,9 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
     }
     planLoops(scene, request, device, plan);
+    if (plan.precision == Precision::F32Certified) {
+        plan.fallback = fallbackPlan(scene, request, device);
+    }
     return plan;
 }
 

@@ -70,7 +70,7 @@ struct TileClasses {
 };
 
 struct RenderPlan {
-    Precision precision = Precision::F32;  // what the user calls it (f32, f64, f32-naive; never Auto)
+    Precision precision = Precision::F32;  // what the user calls it (f32, f64, f32-naive, f32-certified; never Auto)
     FloatWidth width = FloatWidth::F32;
     Formulation formulation = Formulation::Robust;
     Placement placement;
@@ -84,6 +84,8 @@ struct RenderPlan {
     std::uint64_t loopPassLimit = UINT64_MAX;
     std::uint64_t tracePasses = 0;
     std::vector<std::string> warnings;  // what `render` tells the user: a precision overruled
+    // f32-certified: the f64 plan that renders again, from a list, the pixels the kernel flags in doubt.
+    std::shared_ptr<const RenderPlan> fallback;
 };
 
 // Decides everything about how the GPU renders `scene`. Throws PlanRefused: NoFloat64 for
@@ -93,8 +95,10 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
 
 // The precision planRender chooses (never Auto); throws like it. f32 asked for a scene whose
 // lengths float32 cannot hold (float32RangeProblem) becomes f64, with a warning in `warnings`.
+// f32-certified for a scene it cannot certify (certificationProblem; `generatedKernel` false: the
+// data-driven kernel) becomes f64, with a warning too.
 Precision resolvePrecision(const Scene& scene, Precision requested, const DeviceAbilities& device,
-                           std::vector<std::string>* warnings = nullptr);
+                           std::vector<std::string>* warnings = nullptr, bool generatedKernel = true);
 
 // The placement a precision uses for a scene: camera-relative and rescaled, or world
 // coordinates as given (f32-naive).

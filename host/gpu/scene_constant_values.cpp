@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "gpu/certainty_bound.h"
+
 namespace hexray::inline gpu {
 namespace {
 
@@ -24,6 +26,11 @@ double lightNodePower(const gpu::GpuLight<Real>& light, const gpu::GpuNode<Real>
     const double d = glm::length(l - c);
     const double r = double(sphere.geometry.w);
     return (d - r) * (d + r);
+}
+
+template <typename Real>
+glm::dvec3 xyz(const RealVec4<Real>& v) {
+    return glm::dvec3(v.x, v.y, v.z);
 }
 
 }  // namespace
@@ -65,6 +72,11 @@ std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& con
                     break;
                 case Field::Background:
                     append<float>(bytes, scene.frame.background[c]);
+                    break;
+                case Field::CertaintyBound:
+                    append<Real>(bytes, Real(certaintyBound(xyz<Real>(scene.frame.sheetTopLeft),
+                                                            xyz<Real>(scene.frame.sheetRight),
+                                                            xyz<Real>(scene.frame.sheetDown))));
                     break;
             }
         }

@@ -61,10 +61,16 @@ public:
     std::string write() {
         prelude();
         constants();
+        if (certified()) {
+            out_ << "#include \"certified.glsl\"\n\n";
+        }
         findNearestHit();
         candidateDistance();
         surfaceFunction("hitSurface", all());
         surfaceFunction("litSurface", lit());
+        if (certified()) {
+            normalRoundoffFunction();
+        }
         shade();
         out_ << "#include \"kernel_main.glsl\"\n";
         return out_.str();
@@ -97,6 +103,7 @@ private:
         return all() & where([shader](const NodeCode& n) { return n.shader == shader; });
     }
     bool textbook() const { return code_.formulation == Formulation::Textbook; }
+    bool certified() const { return code_.certified; }
 
     // Declares `type name` as the hit node's value `what`, the node one of `set` (not empty):
     // constants, selected (a load at the index hit.node would be a gather per lane).
@@ -131,6 +138,12 @@ private:
         }
         if (code_.tileList) {
             out_ << "#define HEXRAY_TILE_LIST\n";
+        }
+        if (code_.pixelList) {
+            out_ << "#define HEXRAY_PIXEL_LIST\n";
+        }
+        if (certified()) {
+            out_ << "#define HEXRAY_CERTIFIED\n";
         }
         out_ << "#include \"checker.glsl\"\n"
                 "#include \"intersect.glsl\"\n"
@@ -227,6 +240,9 @@ private:
     void findNearestHit() {
         out_ << "Hit findNearestHit(Ray ray) {\n"
                 "    Hit hit = Hit(NO_HIT, NO_NODE);\n";
+        if (certified()) {
+            out_ << "    NearestCertainty nearest = noNearest();\n";
+        }
         for (std::uint32_t i = 0; i < code_.nodes.size(); ++i) {
             if (!code_.nodes[i].cameraTested) {
                 continue;
@@ -234,8 +250,28 @@ private:
             const std::string t = std::string("t").append(std::to_string(i));
             out_ << "    real " << t << " = " << cameraDistance(i) << ";\n"
                  << "    hit = " << call("nearer", "hit", t, u(i)) << ";\n";
+            if (certified()) {
+                certifyCameraRay(i, t);
+            }
+        }
+        if (certified()) {
+            out_ << "    certifyNearest(nearest);\n";
         }
         out_ << "    return hit;\n}\n\n";
+    }
+
+    // f32-certified: whether the camera ray meets node i, and its hit's interval for the nearest.
+    void certifyCameraRay(std::uint32_t i, const std::string& t) {
+        const std::string g = value(i, "GEOMETRY");
+        std::string scale;
+        if (code_.nodes[i].geometry == gpu::GEOMETRY_PLANE) {
+            out_ << "    certifyPlaneCrossing(ray);\n";
+            scale = call("planeHitScale", "ray", t);
+        } else {
+            out_ << "    " << call("certifySilhouette", "ray", g + ".xyz", g + ".w") << ";\n";
+            scale = call("sphereHitScale", "ray", g + ".xyz", g + ".w");
+        }
+        out_ << "    nearest = " << call("offerNearest", "nearest", "hit", u(i), t, scale) << ";\n";
     }
 
     void candidateDistance() {
@@ -299,6 +335,58 @@ private:
         out_ << "    return s;\n}\n\n";
     }
 
+    // f32-certified: how far roundoff turns a lit hit's normal, per unit: a sphere's by the hit's
+    // scale (certified.glsl nearestHitScale) over its radius; a plane's is exact.
+    void normalRoundoffFunction() {
+        out_ << "real certifiedNormalRoundoff(Hit hit) {\n"
+                "    real normalRoundoff = 0.0;\n";
+        if (const NodeSet sp = lit() & ~planes(lit())) {
+            select("vec4r", "sphere", sp, "GEOMETRY");
+            out_ << "    normalRoundoff = " << contains(sp) << " ? nearestHitScale / sphere.w : 0.0;\n";
+        }
+        out_ << "    return normalRoundoff;\n}\n\n";
+    }
+
+    // f32-certified: whether the lit point lies clear of each sphere that a light's shadow test
+    // checks (certified.glsl clearOfSurface), once for every light.
+    void certifyClearance() {
+        std::vector<bool> tested(code_.nodes.size(), false);
+        std::string farthest;
+        for (std::uint32_t light = 0; light < code_.shadowTests.size(); ++light) {
+            const std::string distance = "length(" + lightValue(light, "POSITION") + ")";
+            farthest = farthest.empty() ? distance : call("max", farthest, distance);
+            for (const ShadowTest& test : code_.shadowTests[light]) {
+                tested[test.node] = tested[test.node] || (test.tested && !test.hidesLight &&
+                                                          code_.nodes[test.node].geometry == gpu::GEOMETRY_SPHERE);
+            }
+        }
+        if (farthest.empty()) {
+            return;
+        }
+        out_ << "    real farthestSegmentScale = hitScale + " << farthest << ";\n";
+        for (std::uint32_t node = 0; node < code_.nodes.size(); ++node) {
+            if (tested[node]) {
+                out_ << "    bool clearOf" << node << " = "
+                     << call("clearOfSurface", "s.position", "hit.t", value(node, "GEOMETRY"), "farthestSegmentScale")
+                     << ";\n";
+            }
+        }
+    }
+
+    // f32-certified: whether shadow test `test` of light `light` may have gone the other way.
+    std::string certifyShadowTest(std::uint32_t light, const ShadowTest& test) const {
+        const std::string g = value(test.node, "GEOMETRY");
+        const std::string lightPosition = lightValue(light, "POSITION");
+        const std::string applies = "path.facing && hit.node != " + u(test.node);
+        if (code_.nodes[test.node].geometry == gpu::GEOMETRY_PLANE) {
+            return call("certifyPlaneSegment", g, "s.position", lightPosition, "segmentScale", applies);
+        }
+        const std::string power = lightValue(light, "NODE" + std::to_string(test.node) + "_POWER");
+        return call("certifySphereSegment", lightPosition + " - " + g + ".xyz", power, g + ".xyz", g + ".w",
+                    "-path.shadowRay.direction", "path.shadowLength", "clearOf" + std::to_string(test.node),
+                    "segmentScale", applies);
+    }
+
     // Whether a shadow test's node lies between the surface and light `light` (`path`: lightPath's
     // result). Robust kernels test spheres from the light (toward the surface's shadow origin);
     // textbook ones from the surface, as a course does.
@@ -343,6 +431,12 @@ private:
              << (shadowsFromThePoint() ? "lightPathFromPoint(s, " : "lightPath(s, ") << lightValue(light, "POSITION")
              << ");\n"
                 "        bool shadowed = false;\n";
+        if (certified()) {
+            out_ << "        real segmentScale = hitScale + length(" << lightValue(light, "POSITION") << ");\n"
+                 << "        real directionRoundoff = segmentScale * inversesqrt(path.r2);\n"
+                    "        certifyFacing(path.cosTheta, normalRoundoff, directionRoundoff, path.r2 > 0.0);\n"
+                    "        certifyLightTerm(normalRoundoff, directionRoundoff, path.facing);\n";
+        }
         for (const ShadowTest& test : code_.shadowTests[light]) {
             if (!test.tested) {
                 continue;
@@ -352,6 +446,9 @@ private:
             out_ << "        bool " << name << " = " << shadowTest(light, test) << ";\n"
                  << "        shadowed = shadowed || " << call("castsShadow", name, u(test.node), "hit", seenFromOutside)
                  << ";\n";
+            if (certified() && !test.hidesLight) {
+                out_ << "        " << certifyShadowTest(light, test) << ";\n";
+            }
         }
         out_ << "        irradiance += lightTerm(" << u(light) << ", vec4r(" << lightValue(light, "POWER")
              << ", 0.0), path, shadowed, flags);\n"
@@ -371,6 +468,10 @@ private:
             return;
         }
         out_ << "    Surface s = litSurface(ray, hit);\n";
+        if (certified()) {
+            out_ << "    real hitScale = nearestHitScale;\n"
+                    "    real normalRoundoff = certifiedNormalRoundoff(hit);\n";
+        }
         select("vec3", "albedo", lit(), "COLOR1");
         const NodeSet checkers = shaded(gpu::SHADER_CHECKER);
         if (checkers) {
@@ -378,6 +479,11 @@ private:
             if (const NodeSet p = planes(checkers)) {
                 select("vec4r", "planeChecker", p, "CHECKER");
                 out_ << "    odd = " << contains(p) << " ? isOddPlaneCell(planeChecker, s.position) : odd;\n";
+                if (certified()) {
+                    out_ << "    "
+                         << call("certifyPlaneCell", "planeChecker", "s.position", "ray", "hit.t", contains(p))
+                         << ";\n";
+                }
             }
             if (const NodeSet sp = checkers & ~planes(checkers)) {
                 select("vec4r", "sphereChecker", sp, "CHECKER");
@@ -389,6 +495,9 @@ private:
         }
         out_ << "    traceSurface(s, albedo);\n"
                 "    vec3 irradiance = AMBIENT;\n";
+        if (certified()) {
+            certifyClearance();
+        }
         for (std::uint32_t light = 0; light < code_.shadowTests.size(); ++light) {
             lightBlock(light);
         }

@@ -59,6 +59,11 @@ struct SceneCode {
     Formulation formulation = Formulation::Robust;
     bool eyeAtOrigin = true;  // camera-relative placement: camera rays start at exactly 0
     bool tileList = false;    // a tile class's kernel: it renders the tiles listed for it
+    // f32-certified: every decision is checked against CERTAINTY_BOUND (certified.glsl), and a pixel
+    // with one in doubt is flagged for the f64 pass.
+    bool certified = false;
+    // f32-certified's f64 pass: it renders the pixels listed for it, each written at its place in the list.
+    bool pixelList = false;
     // The scene's values read from a storage buffer (SCENE_VALUE_BINDING, the same bytes in the same
     // order) instead of specialization constants: a little slower to run, but one pipeline serves
     // every scene of this structure, so an edited value renders without a new one (`hexray watch`).

@@ -43,6 +43,9 @@ std::vector<SceneConstant> sceneConstants(const SceneCode& code) {
     }
     constants.push_back({Field::Ambient, 0, 0, 3, false, "AMBIENT"});
     constants.push_back({Field::Background, 0, 0, 3, false, "BACKGROUND_COLOR"});
+    if (code.certified) {
+        constants.push_back({Field::CertaintyBound, 0, 0, 1, true, "CERTAINTY_BOUND"});
+    }
     return constants;
 }
 

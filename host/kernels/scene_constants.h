@@ -26,6 +26,7 @@ struct SceneConstant {
         LightNodePower,  // light and sphere node: the light's power with respect to the sphere
         Ambient,         // .rgb
         Background,      // .rgb
+        CertaintyBound,  // f32-certified: float32's error per unit of a decision's scale (certified.glsl)
     };
     Field field;
     std::uint32_t index = 0;  // the node, or the light

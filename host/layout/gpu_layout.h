@@ -154,7 +154,7 @@ using GpuAovPixel = glm::vec4;
 template <typename Real>
 struct GpuTraceHeader {
     glm::uvec4 request;           // .x, .y pixel; .z the sample to trace
-    glm::uvec4 result;            // .x 1 once written, .y hit node (0xffffffff: none), .z class flags
+    glm::uvec4 result;            // .x 1 once written, .y hit node (0xffffffff: none), .z class flags, .w in doubt
     RealVec4<Real> rayOrigin;     // .xyz
     RealVec4<Real> rayDirection;  // .xyz, unit length
     RealVec4<Real> hitPosition;   // .xyz, .w = t

@@ -3,7 +3,7 @@
 namespace hexray::inline precision {
 
 DecisionRoundoff decisionRoundoff(Precision precision) {
-    if (precision == Precision::F64) {
+    if (precision == Precision::F64 || precision == Precision::F32Certified) {
         return {unitRoundoff(FloatWidth::F64), unitRoundoff(FloatWidth::F32)};
     }
     return {};

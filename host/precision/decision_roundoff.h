@@ -17,6 +17,7 @@ struct DecisionRoundoff {
 // The unit roundoff the shader makes each kind of decision with in `precision` (never Auto):
 // f64 computes in double, except a sphere's angular texture coordinates
 // (GLSL has no double atan, so they stay float); f32 and f32-naive compute in float.
+// f32-certified decides as f64 does: where float's decision is within its error bound, f64 decides.
 DecisionRoundoff decisionRoundoff(Precision precision);
 
 }  // namespace hexray::precision

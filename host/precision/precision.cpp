@@ -11,11 +11,12 @@
 namespace hexray::inline precision {
 namespace {
 
-constexpr std::array<std::pair<Precision, std::string_view>, 4> kNames = {{
+constexpr std::array<std::pair<Precision, std::string_view>, 5> kNames = {{
     {Precision::Auto, "auto"},
     {Precision::F32Naive, "f32-naive"},
     {Precision::F32, "f32"},
     {Precision::F64, "f64"},
+    {Precision::F32Certified, "f32-certified"},
 }};
 
 }  // namespace

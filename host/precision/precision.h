@@ -14,9 +14,12 @@ enum class Precision {
     F32Naive,  // the textbook formulation in world coordinates: kept to show what the rest buys
     F32,       // float, camera-relative, cancellation-free intersection, error-bound offsets
     F64,       // the same in double (needs the device's shaderFloat64)
+    // f32 whose every decision is checked against a bound on its error; a pixel with a decision in
+    // doubt is rendered again in f64 (needs shaderFloat64): f64's decisions at about f32's cost
+    F32Certified,
 };
 
-std::string_view precisionName(Precision precision);  // "auto", "f32-naive", "f32", "f64"
+std::string_view precisionName(Precision precision);  // "auto", "f32-naive", "f32", "f64", "f32-certified"
 std::optional<Precision> parsePrecision(std::string_view name);
 
 // How hard a scene is on float32, after the host's camera-relative rebase: the largest

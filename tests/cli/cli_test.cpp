@@ -217,9 +217,9 @@ TEST_F(CliTest, BenchPrintsSpeedAgainstErrorAndWritesCsv) {
               std::string::npos)
         << run.out;
     const auto rows = csvRows(readFile(dir_ / "b.csv"));
-    // header + f32-naive, f32 and f64 each whole and culled, the demo's hand-written kernel,
-    // cpu-reference (+ Embree at its best)
-    ASSERT_EQ(rows.size(), kWithEmbree ? 9u : 8u) << readFile(dir_ / "b.csv");
+    // header + f32-naive, f32, f64 and f32-certified each whole and culled, the demo's hand-written
+    // kernel, cpu-reference (+ Embree at its best)
+    ASSERT_EQ(rows.size(), kWithEmbree ? 11u : 10u) << readFile(dir_ / "b.csv");
     for (std::size_t row = 1; row < rows.size(); ++row) {
         EXPECT_EQ(field(rows, row, "scene"), "lecture-demo");
         EXPECT_EQ(field(rows, row, "width"), "48");
@@ -237,6 +237,14 @@ TEST_F(CliTest, BenchPrintsSpeedAgainstErrorAndWritesCsv) {
         }
         EXPECT_EQ(field(rows, row, "vs_embree").empty(), !kWithEmbree) << backend;
         EXPECT_FALSE(field(rows, row, "vs_hand_written").empty()) << backend;
+        // Only f32-certified rows send pixels to an f64 pass, and the demo has some on its checker edges.
+        if (precision == "f32-certified") {
+            EXPECT_GT(std::stod(field(rows, row, "f64_pass_pixel_share")), 0.0);
+            EXPECT_GE(std::stod(field(rows, row, "f64_pass_vector_share")),
+                      std::stod(field(rows, row, "f64_pass_pixel_share")));
+        } else {
+            EXPECT_EQ(field(rows, row, "f64_pass_pixel_share"), "") << backend << ' ' << precision;
+        }
         // The kernels generated for the scene say how much they test per pixel; culling tests less.
         if (backend == "lavapipe" && field(rows, row, "culling_asked") == "off") {
             EXPECT_EQ(field(rows, row, "primary_tests_per_pixel"), "2") << precision;

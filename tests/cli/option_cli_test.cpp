@@ -82,7 +82,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "--backend: vulkan not in {auto,gpu,cpu}"},
         BadOption{"BackendByNumber", "render SCENE -o x.png --backend 2", "--backend: 2 not in {auto,gpu,cpu}"},
         BadOption{"CullingUnknown", "render SCENE -o x.png --culling yes", "--culling: yes not in {auto,on,off}"},
-        BadOption{"PrecisionByNumber", "compare SCENE --precision 1", "--precision: 1 not in {auto,f32,f64,f32-naive}"},
+        BadOption{"PrecisionByNumber", "compare SCENE --precision 1",
+                  "--precision: 1 not in {auto,f32,f64,f32-naive,f32-certified}"},
         BadOption{"PixelBackendUnknown", "pixel SCENE 1 1 --backend auto", "--backend: auto not in {both,gpu,cpu}"}),
     [](const auto& info) { return std::string(info.param.name); });
 

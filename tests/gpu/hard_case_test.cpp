@@ -37,6 +37,7 @@
 #include "scene/scene_loader.h"
 #include "support/analytic.h"
 #include "support/test_paths.h"
+#include "reference_comparison.h"
 #include "validated_vulkan.h"
 
 namespace hexray {
@@ -410,7 +411,7 @@ class HardCaseTest : public test::ValidatedVulkanTest,
 
 TEST_P(HardCaseTest, MatchesAnalyticGroundTruth) {
     const auto& [path, precision] = GetParam();
-    if (precision == Precision::F64 && !context().selected().hasFloat64) {
+    if (precision != Precision::F32 && !context().selected().hasFloat64) {
         GTEST_SKIP() << context().selected().name << " has no shaderFloat64";
     }
     const std::string name = stem(path);
@@ -432,10 +433,10 @@ TEST_P(HardCaseTest, MatchesAnalyticGroundTruth) {
 
 INSTANTIATE_TEST_SUITE_P(HardScenes, HardCaseTest,
                          ::testing::Combine(::testing::ValuesIn(hardScenes()),
-                                            ::testing::Values(Precision::F32, Precision::F64)),
+                                            ::testing::Values(Precision::F32, Precision::F64, Precision::F32Certified)),
                          [](const auto& info) {
                              return test::sceneTestName(std::get<0>(info.param)) + "_" +
-                                    (std::get<1>(info.param) == Precision::F32 ? "f32" : "f64");
+                                    test::precisionTestName(std::get<1>(info.param));
                          });
 
 // The textbook variant must fail a good share of the hard cases, or they are not hard.

@@ -1,6 +1,6 @@
 // Both renderers against the exact oracle (tests/oracle/) on the generated hard rays: each ray is
-// a one-pixel scene, traced by the shader (GpuRenderer::tracePixel, in f32 and f64; auto takes the
-// one it picks) and explained by the CPU reference (explainPixel), and each answer is checked
+// a one-pixel scene, traced by the shader (GpuRenderer::tracePixel, in f32, f64 and f32-certified,
+// whose decisions are judged as f64's; auto takes the one it picks) and explained by the CPU reference (explainPixel), and each answer is checked
 // against the oracle's for the direction that renderer really followed, at its own precision's
 // unit roundoff (ray_check.h states the criteria and bounds). Prints the table that
 // docs/accuracy.md shows, and records it as test properties (tools/accuracy-report.sh reads them).
@@ -96,6 +96,26 @@ Tally judgeRay(const oracle::HardRay& ray, const RendererRay& rendered, double u
     return tally;
 }
 
+// f32-certified's answer: where the kernel had a decision in doubt (or the plan could not certify
+// the scene), f64's, judged as f64;
+// elsewhere f32's values, judged at f32's roundoff, and its decisions, judged at f64's (a decision
+// is well conditioned for it where it is for f64).
+Tally judgeCertified(const oracle::HardRay& ray, const GpuPixelTrace& trace) {
+    const RendererRay rendered = fromGpu(trace);
+    const oracle::Judged f64 = oracle::judge(ray.scene, rendered.origin, rendered.direction, kFloat64Roundoff);
+    Tally tally;
+    if (trace.tracedAgainInF64 || trace.precision == Precision::F64) {  // in doubt, or not certifiable
+        oracle::checkRay(f64, rendered, ray.family + " / " + ray.name + " / gpu f32-certified (f64 pass)", tally);
+        return tally;
+    }
+    oracle::Judged judged = oracle::judge(ray.scene, rendered.origin, rendered.direction, kFloat32Roundoff);
+    judged.nodeConditioning = f64.nodeConditioning;
+    judged.checkerConditioning = f64.checkerConditioning;
+    judged.lightConditioning = f64.lightConditioning;
+    oracle::checkRay(judged, rendered, ray.family + " / " + ray.name + " / gpu f32-certified", tally);
+    return tally;
+}
+
 // One row of the table as test properties "row<i>.<field>" (gtest --gtest_output=json), in the
 // table's order, for tools/accuracy-report.sh.
 void recordRow(int row, const std::string& family, const std::string& renderer, const Tally& t) {
@@ -114,7 +134,7 @@ void recordRow(int row, const std::string& family, const std::string& renderer, 
     record("max_value_units", t.maxValueUnits);
 }
 
-const char* const kColumns[] = {"cpu reference (f64)", "gpu f32", "gpu f64", "gpu auto"};
+const char* const kColumns[] = {"cpu reference (f64)", "gpu f32", "gpu f64", "gpu f32-certified", "gpu auto"};
 
 using OracleSuiteTest = test::ValidatedVulkanTest;
 
@@ -134,9 +154,10 @@ TEST_F(OracleSuiteTest, EveryWellConditionedAnswerIsRightOnBothRenderers) {
                                    kFloat64Roundoff, "gpu f64");
         row[kColumns[1]].add(f32);
         row[kColumns[2]].add(f64);
+        row[kColumns[3]].add(judgeCertified(ray, renderer.tracePixel(ray.scene, Precision::F32Certified, 0, 0, 0)));
         Tally picked = renderer.resolve(ray.scene, Precision::Auto) == Precision::F32 ? f32 : f64;
         picked.failures.clear();  // already reported in their own column
-        row[kColumns[3]].add(picked);
+        row[kColumns[4]].add(picked);
     }
 
     std::uint64_t rays = 0;
