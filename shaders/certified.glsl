@@ -8,6 +8,7 @@
 #ifndef HEXRAY_CERTIFIED_GLSL
 #define HEXRAY_CERTIFIED_GLSL
 
+#include "checker.glsl"
 #include "precision.glsl"
 #include "ray.glsl"
 
@@ -93,7 +94,7 @@ void certifyNearest(NearestCertainty c) {
 // A plane's checker cell: the distance of (x, z) from the nearest cell edge on each axis, against
 // its scale t + |p_u| / |d.y| (the hit slides along the ray, and with d.y) plus the square's size.
 void certifyPlaneCell(vec4r checker, vec3r position, Ray ray, real t, bool applies) {
-    vec2r cell = checker.yz + position.xz * (1.0 / checker.x);
+    vec2r cell = planeCell(checker, position);
     vec2r edgeDistance = abs(cell - floor(cell + 0.5)) * checker.x;
     vec2r scale = t + abs(position.xz) / abs(ray.direction.y) + checker.x;
     certify(applies, edgeDistance.x, scale.x);
@@ -106,12 +107,11 @@ void certifyFacing(real cosTheta, real normalRoundoff, real directionRoundoff, b
     certify(applies, abs(cosTheta), normalRoundoff + directionRoundoff);
 }
 
-// A lit light's term carries roundoff of r^2, of the direction and of the normal; past an 8-bit
-// level two correct renderers may differ by one (cpu_margins.h lightTermMargin, in float32's units).
+// A lit light's term: its roundoff against an 8-bit level (unit_roundoff.h LIGHT_TERM_TOLERANCE;
+// cpu_margins.h lightTermMargin), with CERTAINTY_MARGIN as every decision here.
 void certifyLightTerm(real normalRoundoff, real directionRoundoff, bool applies) {
-    const real tolerance = 0.00390625;  // 2^-8
-    const real units = 4.0 * 2.0;       // kLightTermUnits, and the margin's own margin
-    certify(applies, tolerance, (3.0 * directionRoundoff + normalRoundoff) * units * UNIT_ROUNDOFF / CERTAINTY_BOUND);
+    real roundoff = (3.0 * directionRoundoff + normalRoundoff) * (LIGHT_TERM_UNITS * CERTAINTY_MARGIN) * UNIT_ROUNDOFF;
+    certify(applies, real(LIGHT_TERM_TOLERANCE), roundoff / CERTAINTY_BOUND);
 }
 
 // Whether a plane blocks the segment from the point to the light: either end's height above it.

@@ -16,9 +16,14 @@ bool isOddCell(vec2r cell, real eyeParity) {
 
 // `checker`: .x square size, .yz the eye's fractional cell position (from the host, in double),
 // .w the parity of the eye's whole cells; `position` camera-relative.
+// The position's place among the plane's cells, in cells from the eye's cell's corner: its floor is
+// the cell. A product with the reciprocal, which the driver folds to a constant for a generated kernel.
+vec2r planeCell(vec4r checker, vec3r position) {
+    return checker.yz + position.xz * (1.0 / checker.x);
+}
+
 bool isOddPlaneCell(vec4r checker, vec3r position) {
-    // A product with the reciprocal, which the driver folds to a constant for a generated kernel.
-    return isOddCell(floor(checker.yz + position.xz * (1.0 / checker.x)), checker.w);
+    return isOddCell(floor(planeCell(checker, position)), checker.w);
 }
 
 // GLSL has atan in float only, so the f64 variant computes the angles in float too. Latitude is

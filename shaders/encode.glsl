@@ -11,7 +11,7 @@ uint encode8(vec3 linear) {
         c = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
     }
     uvec3 level = uvec3(floor(c * 255.0 + 0.5));
-    return level.r | (level.g << 8) | (level.b << 16) | 0xff000000u;
+    return level.r | (level.g << 8) | (level.b << 16) | ENCODED_ALPHA_BITS;
 }
 
 #endif  // HEXRAY_ENCODE_GLSL

@@ -127,7 +127,7 @@ void writeColor(uint index, vec3 color) {
     if (OUTPUT_MODE == OUTPUT_LINEAR_AND_CLASSES || OUTPUT_MODE == OUTPUT_LINEAR_CLASSES_AND_AOV) {
         pixels[index] = vec4(color, PIXEL_IN_DOUBT ? 0.0 : 1.0);
     } else {
-        encodedPixels[index] = encode8(color) & (PIXEL_IN_DOUBT ? 0x00ffffffu : 0xffffffffu);
+        encodedPixels[index] = encode8(color) & (PIXEL_IN_DOUBT ? ~ENCODED_ALPHA_BITS : 0xffffffffu);
     }
 }
 

@@ -62,6 +62,9 @@ HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 2u;
 // ODD_CHECKER_BIT for a checker-shaded hit in a color2 cell and bit i + 1 for each of the first
 // CLASSIFIED_LIGHTS lights that reaches the point.
 HEXRAY_CONSTANT uint BACKGROUND = 0xffffffffu;
+// An encoded pixel's alpha byte: all ones, or (f32-certified) 0 for a pixel in doubt, as a linear
+// pixel's alpha is 1 or 0 (kernel_main.glsl writeColor; GpuRenderer renders those again in f64).
+HEXRAY_CONSTANT uint ENCODED_ALPHA_BITS = 0xff000000u;
 HEXRAY_CONSTANT uint ODD_CHECKER_BIT = 1u;
 HEXRAY_CONSTANT uint CLASSIFIED_LIGHTS = 31u;
 

@@ -70,12 +70,12 @@ double cameraDirectionRoundoff(const PixelSheet& sheet, const glm::dvec2& sheetP
     const glm::dvec3 target = sheet.topLeft + sheet.right * sheetPosition.x + sheet.down * sheetPosition.y;
     const glm::dvec3 terms = glm::abs(sheet.topLeft) + glm::abs(sheet.right) * std::abs(sheetPosition.x) +
                              glm::abs(sheet.down) * std::abs(sheetPosition.y);
-    return 8.0 * std::max({terms.x, terms.y, terms.z}) / glm::length(target) + 5.0;
+    return cameraDirectionUnits(std::max({terms.x, terms.y, terms.z}), glm::length(target));
 }
 
 DecisionBounds decisionBounds(const DecisionRoundoff& roundoff, double directionRoundoff) {
     constexpr double kFloat32AtanBound = 128.0 * FLOAT32_UNIT_ROUNDOFF;
-    const double units = 2.0 * (directionRoundoff + 16.0);
+    const double units = nearTieUnits(directionRoundoff);
     return {units * roundoff.general, std::max(units * roundoff.sphereChecker, kFloat32AtanBound)};
 }
 

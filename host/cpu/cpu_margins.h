@@ -173,8 +173,8 @@ double facingMargin(double cosTheta, double normalRoundoff, double directionRoun
 // relative to its value), two correct renderers may differ by a level on this light alone: a light
 // close to a point whose position the arithmetic rounds on a far larger scale (a huge sphere's
 // surface beside a light a hair above it). The margin in units of that tolerance.
-inline constexpr double kLightTermTolerance = 0x1p-8;
-inline constexpr double kLightTermUnits = 4.0;
+inline constexpr double kLightTermTolerance = LIGHT_TERM_TOLERANCE;  // unit_roundoff.h, with the shader
+inline constexpr double kLightTermUnits = LIGHT_TERM_UNITS;
 double lightTermMargin(double normalRoundoff, double directionRoundoff, double unitRoundoff);
 
 }  // namespace hexray::cpu

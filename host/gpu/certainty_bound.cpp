@@ -8,6 +8,7 @@
 
 #include "camera/camera.h"
 #include "gpu/render_plan.h"
+#include "precision/decision_roundoff.h"
 #include "unit_roundoff.h"
 
 namespace hexray::inline gpu {
@@ -15,9 +16,8 @@ namespace hexray::inline gpu {
 double certaintyBound(const glm::dvec3& topLeft, const glm::dvec3& right, const glm::dvec3& down) {
     const glm::dvec3 terms = glm::abs(topLeft) + glm::abs(right) + glm::abs(down);
     const double nearest = std::abs(glm::dot(topLeft, glm::normalize(glm::cross(right, down))));
-    const double directionRoundoff = 8.0 * std::max({terms.x, terms.y, terms.z}) / nearest + 5.0;
-    constexpr double kMarginOfTheMargin = 2.0;
-    return kMarginOfTheMargin * 2.0 * (directionRoundoff + 16.0) * FLOAT32_UNIT_ROUNDOFF;
+    const double directionUnits = cameraDirectionUnits(std::max({terms.x, terms.y, terms.z}), nearest);
+    return CERTAINTY_MARGIN * nearTieUnits(directionUnits) * FLOAT32_UNIT_ROUNDOFF;
 }
 
 std::optional<std::string> certificationProblem(const Scene& scene, bool generatedKernel) {

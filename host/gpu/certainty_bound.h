@@ -11,12 +11,11 @@
 namespace hexray::inline gpu {
 
 // Float32's error in a decision, per unit of the decision's scale (shaders/certified.glsl), for
-// camera rays through the sheet (topLeft + right s.x + down s.y, s in [0, 1]^2, from the eye): twice
-// the bound the CPU reference calls near-tied within for the sheet's worst ray (cpu_margins.h
-// decisionBounds: 2 (direction + 16) units of roundoff, the direction's per cameraDirectionRoundoff,
-// 8 max|terms| / |target| + 5), so that the kernel's own rounding of a margin cannot pass a decision
-// the reference calls near-tied. Over the sheet the terms are at most |topLeft| + |right| + |down|
-// and the target no nearer than the sheet's plane.
+// camera rays through the sheet (topLeft + right s.x + down s.y, s in [0, 1]^2, from the eye):
+// CERTAINTY_MARGIN times the near-tie bound (decision_roundoff.h nearTieUnits) of the sheet's worst
+// ray, so that the kernel's own rounding of a margin cannot pass a decision the reference calls
+// near-tied. Over the sheet the terms are at most |topLeft| + |right| + |down| and the target no
+// nearer than the sheet's plane.
 double certaintyBound(const glm::dvec3& topLeft, const glm::dvec3& right, const glm::dvec3& down);
 
 // Why f32-certified cannot render `scene` (which then renders in f64), or nothing. It certifies

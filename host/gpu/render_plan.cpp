@@ -217,8 +217,10 @@ Precision resolvePrecision(const Scene& scene, Precision requested, const Device
         return choosePrecision(scene, device.float64);
     }
     if (requested == Precision::F32Certified && device.float64) {
-        const auto problem =
-            float32RangeProblem(scene) ? float32RangeProblem(scene) : certificationProblem(scene, generatedKernel);
+        auto problem = float32RangeProblem(scene);
+        if (!problem) {
+            problem = certificationProblem(scene, generatedKernel);
+        }
         if (problem) {
             if (warnings) {
                 warnings->push_back("f32-certified cannot render this scene (" + *problem + "); rendering in f64");
