@@ -8,6 +8,7 @@
 
 #include "precision.glsl"
 #include "shader_interface.h"
+#include "texels.glsl"
 
 // Texels 0 to 2: the camera's right, down and forward axes (floats). Then three texels per grid
 // (host/layout/gpu_layout.h's GpuCandidateGrid), over tangent coordinates (u, v) =
@@ -40,17 +41,11 @@ struct CandidateSphere {
 };
 
 CandidateSphere candidateSphere(uint index) {
-#ifdef HEXRAY_F64
-    uvec4 a = texelFetch(candidateSpheres, int(3u * index));
-    uvec4 b = texelFetch(candidateSpheres, int(3u * index + 1u));
-    uvec4 c = texelFetch(candidateSpheres, int(3u * index + 2u));
-    dvec4 sphere = dvec4(packDouble2x32(a.xy), packDouble2x32(a.zw), packDouble2x32(b.xy), packDouble2x32(b.zw));
-    return CandidateSphere(sphere, packDouble2x32(c.xy), c.z);
-#else
-    uvec4 a = texelFetch(candidateSpheres, int(2u * index));
-    uvec4 b = texelFetch(candidateSpheres, int(2u * index + 1u));
-    return CandidateSphere(uintBitsToFloat(a), uintBitsToFloat(b.x), b.y);
-#endif
+    int at = (REAL_VEC4_TEXELS + 1) * int(index);
+    CandidateSphere s;
+    s.sphere = realVec4At(candidateSpheres, at);
+    s.eyePower = realAt(candidateSpheres, at + REAL_VEC4_TEXELS, s.node);
+    return s;
 }
 
 CandidateRange planeCandidates() {

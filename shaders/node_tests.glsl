@@ -10,7 +10,7 @@
 #include "scene_data.glsl"
 
 bool isPlaneNode(uint i) {
-    return nodes[i].kinds.x == GEOMETRY_PLANE;
+    return nodeKinds(i).x == GEOMETRY_PLANE;
 }
 
 // Distance along the ray to a sphere (centre, radius); `power` is the ray origin's (originPower).
@@ -23,21 +23,21 @@ real sphereDistanceFor(Ray ray, vec4r sphere, real power) {
 }
 
 real sphereNodeDistance(Ray ray, uint i, real power) {
-    return sphereDistanceFor(ray, nodes[i].geometry, power);
+    return sphereDistanceFor(ray, nodeGeometry(i), power);
 }
 
 real planeNodeDistance(Ray ray, uint i) {
 #ifdef HEXRAY_TEXTBOOK
-    return planeDistanceTextbook(ray, nodes[i].geometry.x);
+    return planeDistanceTextbook(ray, nodeGeometry(i).x);
 #else
-    return planeDistance(ray, nodes[i].geometry.x);
+    return planeDistance(ray, nodeGeometry(i).x);
 #endif
 }
 
 // Distance along a camera ray to node i. Camera rays all start at the eye, whose power with
 // respect to each sphere the host computed.
 real cameraRayDistance(Ray ray, uint i) {
-    return isPlaneNode(i) ? planeNodeDistance(ray, i) : sphereNodeDistance(ray, i, nodes[i].eyePower);
+    return isPlaneNode(i) ? planeNodeDistance(ray, i) : sphereNodeDistance(ray, i, nodeEyePower(i));
 }
 
 #endif  // HEXRAY_NODE_TESTS_GLSL

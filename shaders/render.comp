@@ -44,9 +44,9 @@ Hit findNearestHit(Ray ray) {
 // Whether plane `node` lies strictly between the surface and the light at `light`.
 bool planeBlocks(uint node, LightPath path, vec3r light) {
 #ifdef HEXRAY_TEXTBOOK
-    return planeDistanceTextbook(path.shadowRay, nodes[node].geometry.x) < path.shadowLength;
+    return planeDistanceTextbook(path.shadowRay, nodeGeometry(node).x) < path.shadowLength;
 #else
-    return planeSeparates(nodes[node].geometry.x, path.shadowRay.origin, light);
+    return planeSeparates(nodeGeometry(node).x, path.shadowRay.origin, light);
 #endif
 }
 
@@ -66,12 +66,13 @@ bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit,
 }
 
 bool isOccluded(uint light, LightPath path, Hit hit) {
-    vec3r position = lights[light].position.xyz;
-    bool hitSeenFromOutside = nodes[hit.node].eyePower > 0.0;  // planes: 0
+    vec4r lightAt = lightPosition(light);
+    vec3r position = lightAt.xyz;
+    bool hitSeenFromOutside = nodeEyePower(hit.node) > 0.0;  // planes: 0
 #ifdef HEXRAY_TEXTBOOK
     bool blocked = false;
 #else
-    bool blocked = lights[light].position.w > 0.0;  // a sphere holding the eye hides it
+    bool blocked = lightAt.w > 0.0;  // a sphere holding the eye hides it
 #endif
 #ifdef HEXRAY_CANDIDATES
     CandidateRange planes = planeCandidates();
@@ -86,7 +87,7 @@ bool isOccluded(uint light, LightPath path, Hit hit) {
 #else
     for (uint i = 0u; i < frame.nodeCount && !blocked; ++i) {
         blocked = isPlaneNode(i) ? planeBlocks(i, path, position)
-                                 : sphereBlocks(i, nodes[i].geometry, path, position, hit, hitSeenFromOutside);
+                                 : sphereBlocks(i, nodeGeometry(i), path, position, hit, hitSeenFromOutside);
     }
 #endif
     return blocked;
@@ -97,11 +98,11 @@ real candidateDistance(Ray ray, uint node) {
 }
 
 Surface hitSurface(Ray ray, Hit hit) {
-    vec4r geometry = nodes[hit.node].geometry;
+    vec4r geometry = nodeGeometry(hit.node);
 #ifdef HEXRAY_TEXTBOOK
     return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
-    real eyePower = nodes[hit.node].eyePower;
+    real eyePower = nodeEyePower(hit.node);
     Surface sphere = sphereSurface(ray, geometry, eyePower);
     sphere.shadowOrigin = sphereShadowOrigin(sphere, geometry, !(eyePower > 0.0));
     return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
@@ -109,22 +110,22 @@ Surface hitSurface(Ray ray, Hit hit) {
 }
 
 vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 irradiance, inout uint flags) {
-    Node node = nodes[hit.node];
-    if (node.kinds.y == SHADER_CONSTANT) {
-        return node.color1.rgb;
+    uint shader = nodeKinds(hit.node).y;
+    vec3 albedo = nodeColor1(hit.node).rgb;
+    if (shader == SHADER_CONSTANT) {
+        return albedo;
     }
     Surface s = hitSurface(ray, hit);
-    vec3 albedo = node.color1.rgb;
-    bool odd = isPlaneNode(hit.node) ? isOddPlaneCell(node.checker, s.position)
-                                     : isOddSphereCell(node.checker, s.outwardNormal);
-    if (node.kinds.y == SHADER_CHECKER && odd) {
-        albedo = node.color2.rgb;
+    vec4r checker = nodeChecker(hit.node);
+    bool odd = isPlaneNode(hit.node) ? isOddPlaneCell(checker, s.position) : isOddSphereCell(checker, s.outwardNormal);
+    if (shader == SHADER_CHECKER && odd) {
+        albedo = nodeColor2(hit.node).rgb;
         flags |= ODD_CHECKER_BIT;
     }
     traceSurface(s, albedo);
     for (uint i = firstLight; i < endLight; ++i) {
-        LightPath path = lightPath(s, lights[i].position.xyz);
-        irradiance += lightTerm(i, lights[i].power, path, isOccluded(i, path, hit), flags);
+        LightPath path = lightPath(s, lightPosition(i).xyz);
+        irradiance += lightTerm(i, lightPower(i), path, isOccluded(i, path, hit), flags);
     }
     return litColor(albedo, irradiance);
 }

@@ -1,25 +1,18 @@
-// The scene as uploaded by the host. Mirrors host/layout/gpu_layout.h (std430, offsets asserted there).
+// The scene as uploaded by the host. Mirrors host/layout/gpu_layout.h (offsets asserted there).
 // With the camera-relative placement the eye is the origin.
 //
-// Small scenes (HEXRAY_UNIFORM_SCENE: up to SMALL_SCENE_CAPACITY nodes and lights) come in
-// uniform buffers, which lavapipe reads as values shared by the whole SIMD group when the index
-// is a constant; larger ones in storage buffers. The structs are vec4-aligned, so the std140 and
-// std430 layouts of these blocks are the same bytes.
+// The frame is a uniform block: lavapipe reads it once for the whole SIMD group. Small scenes'
+// nodes and lights (HEXRAY_UNIFORM_SCENE: up to SMALL_SCENE_CAPACITY of each) are uniform blocks
+// too, which a generated kernel reads at constant indices; larger ones are uniform texel buffers
+// of the same bytes (texels.glsl), read at each lane's own index. Read them through the
+// accessors below, the same in both layouts.
 #ifndef HEXRAY_SCENE_DATA_GLSL
 #define HEXRAY_SCENE_DATA_GLSL
 
 #include "shader_interface.h"
 #include "precision.glsl"
 
-#ifdef HEXRAY_UNIFORM_SCENE
-#define SCENE_BLOCK(binding_) layout(std140, set = 0, binding = binding_) uniform
-#define SCENE_ARRAY_LENGTH SMALL_SCENE_CAPACITY
-#else
-#define SCENE_BLOCK(binding_) layout(std430, set = 0, binding = binding_) readonly buffer
-#define SCENE_ARRAY_LENGTH
-#endif
-
-SCENE_BLOCK(FRAME_BINDING) FrameBlock {
+layout(std140, set = 0, binding = FRAME_BINDING) uniform FrameBlock {
     vec4r origin;
     vec4r sheetTopLeft;
     vec4r sheetRight;
@@ -43,16 +36,58 @@ struct Node {
     vec4 color2;
     vec4r checker;    // .x size, .yz eye's fractional cell (plane), .w parity of the eye's cells
 };
-SCENE_BLOCK(NODE_BINDING) NodeBlock {
-    Node nodes[SCENE_ARRAY_LENGTH];
-};
 
 struct Light {
     vec4r position;   // .w: 1 when a sphere holding the eye hides it from every visible point
     vec4r power;      // colour * intensity (in f64 beyond float's range)
 };
-SCENE_BLOCK(LIGHT_BINDING) LightBlock {
-    Light lights[SCENE_ARRAY_LENGTH];
+
+#ifdef HEXRAY_UNIFORM_SCENE
+layout(std140, set = 0, binding = NODE_BINDING) uniform NodeBlock {
+    Node nodes[SMALL_SCENE_CAPACITY];
 };
+layout(std140, set = 0, binding = LIGHT_BINDING) uniform LightBlock {
+    Light lights[SMALL_SCENE_CAPACITY];
+};
+
+uvec4 nodeKinds(uint i) { return nodes[i].kinds; }
+vec4r nodeGeometry(uint i) { return nodes[i].geometry; }
+real nodeEyePower(uint i) { return nodes[i].eyePower; }
+vec4 nodeColor1(uint i) { return nodes[i].color1; }
+vec4 nodeColor2(uint i) { return nodes[i].color2; }
+vec4r nodeChecker(uint i) { return nodes[i].checker; }
+vec4r lightPosition(uint i) { return lights[i].position; }
+vec4r lightPower(uint i) { return lights[i].power; }
+#else
+#include "texels.glsl"
+
+layout(set = 0, binding = NODE_BINDING) uniform usamplerBuffer nodeTexels;
+layout(set = 0, binding = LIGHT_BINDING) uniform usamplerBuffer lightTexels;
+
+// Where Node's and Light's members start, in texels from the start of their record (asserted in
+// gpu_layout.h). std430 puts a dvec4, two texels, at a multiple of 32 bytes.
+#ifdef HEXRAY_F64
+const int NODE_GEOMETRY_TEXEL = 2, NODE_EYE_POWER_TEXEL = 4, NODE_COLOR1_TEXEL = 6, NODE_COLOR2_TEXEL = 7,
+          NODE_CHECKER_TEXEL = 8, NODE_TEXELS = 10;
+#else
+const int NODE_GEOMETRY_TEXEL = 1, NODE_EYE_POWER_TEXEL = 2, NODE_COLOR1_TEXEL = 3, NODE_COLOR2_TEXEL = 4,
+          NODE_CHECKER_TEXEL = 5, NODE_TEXELS = 6;
+#endif
+const int LIGHT_TEXELS = 2 * REAL_VEC4_TEXELS;
+
+int nodeTexel(uint i, int member) { return NODE_TEXELS * int(i) + member; }
+
+uvec4 nodeKinds(uint i) { return texelFetch(nodeTexels, nodeTexel(i, 0)); }
+vec4r nodeGeometry(uint i) { return realVec4At(nodeTexels, nodeTexel(i, NODE_GEOMETRY_TEXEL)); }
+real nodeEyePower(uint i) {
+    uint unused;
+    return realAt(nodeTexels, nodeTexel(i, NODE_EYE_POWER_TEXEL), unused);
+}
+vec4 nodeColor1(uint i) { return uintBitsToFloat(texelFetch(nodeTexels, nodeTexel(i, NODE_COLOR1_TEXEL))); }
+vec4 nodeColor2(uint i) { return uintBitsToFloat(texelFetch(nodeTexels, nodeTexel(i, NODE_COLOR2_TEXEL))); }
+vec4r nodeChecker(uint i) { return realVec4At(nodeTexels, nodeTexel(i, NODE_CHECKER_TEXEL)); }
+vec4r lightPosition(uint i) { return realVec4At(lightTexels, LIGHT_TEXELS * int(i)); }
+vec4r lightPower(uint i) { return realVec4At(lightTexels, LIGHT_TEXELS * int(i) + REAL_VEC4_TEXELS); }
+#endif
 
 #endif  // HEXRAY_SCENE_DATA_GLSL

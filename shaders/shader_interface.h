@@ -21,22 +21,24 @@ HEXRAY_CONSTANT uint WORKGROUP_SIZE = 8u;
 HEXRAY_CONSTANT uint FRAME_BINDING = 0u;
 HEXRAY_CONSTANT uint NODE_BINDING = 1u;
 HEXRAY_CONSTANT uint LIGHT_BINDING = 2u;
-HEXRAY_CONSTANT uint PIXEL_BINDING = 3u;    // linear RGB
-HEXRAY_CONSTANT uint CLASS_BINDING = 4u;    // what each pixel shows (node, flags)
-HEXRAY_CONSTANT uint ENCODED_BINDING = 5u;  // the finished 8-bit image
-HEXRAY_CONSTANT uint CANDIDATE_GRID_BINDING = 6u;    // candidate lists: the camera's and lights' grids
-HEXRAY_CONSTANT uint CANDIDATE_CELL_BINDING = 7u;    // candidate lists: where each cell's list starts
-HEXRAY_CONSTANT uint AOV_BINDING = 8u;      // inspection: per-pixel depth and normal
-HEXRAY_CONSTANT uint TRACE_BINDING = 9u;    // inspection: one pixel explained
-HEXRAY_CONSTANT uint TILE_BINDING = 10u;    // a tile class's kernel: the tiles it renders
-HEXRAY_CONSTANT uint CANDIDATE_ENTRY_BINDING = 11u;  // candidate lists: the lists, one after another
-HEXRAY_CONSTANT uint CANDIDATE_SPHERE_BINDING = 12u; // candidate lists: the spheres they name
-HEXRAY_CONSTANT uint CARRY_BINDING = 13u;   // light batches: what a pixel has so far, between dispatches
+HEXRAY_CONSTANT uint PIXEL_BINDING = 3u;              // linear RGB
+HEXRAY_CONSTANT uint CLASS_BINDING = 4u;              // what each pixel shows (node, flags)
+HEXRAY_CONSTANT uint ENCODED_BINDING = 5u;            // the finished 8-bit image
+HEXRAY_CONSTANT uint CANDIDATE_GRID_BINDING = 6u;     // candidate lists: the camera's and lights' grids
+HEXRAY_CONSTANT uint CANDIDATE_CELL_BINDING = 7u;     // candidate lists: where each cell's list starts
+HEXRAY_CONSTANT uint AOV_BINDING = 8u;                // inspection: per-pixel depth and normal
+HEXRAY_CONSTANT uint TRACE_BINDING = 9u;              // inspection: one pixel explained
+HEXRAY_CONSTANT uint TILE_BINDING = 10u;              // a tile class's kernel: the tiles it renders
+HEXRAY_CONSTANT uint CANDIDATE_ENTRY_BINDING = 11u;   // candidate lists: the lists, one after another
+HEXRAY_CONSTANT uint CANDIDATE_SPHERE_BINDING = 12u;  // candidate lists: the spheres they name
+HEXRAY_CONSTANT uint CARRY_BINDING = 13u;             // light batches: what a pixel has so far, between dispatches
 HEXRAY_CONSTANT uint SCENE_VALUE_BINDING = 14u;  // a generated kernel's scene values, when not specialization constants
 HEXRAY_CONSTANT uint BINDING_COUNT = 15u;
 // The candidate bindings are uniform texel buffers (RGBA32UI grids and spheres, R32UI cells and
-// entries): lavapipe reads a texel buffer at a different index in each lane with vector gathers,
-// a storage buffer one lane and one component at a time.
+// entries), and so are a larger scene's nodes and lights: lavapipe (Mesa 22.3) reads a texel buffer
+// at a different index in each lane with vector loads or gathers, but a storage buffer one lane
+// and one word at a time, each word inserted into its vector through the stack (a store-forwarding
+// stall on AVX2; 60 % of the candidate kernel's time when nodes and the frame were storage buffers).
 
 // Node kinds (GpuNode::kinds.x and .y).
 HEXRAY_CONSTANT uint GEOMETRY_PLANE = 0u;
@@ -71,9 +73,9 @@ HEXRAY_CONSTANT uint CLASSIFIED_LIGHTS = 31u;
 // How the shader treated one light at a traced sample.
 HEXRAY_CONSTANT uint TRACE_LIGHT_NOT_EVALUATED = 0u;  // background or a constant shader
 HEXRAY_CONSTANT uint TRACE_LIGHT_LIT = 1u;
-HEXRAY_CONSTANT uint TRACE_LIGHT_FACING_AWAY = 2u;    // cos theta <= 0
+HEXRAY_CONSTANT uint TRACE_LIGHT_FACING_AWAY = 2u;  // cos theta <= 0
 HEXRAY_CONSTANT uint TRACE_LIGHT_SHADOWED = 3u;
-HEXRAY_CONSTANT uint TRACE_LIGHT_AT_POINT = 4u;       // r^2 = 0
+HEXRAY_CONSTANT uint TRACE_LIGHT_AT_POINT = 4u;  // r^2 = 0
 
 // The uniform-buffer layout's capacity: scenes with at most this many nodes and as many lights
 // come in uniform blocks of this many entries.

@@ -36,9 +36,9 @@ BenchKernel kernelOf(const RenderPlan& plan, bool handWritten) {
     switch (plan.layout) {
         case SceneLayout::Uniform:
             return BenchKernel::Generated;
-        case SceneLayout::Storage:
+        case SceneLayout::Texels:
             return BenchKernel::DataDriven;
-        case SceneLayout::StorageCandidates:
+        case SceneLayout::TexelsCandidates:
             return BenchKernel::DataDrivenCandidates;
     }
     return BenchKernel::None;

@@ -18,24 +18,22 @@ bool CandidateBuffers::isCandidateBinding(std::uint32_t binding) {
     return std::find(kBindings.begin(), kBindings.end(), binding) != kBindings.end();
 }
 
-CandidateBuffers::TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
-                                                            const vk::raii::PhysicalDevice& physicalDevice,
-                                                            std::initializer_list<std::span<const std::byte>> pieces,
-                                                            vk::Format format) {
+TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
+                                          const vk::raii::PhysicalDevice& physicalDevice,
+                                          std::initializer_list<std::span<const std::byte>> pieces, vk::Format format) {
     std::size_t size = 0;
     for (const std::span<const std::byte> piece : pieces) {
         size += piece.size();
     }
-    HostVisibleBuffer buffer(device, physicalDevice, size, vk::BufferUsageFlagBits::eUniformTexelBuffer);
+    TexelBuffer texels(device, physicalDevice, size, format);
     std::size_t offset = 0;
     for (const std::span<const std::byte> piece : pieces) {
         if (!piece.empty()) {  // an empty span may have a null data(), which memcpy must not get
-            std::memcpy(buffer.data() + offset, piece.data(), piece.size());
+            std::memcpy(texels.buffer().data() + offset, piece.data(), piece.size());
         }
         offset += piece.size();
     }
-    vk::raii::BufferView view(device, vk::BufferViewCreateInfo({}, *buffer.buffer(), format, 0, VK_WHOLE_SIZE));
-    return TexelBuffer{std::move(buffer), std::move(view)};
+    return texels;
 }
 
 CandidateBuffers::CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
@@ -52,18 +50,13 @@ CandidateBuffers::CandidateBuffers(const vk::raii::Device& device, const vk::rai
 
 void CandidateBuffers::write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const {
     for (std::size_t i = 0; i < kBindings.size(); ++i) {
-        const vk::BufferView view = *buffers_[i].view;
-        device.updateDescriptorSets(
-            vk::WriteDescriptorSet(*set, kBindings[i], 0, 1, vk::DescriptorType::eUniformTexelBuffer, nullptr, nullptr,
-                                   &view),
-            nullptr);
+        buffers_[i].bind(device, set, kBindings[i]);
     }
 }
 
 void CandidateBuffers::abandon() {
     for (TexelBuffer& texels : buffers_) {
-        texels.view.release();
-        texels.buffer.abandon();
+        texels.abandon();
     }
 }
 

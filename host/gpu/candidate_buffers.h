@@ -10,7 +10,7 @@
 #include <vulkan/vulkan_raii.hpp>
 
 #include "accel/candidate_lists.h"
-#include "vulkan/host_visible_buffer.h"
+#include "vulkan/texel_buffer.h"
 
 namespace hexray::inline gpu {
 
@@ -31,10 +31,6 @@ public:
     void abandon();
 
 private:
-    struct TexelBuffer {
-        HostVisibleBuffer buffer;
-        vk::raii::BufferView view;
-    };
     // A buffer of `pieces` one after the other (no joined copy of them on the host).
     static TexelBuffer texelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                                    std::initializer_list<std::span<const std::byte>> pieces, vk::Format format);

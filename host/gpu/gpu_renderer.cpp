@@ -32,15 +32,19 @@ using gpu::GpuPixel;
 using gpu::GpuPixelClass;
 using gpu::WORKGROUP_SIZE;
 
-// The frame, nodes and lights come in uniform buffers for a small scene; the candidate lists in
-// texel buffers; every other binding, and all of them for a larger scene, are storage buffers.
+// The frame is a uniform buffer; a small scene's nodes and lights too, a larger scene's texel
+// buffers (scene_data.glsl), as are the candidate lists; every other binding is a storage buffer.
 vk::DescriptorType descriptorType(std::uint32_t binding, bool uniformScene) {
+    if (binding == gpu::FRAME_BINDING) {
+        return vk::DescriptorType::eUniformBuffer;
+    }
+    if (binding == gpu::NODE_BINDING || binding == gpu::LIGHT_BINDING) {
+        return uniformScene ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eUniformTexelBuffer;
+    }
     if (CandidateBuffers::isCandidateBinding(binding)) {
         return vk::DescriptorType::eUniformTexelBuffer;
     }
-    const bool sceneData =
-        binding == gpu::FRAME_BINDING || binding == gpu::NODE_BINDING || binding == gpu::LIGHT_BINDING;
-    return uniformScene && sceneData ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer;
+    return vk::DescriptorType::eStorageBuffer;
 }
 
 vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device, bool uniformScene) {
@@ -226,13 +230,13 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
       maxBandBytes_(maxBandBytes),
       kernels_(std::move(kernelCache), kept.generatedKernels),
       uniformScene_{createSetLayout(context.device(), true), nullptr},
-      storageScene_{createSetLayout(context.device(), false), nullptr},
+      texelScene_{createSetLayout(context.device(), false), nullptr},
       pipelines_(kept.pipelines),
       commandPool_(context.device(), vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                                context.queueFamily())),
       timestamps_(nullptr) {
     uniformScene_.pipelineLayout = createPipelineLayout(context.device(), uniformScene_.setLayout);
-    storageScene_.pipelineLayout = createPipelineLayout(context.device(), storageScene_.setLayout);
+    texelScene_.pipelineLayout = createPipelineLayout(context.device(), texelScene_.setLayout);
     const auto families = context.physicalDevice().getQueueFamilyProperties();
     const std::uint32_t validBits = families[context.queueFamily()].timestampValidBits;
     if (validBits > 0) {
@@ -245,7 +249,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, std::uint64_t maxBandByte
 GpuRenderer::~GpuRenderer() {
     if (context_.abandoned()) {  // the hung work may still use them: see LeakIfAbandoned
         pipelines_.forEach([](vk::raii::Pipeline& pipeline) { pipeline.release(); });
-        for (SceneBindings* bindings : {&uniformScene_, &storageScene_}) {
+        for (SceneBindings* bindings : {&uniformScene_, &texelScene_}) {
             bindings->pipelineLayout.release();
             bindings->setLayout.release();
         }
@@ -577,17 +581,20 @@ BandShape bandShape(const Scene& scene, GpuOutput output, bool tracing, bool lig
 // A render's buffers with its descriptor set, command buffer and fence: created together,
 // destroyed together, or after a hang left together to the device (abandon(), LeakIfAbandoned).
 struct BandBuffers {
-    HostVisibleBuffer frame, nodes, lights, pixels, classes, encoded, aov, trace, tiles, carry, sceneValues;
+    HostVisibleBuffer frame;
+    TexelBuffer nodes, lights;  // bound as the scene's layout asks (descriptorType)
+    HostVisibleBuffer pixels, classes, encoded, aov, trace, tiles, carry, sceneValues;
     CandidateBuffers candidates;
     vk::raii::DescriptorPool pool = nullptr;
     vk::raii::DescriptorSets sets = nullptr;
     vk::raii::CommandBuffers commandBuffers = nullptr;
     vk::raii::Fence done = nullptr;
 
-    // In binding order (shader_interface.h); the candidate bindings are CandidateBuffers'.
+    // The storage and uniform buffers in binding order (shader_interface.h); the texel buffers
+    // are bound on their own.
     std::array<HostVisibleBuffer*, gpu::BINDING_COUNT> byBinding() {
-        return {&frame, &nodes, &lights, &pixels, &classes, &encoded, nullptr,     nullptr,
-                &aov,   &trace, &tiles,  nullptr, nullptr,  &carry,   &sceneValues};
+        return {&frame, nullptr, nullptr, &pixels, &classes, &encoded, nullptr,     nullptr,
+                &aov,   &trace,  &tiles,  nullptr, nullptr,  &carry,   &sceneValues};
     }
     void abandon() {
         for (HostVisibleBuffer* buffer : byBinding()) {
@@ -595,6 +602,8 @@ struct BandBuffers {
                 buffer->abandon();
             }
         }
+        nodes.abandon();
+        lights.abandon();
         candidates.abandon();
         sets[0].release();
         pool.release();
@@ -629,6 +638,8 @@ void bindBandBuffers(BandBuffers& buffers, const vk::raii::Device& device, const
     buffers.sets = vk::raii::DescriptorSets(device, vk::DescriptorSetAllocateInfo(*buffers.pool, layouts));
     const vk::raii::DescriptorSet& set = buffers.sets[0];
     buffers.candidates.write(device, set);
+    buffers.nodes.bind(device, set, gpu::NODE_BINDING, descriptorType(gpu::NODE_BINDING, uniformScene));
+    buffers.lights.bind(device, set, gpu::LIGHT_BINDING, descriptorType(gpu::LIGHT_BINDING, uniformScene));
     const auto byBinding = buffers.byBinding();
     for (std::uint32_t binding = 0; binding < gpu::BINDING_COUNT; ++binding) {
         if (const HostVisibleBuffer* buffer = byBinding[binding]) {
@@ -677,34 +688,36 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
     const vk::raii::PhysicalDevice& physicalDevice = context.physicalDevice();
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
-    const vk::BufferUsageFlags sceneUsage = uniformScene ? vk::BufferUsageFlagBits::eUniformBuffer : storage;
     const auto sceneBuffer = [&](std::size_t size) {
-        return holdingScene(scene, plan, [&] { return HostVisibleBuffer(device, physicalDevice, size, sceneUsage); });
+        return holdingScene(scene, plan, [&] {
+            return TexelBuffer(device, physicalDevice, size, vk::Format::eR32G32B32A32Uint,
+                               vk::BufferUsageFlagBits::eUniformBuffer);
+        });
     };
     // Only the output mode's buffers get their full size; the others are bound but never written.
     const auto output = [&](bool used, std::size_t bytesPerPixel) {
         return HostVisibleBuffer(device, physicalDevice, used ? shape.pixels * bytesPerPixel : 0, storage);
     };
     const bool encoded = !shape.linear && traceRequest.empty();
-    BandBuffers buffers{HostVisibleBuffer(device, physicalDevice, packed.frame.size(), sceneUsage),
-                        sceneBuffer(packed.nodes.size()),
-                        sceneBuffer(packed.lights.size()),
-                        output(shape.linear, sizeof(GpuPixel)),
-                        output(shape.linear, sizeof(GpuPixelClass)),
-                        output(encoded, sizeof(gpu::GpuEncodedPixel)),
-                        output(shape.aov, sizeof(gpu::GpuAovPixel)),
-                        HostVisibleBuffer(device, physicalDevice, traceRequest.size(), storage),
-                        HostVisibleBuffer(device, physicalDevice, shape.tiles * sizeof(glm::uvec2), storage),
-                        output(shape.batched, sizeof(gpu::GpuPixelCarry)),
-                        HostVisibleBuffer(device, physicalDevice, packed.bufferedValues().size(), storage),
-                        holdingScene(scene, plan, [&] {
-                            return CandidateBuffers(device, physicalDevice, plan.candidates.get(),
-                                                    packed.candidateSpheres);
-                        })};
+    BandBuffers buffers{
+        HostVisibleBuffer(device, physicalDevice, packed.frame.size(), vk::BufferUsageFlagBits::eUniformBuffer),
+        sceneBuffer(packed.nodes.size()),
+        sceneBuffer(packed.lights.size()),
+        output(shape.linear, sizeof(GpuPixel)),
+        output(shape.linear, sizeof(GpuPixelClass)),
+        output(encoded, sizeof(gpu::GpuEncodedPixel)),
+        output(shape.aov, sizeof(gpu::GpuAovPixel)),
+        HostVisibleBuffer(device, physicalDevice, traceRequest.size(), storage),
+        HostVisibleBuffer(device, physicalDevice, shape.tiles * sizeof(glm::uvec2), storage),
+        output(shape.batched, sizeof(gpu::GpuPixelCarry)),
+        HostVisibleBuffer(device, physicalDevice, packed.bufferedValues().size(), storage),
+        holdingScene(scene, plan, [&] {
+            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
+        })};
     buffers.trace.upload(traceRequest);
     buffers.frame.upload(std::span(packed.frame));
-    buffers.nodes.upload(std::span(packed.nodes));
-    buffers.lights.upload(std::span(packed.lights));
+    buffers.nodes.buffer().upload(std::span(packed.nodes));
+    buffers.lights.buffer().upload(std::span(packed.lights));
     buffers.sceneValues.upload(packed.bufferedValues());
     bindBandBuffers(buffers, device, commandPool, setLayout, uniformScene);
     return buffers;
@@ -780,7 +793,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const auto uploadStart = std::chrono::steady_clock::now();
     const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     result.precision = plan.precision;
-    result.usedCandidateLists = plan.layout == SceneLayout::StorageCandidates;
+    result.usedCandidateLists = plan.layout == SceneLayout::TexelsCandidates;
     // The kernels: the plan's, or (culling, not for a traced pixel) one per tile class.
     const TileClassification* classification = tracing ? nullptr : plan.tileClasses.classification.get();
     const std::span<const Kernel> kernels =

@@ -158,7 +158,7 @@ private:
         vk::raii::PipelineLayout pipelineLayout;
     };
     const SceneBindings& bindings(SceneLayout layout) const {
-        return layout == SceneLayout::Uniform ? uniformScene_ : storageScene_;
+        return layout == SceneLayout::Uniform ? uniformScene_ : texelScene_;
     }
     // Pipelines by kernel (a prebuilt one's SPIR-V address, or a generated one's
     // KernelBuild::generatedId), layout and specialization (a generated kernel's scene values
@@ -186,7 +186,7 @@ private:
     std::uint64_t maxBandBytes_;
     KernelCompiler kernels_;
     SceneBindings uniformScene_;  // small scenes: scene data in uniform buffers
-    SceneBindings storageScene_;  // larger ones: in storage buffers, with or without a BVH
+    SceneBindings texelScene_;    // larger ones: in texel buffers, with or without candidate lists
     LruMap<PipelineKey, vk::raii::Pipeline> pipelines_;
     std::uint64_t pipelinesCreated_ = 0;
     vk::raii::CommandPool commandPool_;

@@ -295,12 +295,12 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
     plan.width = plan.precision == Precision::F64 ? FloatWidth::F64 : FloatWidth::F32;
     plan.formulation = plan.precision == Precision::F32Naive ? Formulation::Textbook : Formulation::Robust;
     plan.placement = placementFor(scene, plan.formulation);
-    plan.layout = isSmallScene(scene) && request.generatedKernel ? SceneLayout::Uniform : SceneLayout::Storage;
+    plan.layout = isSmallScene(scene) && request.generatedKernel ? SceneLayout::Uniform : SceneLayout::Texels;
     if (wantsCandidates(scene, request)) {
         auto lists = buildCandidateLists(scene, plan.placement, plan.width, plan.formulation);
         if (lists && fitsDevice(*lists, plan.width, device)) {
             plan.candidates = std::make_shared<const CandidateLists>(std::move(*lists));
-            plan.layout = SceneLayout::StorageCandidates;
+            plan.layout = SceneLayout::TexelsCandidates;
         }
     }
     if (plan.layout == SceneLayout::Uniform) {
@@ -312,7 +312,7 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
             plan.tileClasses = tileClassesFor(scene, code);
         }
     } else {
-        const bool candidates = plan.layout == SceneLayout::StorageCandidates;
+        const bool candidates = plan.layout == SceneLayout::TexelsCandidates;
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
     }

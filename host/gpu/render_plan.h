@@ -27,9 +27,9 @@ namespace hexray::inline gpu {
 
 // How the scene's data reaches the kernel.
 enum class SceneLayout {
-    Uniform,            // small scenes: uniform buffers, read at constant indices by a generated kernel
-    Storage,            // storage buffers, every node for every ray (the data-driven kernel)
-    StorageCandidates,  // storage buffers, and per direction the spheres a ray can meet (candidate_lists.h)
+    Uniform,           // small scenes: uniform buffers, read at constant indices by a generated kernel
+    Texels,            // texel buffers, every node for every ray (the data-driven kernel)
+    TexelsCandidates,  // texel buffers, and per direction the spheres a ray can meet (candidate_lists.h)
 };
 
 struct DeviceAbilities {

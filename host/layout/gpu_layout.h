@@ -131,6 +131,15 @@ static_assert(offsetof(Specialization, outputMode) == OUTPUT_MODE_ID * sizeof(st
 static_assert(offsetof(Specialization, samplesPerPixel) == SAMPLES_PER_PIXEL_ID * sizeof(std::uint32_t));
 
 // --- The candidate lists' texels (16 bytes each)
+// scene_data.glsl reads nodes and lights as 16-byte texels, each member from this texel on.
+static_assert(offsetof(GpuNode<float>, geometry) == 1 * 16 && offsetof(GpuNode<double>, geometry) == 2 * 16);
+static_assert(offsetof(GpuNode<float>, eyePower) == 2 * 16 && offsetof(GpuNode<double>, eyePower) == 4 * 16);
+static_assert(offsetof(GpuNode<float>, color1) == 3 * 16 && offsetof(GpuNode<double>, color1) == 6 * 16);
+static_assert(offsetof(GpuNode<float>, color2) == 4 * 16 && offsetof(GpuNode<double>, color2) == 7 * 16);
+static_assert(offsetof(GpuNode<float>, checker) == 5 * 16 && offsetof(GpuNode<double>, checker) == 8 * 16);
+static_assert(sizeof(GpuNode<float>) == 6 * 16 && sizeof(GpuNode<double>) == 10 * 16);
+static_assert(offsetof(GpuLight<float>, power) == 1 * 16 && offsetof(GpuLight<double>, power) == 2 * 16);
+static_assert(sizeof(GpuLight<float>) == 2 * 16 && sizeof(GpuLight<double>) == 4 * 16);
 static_assert(sizeof(GpuCandidateAxes) == 48);
 static_assert(offsetof(GpuCandidateGrid, cells) == 16);
 static_assert(offsetof(GpuCandidateGrid, reach) == 32);

@@ -116,7 +116,7 @@ TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
         scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
     }
     const RenderPlan plan = planRender(scene, {Precision::F32}, kLavapipe);
-    EXPECT_EQ(plan.layout, SceneLayout::StorageCandidates);
+    EXPECT_EQ(plan.layout, SceneLayout::TexelsCandidates);
     ASSERT_TRUE(plan.candidates);
     EXPECT_EQ(plan.candidates->sphereNodes.size(), countSpheres(scene));
     EXPECT_FALSE(plan.kernel.code);
@@ -124,7 +124,7 @@ TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
     EXPECT_EQ(plan.kernel.name, "render.comp f32 candidates");
 
     const RenderPlan everyNode = planRender(scene, {Precision::F32, Acceleration::None}, kLavapipe);
-    EXPECT_EQ(everyNode.layout, SceneLayout::Storage);
+    EXPECT_EQ(everyNode.layout, SceneLayout::Texels);
     EXPECT_FALSE(everyNode.candidates);
     EXPECT_EQ(everyNode.kernel.name, "render.comp f32 storage");
 }
@@ -138,9 +138,9 @@ TEST(RenderPlan, ListsTheDeviceCannotHoldAreNotUsed) {
     ASSERT_TRUE(fits.candidates);
     const auto largest = std::uint32_t(std::max(fits.candidates->entries.size(), fits.candidates->cellStarts.size()));
     EXPECT_EQ(planRender(scene, {Precision::F32}, DeviceAbilities{"just enough", true, largest}).layout,
-              SceneLayout::StorageCandidates);
+              SceneLayout::TexelsCandidates);
     const RenderPlan tooSmall = planRender(scene, {Precision::F32}, DeviceAbilities{"small", true, largest - 1});
-    EXPECT_EQ(tooSmall.layout, SceneLayout::Storage);
+    EXPECT_EQ(tooSmall.layout, SceneLayout::Texels);
     EXPECT_FALSE(tooSmall.candidates);
 }
 
@@ -152,7 +152,7 @@ TEST(RenderPlan, LargeScenesWithoutSpheresTestEveryNode) {
         scene.nodes.push_back(plane);
     }
     const RenderPlan plan = planRender(scene, {Precision::F32, Acceleration::Always}, kLavapipe);
-    EXPECT_EQ(plan.layout, SceneLayout::Storage);
+    EXPECT_EQ(plan.layout, SceneLayout::Texels);
     EXPECT_FALSE(plan.candidates);
 }
 

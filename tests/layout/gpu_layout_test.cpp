@@ -33,8 +33,10 @@ struct Member {
         prefix #member, offsetof(type, member) \
     }
 
+// `nodes` and `lights` name the arrays whose element 0 reflection lists: the uniform blocks, or for
+// the texel layout (read as texels at the offsets gpu_layout.h asserts) the std430 probes.
 template <typename Real>
-std::vector<Member> sceneMembers() {
+std::vector<Member> sceneMembers(const std::string& nodes, const std::string& lights) {
     using Frame = GpuFrame<Real>;
     using Node = GpuNode<Real>;
     using Light = GpuLight<Real>;
@@ -44,10 +46,10 @@ std::vector<Member> sceneMembers() {
         MEMBER("FrameBlock.", Frame, background), MEMBER("FrameBlock.", Frame, ambient),
         MEMBER("FrameBlock.", Frame, imageSize),  MEMBER("FrameBlock.", Frame, samplingOffset),
         MEMBER("FrameBlock.", Frame, nodeCount),  MEMBER("FrameBlock.", Frame, lightCount),
-        MEMBER("nodes[0].", Node, kinds),         MEMBER("nodes[0].", Node, geometry),
-        MEMBER("nodes[0].", Node, eyePower),      MEMBER("nodes[0].", Node, color1),
-        MEMBER("nodes[0].", Node, color2),        MEMBER("nodes[0].", Node, checker),
-        MEMBER("lights[0].", Light, position),    MEMBER("lights[0].", Light, power),
+        MEMBER(nodes + "[0].", Node, kinds),      MEMBER(nodes + "[0].", Node, geometry),
+        MEMBER(nodes + "[0].", Node, eyePower),   MEMBER(nodes + "[0].", Node, color1),
+        MEMBER(nodes + "[0].", Node, color2),     MEMBER(nodes + "[0].", Node, checker),
+        MEMBER(lights + "[0].", Light, position), MEMBER(lights + "[0].", Light, power),
     };
 }
 
@@ -125,8 +127,8 @@ std::map<std::string, Reflected> reflectBlocks(const std::string& defines) {
                                "    PixelCarry pixelCarryProbe[2];\n"
                                "};\n"
                                "void main() {\n"
-                               "    pixels[0] = vec4(frame.nodeCount + nodes[0].kinds.x + band.firstRow);\n"
-                               "    classes[0] = uvec2(float(lights[0].power.x));\n"
+                               "    pixels[0] = vec4(frame.nodeCount + nodeKinds(0u).x + band.firstRow);\n"
+                               "    classes[0] = uvec2(float(lightPower(0u).x));\n"
                                "    encodedPixels[0] = trace.header.request.x + trace.entries[0].status.x;\n"
                                "    aovs[0] = vec4(nodeProbe[1].kinds.x + lightProbe[1].power.x + "
                                "traceEntryProbe[1].color.x + pixelCarryProbe[1].flags + carry[0].flags);\n"
@@ -187,6 +189,7 @@ struct Variant {
     const char* name;
     const char* defines;
     bool f64;
+    bool texels;  // nodes and lights in texel buffers
 };
 
 void PrintTo(const Variant& variant, std::ostream* out) {
@@ -199,7 +202,10 @@ TEST_P(GpuLayoutTest, EveryMemberAndStrideIsWhereTheCppMirrorPutsIt) {
     const Variant variant = GetParam();
     const std::map<std::string, Reflected> reflected = reflectBlocks(variant.defines);
     ASSERT_FALSE(reflected.empty());
-    std::vector<Member> expected = variant.f64 ? sceneMembers<double>() : sceneMembers<float>();
+    const std::string nodes = variant.texels ? "nodeProbe" : "nodes";
+    const std::string lights = variant.texels ? "lightProbe" : "lights";
+    std::vector<Member> expected =
+        variant.f64 ? sceneMembers<double>(nodes, lights) : sceneMembers<float>(nodes, lights);
     const std::vector<Member> outputs = variant.f64 ? outputMembers<double>() : outputMembers<float>();
     expected.insert(expected.end(), outputs.begin(), outputs.end());
     for (const Member& member : expected) {
@@ -213,14 +219,16 @@ TEST_P(GpuLayoutTest, EveryMemberAndStrideIsWhereTheCppMirrorPutsIt) {
         ASSERT_NE(found, reflected.end()) << name << " is not in the GLSL; it has:\n" << listed(reflected);
         EXPECT_EQ(std::size_t(found->second.arrayStride), stride) << name;
     }
-    // Every member the GLSL declares has its C++ mirror: padding, the probes, the other elements
+    // Every member the GLSL declares has its C++ mirror: padding, the probes, the texel buffers
+    // (samplers, not blocks: their texels are asserted in gpu_layout.h), the other elements
     // of a uniform array ("nodes[9].kinds") and the second name reflection gives a member reached
     // through a variable index ("nodes.kinds") aside.
     const auto mirrored = [&](std::string name) {
         name = std::regex_replace(name, std::regex(R"(\[[0-9]+\])"), "[0]");
         return std::any_of(expected.begin(), expected.end(), [&](const Member& m) { return m.name == name; }) ||
                strides.count(name) > 0 || name.find("unused") != std::string::npos ||
-               name.find("Probe") != std::string::npos || name.find("probe") != std::string::npos;
+               name.find("Probe") != std::string::npos || name.find("probe") != std::string::npos ||
+               name.ends_with("Texels");
     };
     const auto secondName = [&](const std::string& name) {
         for (std::size_t dot = name.find('.'); dot != std::string::npos; dot = name.find('.', dot + 1)) {
@@ -238,9 +246,9 @@ TEST_P(GpuLayoutTest, EveryMemberAndStrideIsWhereTheCppMirrorPutsIt) {
 
 INSTANTIATE_TEST_SUITE_P(
     Variants, GpuLayoutTest,
-    ::testing::Values(Variant{"StorageF32", "", false}, Variant{"StorageF64", "#define HEXRAY_F64\n", true},
-                      Variant{"UniformF32", "#define HEXRAY_UNIFORM_SCENE\n", false},
-                      Variant{"UniformF64", "#define HEXRAY_F64\n#define HEXRAY_UNIFORM_SCENE\n", true}),
+    ::testing::Values(Variant{"TexelsF32", "", false, true}, Variant{"TexelsF64", "#define HEXRAY_F64\n", true, true},
+                      Variant{"UniformF32", "#define HEXRAY_UNIFORM_SCENE\n", false, false},
+                      Variant{"UniformF64", "#define HEXRAY_F64\n#define HEXRAY_UNIFORM_SCENE\n", true, false}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
