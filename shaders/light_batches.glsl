@@ -26,9 +26,15 @@ layout(std430, set = 0, binding = CARRY_BINDING) buffer CarryBlock {
     PixelCarry carry[];
 };
 
-#define FIRST_SAMPLE band.firstSample
-#define END_SAMPLE band.endSample
-#define LAST_LIGHTS (band.endLight == frame.lightCount)
+// Whether the host renders each band in several dispatches (LightBatches::splits). Without, a
+// dispatch renders every sample and light of its pixels, and the carrying folds away when the
+// pipeline is made: lavapipe then unrolls the sample loop, which its bounds from the band kept it
+// from (the candidate kernel ran 1.8 times as long per pixel with them).
+layout(constant_id = LIGHT_BATCHES_ID) const bool LIGHTS_IN_BATCHES = false;
+
+#define FIRST_SAMPLE (LIGHTS_IN_BATCHES ? band.firstSample : 0u)
+#define END_SAMPLE (LIGHTS_IN_BATCHES ? band.endSample : SAMPLES_PER_PIXEL)
+#define LAST_LIGHTS (!LIGHTS_IN_BATCHES || band.endLight == frame.lightCount)
 
 // A hit's colour lit by lights [firstLight, endLight) on top of `irradiance`, which they are added
 // to; `flags` gains ODD_CHECKER_BIT and their lit bits (render.comp).
@@ -39,7 +45,7 @@ vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 ir
 vec3 shadeSample(Ray ray, Hit hit, bool background, uint index, out uint flags) {
     vec3 irradiance = frame.ambient.rgb;
     flags = 0u;
-    if (band.firstLight > 0u) {
+    if (LIGHTS_IN_BATCHES && band.firstLight > 0u) {
         irradiance = carry[index].irradiance;
         flags = carry[index].flags;
     }

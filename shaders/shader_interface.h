@@ -58,7 +58,8 @@ HEXRAY_CONSTANT uint OUTPUT_TRACE = 4u;                   // one pixel explained
 // (host/kernels/scene_constants.h), one id per component from FIRST_SCENE_CONSTANT_ID on.
 HEXRAY_CONSTANT uint OUTPUT_MODE_ID = 0u;
 HEXRAY_CONSTANT uint SAMPLES_PER_PIXEL_ID = 1u;
-HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 2u;
+HEXRAY_CONSTANT uint LIGHT_BATCHES_ID = 2u;  // the data-driven kernel: 1 when a band takes several dispatches
+HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 3u;
 
 // What each pixel shows (PixelClass on the host): the node index, or BACKGROUND; flags with
 // ODD_CHECKER_BIT for a checker-shaded hit in a color2 cell and bit i + 1 for each of the first

@@ -789,7 +789,8 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
                               const std::function<void(const Band&)>& consume, RowRange rowRange,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
-    const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel};
+    const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel,
+                                             plan.lightBatches.splits() && !tracing};
     const auto uploadStart = std::chrono::steady_clock::now();
     const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     result.precision = plan.precision;
@@ -917,7 +918,8 @@ void GpuRenderer::renderPixelsInDoubt(const Scene& scene, const RenderPlan& fall
         constexpr std::size_t kGroup = WORKGROUP_SIZE * WORKGROUP_SIZE;
         const std::size_t listed = (found.pixels.size() + kGroup - 1) / kGroup * kGroup;
         found.pixels.resize(listed, glm::uvec2(UINT32_MAX));
-        const gpu::Specialization specialization{outputModeFor(scene, output, false), scene.image.samplesPerPixel};
+        const gpu::Specialization specialization{outputModeFor(scene, output, false), scene.image.samplesPerPixel,
+                                                 fallback.lightBatches.splits()};
         const PackedScene packed = packFor(scene, fallback);
         const vk::raii::Pipeline* pipeline =
             pipelinesFor(std::span(&fallback.kernel, 1), fallback, specialization, packed.specValues(),
