@@ -162,8 +162,28 @@ double predictFrameSeconds(BenchBackends& backends, const BenchScene& bench, con
     return measurement.renderMilliseconds.back() * 1e-3 * pixels / (double(probe.image.width) * probe.image.height);
 }
 
-// The curve: a random-sphere scene per count, each backend at its natural precision, N ascending;
-// a backend predicted to need more than --max-frame-seconds at some N is left out there.
+// The curve's rows chosen: each backend at its natural precision, and the GPU in f32-naive.
+std::vector<std::pair<BenchBackend, Precision>> curveRows(const BenchSelection& selection,
+                                                          const BenchBackends& backends) {
+    std::vector<std::pair<BenchBackend, Precision>> rows;
+    if (selection.contains(BenchRowKind::GpuF32Naive)) {
+        rows.emplace_back(BenchBackend::Gpu, Precision::F32Naive);
+    }
+    if (selection.contains(BenchRowKind::GpuF32)) {
+        rows.emplace_back(BenchBackend::Gpu, Precision::F32);
+    }
+    if (selection.contains(BenchRowKind::Cpu)) {
+        rows.emplace_back(BenchBackend::Cpu, Precision::F32);
+    }
+    for (const BenchBackend embree : embreeBackends(selection, backends)) {
+        rows.emplace_back(embree, Precision::F32);
+    }
+    return rows;
+}
+
+// The curve: a random-sphere scene per count, N ascending, each backend at its natural precision
+// (the GPU also in f32-naive when chosen); a row predicted to need more than --max-frame-seconds at
+// some N is left out there.
 void addCurve(const BenchOptions& options, const BenchSelection& selection, BenchBackends& backends, Bench& bench) {
     std::vector<std::uint32_t> counts = options.sphereCounts;
     std::sort(counts.begin(), counts.end());
@@ -174,27 +194,19 @@ void addCurve(const BenchOptions& options, const BenchSelection& selection, Benc
         applyImageOverride(scene, options.image);
         bench.scenes.push_back({"random-spheres", count, std::move(scene), {}});
     }
-    std::vector<BenchBackend> curveBackends;
-    if (selection.contains(BenchRowKind::GpuF32)) {
-        curveBackends.push_back(BenchBackend::Gpu);
-    }
-    if (selection.contains(BenchRowKind::Cpu)) {
-        curveBackends.push_back(BenchBackend::Cpu);
-    }
-    const std::vector<BenchBackend> embree = embreeBackends(selection, backends);
-    curveBackends.insert(curveBackends.end(), embree.begin(), embree.end());
-    for (const BenchBackend backend : curveBackends) {
+    for (const auto& [backend, precision] : curveRows(selection, backends)) {
+        const std::string row = backends.name(backend) + (precision == Precision::F32Naive ? " f32-naive" : "");
         for (const std::uint32_t spp : options.samples) {
             std::string skipped;
             double previousSeconds = 0;
             std::uint32_t previousCount = 0;
             for (std::size_t index = first; index < bench.scenes.size(); ++index) {
                 const std::uint32_t count = *bench.scenes[index].spheres;
-                const BenchConfiguration configuration{index, backend, Precision::F32, Culling::Off, spp};
+                const BenchConfiguration configuration{index, backend, precision, Culling::Off, spp};
                 const double seconds = predictFrameSeconds(backends, bench.scenes[index], configuration,
                                                            probeShare(previousSeconds, previousCount, count));
-                std::fprintf(stderr, "bench: %s, %u spheres, %u spp: a frame should take about %.2f s\n",
-                             backends.name(backend).c_str(), count, spp, seconds);
+                std::fprintf(stderr, "bench: %s, %u spheres, %u spp: a frame should take about %.2f s\n", row.c_str(),
+                             count, spp, seconds);
                 previousSeconds = seconds;
                 previousCount = count;
                 if (seconds > options.maxFrameSeconds) {
@@ -206,8 +218,8 @@ void addCurve(const BenchOptions& options, const BenchSelection& selection, Benc
                 }
             }
             if (!skipped.empty()) {
-                bench.notes.push_back(backends.name(backend) + " at " + std::to_string(spp) + " spp: not measured at " +
-                                      skipped + " spheres: a low-resolution probe predicts a frame over " +
+                bench.notes.push_back(row + " at " + std::to_string(spp) + " spp: not measured at " + skipped +
+                                      " spheres: a low-resolution probe predicts a frame over " +
                                       "--max-frame-seconds " + formatSeconds(options.maxFrameSeconds) + ".");
             }
         }
