@@ -19,6 +19,7 @@
 #include "cli/quiet.h"
 #include "cpu/cpu_renderer.h"
 #include "demo_scene.h"
+#include "gpu/plan_refused.h"
 #include "io/output_file.h"
 #include "scene/random_spheres.h"
 #include "scene/scene_loader.h"
@@ -203,8 +204,15 @@ void addCurve(const BenchOptions& options, const BenchSelection& selection, Benc
             for (std::size_t index = first; index < bench.scenes.size(); ++index) {
                 const std::uint32_t count = *bench.scenes[index].spheres;
                 const BenchConfiguration configuration{index, backend, precision, Culling::Off, spp};
-                const double seconds = predictFrameSeconds(backends, bench.scenes[index], configuration,
-                                                           probeShare(previousSeconds, previousCount, count));
+                double seconds = 0;
+                try {
+                    seconds = predictFrameSeconds(backends, bench.scenes[index], configuration,
+                                                  probeShare(previousSeconds, previousCount, count));
+                } catch (const PlanRefused& refused) {
+                    bench.notes.push_back(row + " at " + std::to_string(spp) + " spp: not measured at " +
+                                          std::to_string(count) + " spheres: " + refused.reason() + ".");
+                    continue;
+                }
                 std::fprintf(stderr, "bench: %s, %u spheres, %u spp: a frame should take about %.2f s\n", row.c_str(),
                              count, spp, seconds);
                 previousSeconds = seconds;

@@ -257,6 +257,21 @@ TEST_F(CliTest, BenchPrintsSpeedAgainstErrorAndWritesCsv) {
     EXPECT_NE(run.out.find(kWithEmbree ? "Embree: Embree 3." : "built without Embree"), std::string::npos) << run.out;
 }
 
+// f32-naive's shadow lists at 100k spheres take a pixel past lavapipe's loop limit, so its plan is
+// refused: the curve leaves that row out with the reason and measures the others.
+TEST_F(CliTest, BenchSphereCurveLeavesOutARowWhosePlanIsRefused) {
+    const RunResult run = hexray(
+        "bench --spheres 100000 --width 32 --height 18 --rounds 1 --samples 1 "
+        "--backends gpu-f32,gpu-f32-naive --max-frame-seconds 1e9 --csv c.csv");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("lavapipe f32-naive at 1 spp: not measured at 100000 spheres: "), std::string::npos)
+        << run.out;
+    EXPECT_NE(run.out.find("65535"), std::string::npos) << run.out;
+    const auto rows = csvRows(readFile(dir_ / "c.csv"));
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(field(rows, 1, "precision_used"), "f32");
+}
+
 TEST_F(CliTest, BenchSphereCurveHasARowPerBackendAndCount) {
     // --max-frame-seconds out of reach: the probe that leaves slow backends out measures time, and
     // the rows must not depend on how fast or loaded the machine is.
