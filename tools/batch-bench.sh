@@ -21,6 +21,8 @@ out = sys.argv[1]
 os.makedirs(out)
 for path in sys.argv[2:]:
     scene = json.load(open(path))
+    if "nodes" not in scene:
+        continue  # not a scene: scenes/hexray-expectations.json
     scene["image"].update(width=320, height=240)
     base = os.path.splitext(os.path.basename(path))[0]
     yaw = scene["camera"].get("yaw", 0)
