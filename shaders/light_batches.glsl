@@ -29,7 +29,7 @@ layout(std430, set = 0, binding = CARRY_BINDING) buffer CarryBlock {
 // Whether the host renders each band in several dispatches (LightBatches::splits). Without, a
 // dispatch renders every sample and light of its pixels, and the carrying folds away when the
 // pipeline is made: lavapipe then unrolls the sample loop, which its bounds from the band kept it
-// from (the candidate kernel ran 1.8 times as long per pixel with them).
+// from (docs/performance.md, "The data-driven kernel on lavapipe").
 layout(constant_id = LIGHT_BATCHES_ID) const bool LIGHTS_IN_BATCHES = false;
 
 #define FIRST_SAMPLE (LIGHTS_IN_BATCHES ? band.firstSample : 0u)

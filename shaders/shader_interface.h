@@ -38,7 +38,7 @@ HEXRAY_CONSTANT uint BINDING_COUNT = 15u;
 // entries), and so are a larger scene's nodes and lights: lavapipe (Mesa 22.3) reads a texel buffer
 // at a different index in each lane with vector loads or gathers, but a storage buffer one lane
 // and one word at a time, each word inserted into its vector through the stack (a store-forwarding
-// stall on AVX2; 60 % of the candidate kernel's time when nodes and the frame were storage buffers).
+// stall on AVX2: docs/performance.md, "The data-driven kernel on lavapipe").
 
 // Node kinds (GpuNode::kinds.x and .y).
 HEXRAY_CONSTANT uint GEOMETRY_PLANE = 0u;
