@@ -64,14 +64,15 @@ vec4r lightPower(uint i) { return lights[i].power; }
 layout(set = 0, binding = NODE_BINDING) uniform usamplerBuffer nodeTexels;
 layout(set = 0, binding = LIGHT_BINDING) uniform usamplerBuffer lightTexels;
 
-// Where Node's and Light's members start, in texels from the start of their record (asserted in
-// gpu_layout.h). std430 puts a dvec4, two texels, at a multiple of 32 bytes.
+// Where Node's members start, in texels from the start of its record (shader_interface.h).
 #ifdef HEXRAY_F64
-const int NODE_GEOMETRY_TEXEL = 2, NODE_EYE_POWER_TEXEL = 4, NODE_COLOR1_TEXEL = 6, NODE_COLOR2_TEXEL = 7,
-          NODE_CHECKER_TEXEL = 8, NODE_TEXELS = 10;
+const int NODE_GEOMETRY_TEXEL = int(NODE_GEOMETRY_TEXEL_F64), NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F64),
+          NODE_COLOR1_TEXEL = int(NODE_COLOR1_TEXEL_F64), NODE_COLOR2_TEXEL = int(NODE_COLOR2_TEXEL_F64),
+          NODE_CHECKER_TEXEL = int(NODE_CHECKER_TEXEL_F64), NODE_TEXELS = int(NODE_TEXELS_F64);
 #else
-const int NODE_GEOMETRY_TEXEL = 1, NODE_EYE_POWER_TEXEL = 2, NODE_COLOR1_TEXEL = 3, NODE_COLOR2_TEXEL = 4,
-          NODE_CHECKER_TEXEL = 5, NODE_TEXELS = 6;
+const int NODE_GEOMETRY_TEXEL = int(NODE_GEOMETRY_TEXEL_F32), NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F32),
+          NODE_COLOR1_TEXEL = int(NODE_COLOR1_TEXEL_F32), NODE_COLOR2_TEXEL = int(NODE_COLOR2_TEXEL_F32),
+          NODE_CHECKER_TEXEL = int(NODE_CHECKER_TEXEL_F32), NODE_TEXELS = int(NODE_TEXELS_F32);
 #endif
 const int LIGHT_TEXELS = 2 * REAL_VEC4_TEXELS;
 

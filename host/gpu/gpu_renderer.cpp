@@ -560,11 +560,11 @@ struct BandShape {
 
 // Large images render in bands of rows so the pixel buffer (and the light batches' carry) stays
 // within `limit` bytes; a band is whole rows of tiles.
-BandShape bandShape(const Scene& scene, GpuOutput output, bool tracing, bool lightBatches, bool tiled,
+// `batched`: a band takes several dispatches that carry what a pixel has so far.
+BandShape bandShape(const Scene& scene, GpuOutput output, bool tracing, bool batched, bool tiled,
                     vk::DeviceSize limit) {
     const std::uint32_t width = scene.image.width;
     const std::uint32_t height = scene.image.height;
-    const bool batched = lightBatches && !tracing;
     const vk::DeviceSize rowBytes =
         vk::DeviceSize{width} * (sizeof(GpuPixel) + (batched ? sizeof(gpu::GpuPixelCarry) : 0));
     const std::uint32_t fitting = std::uint32_t(std::clamp<vk::DeviceSize>(limit / rowBytes, 1, height));
@@ -789,8 +789,9 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
                               const std::function<void(const Band&)>& consume, RowRange rowRange,
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
+    const bool batched = plan.lightBatches.splits() && !tracing;  // a traced pixel is one dispatch
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel,
-                                             plan.lightBatches.splits() && !tracing};
+                                             batched};
     const auto uploadStart = std::chrono::steady_clock::now();
     const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     result.precision = plan.precision;
@@ -805,8 +806,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
         classification, plan.lightBatches.work(scene.image.samplesPerPixel, lightCount), scene.image.width};
     const vk::DeviceSize bandBytes =
         std::min<vk::DeviceSize>(context_.physicalDevice().getProperties().limits.maxStorageBufferRange, maxBandBytes_);
-    const BandShape shape =
-        bandShape(scene, output, tracing, plan.lightBatches.splits(), classification != nullptr, bandBytes);
+    const BandShape shape = bandShape(scene, output, tracing, batched, classification != nullptr, bandBytes);
     const SceneBindings& sceneBindings = bindings(plan.layout);
     BandBuffers buffers =
         makeBandBuffers(context_, commandPool_, sceneBindings.setLayout, scene, plan, packed, shape, traceRequest);

@@ -140,7 +140,6 @@ bool wantsCandidates(const Scene& scene, const PlanRequest& request) {
 bool fitsDevice(const CandidateLists& lists, FloatWidth width, const DeviceAbilities& device) {
     const std::size_t record =
         width == FloatWidth::F64 ? sizeof(gpu::GpuCandidateSphere<double>) : sizeof(gpu::GpuCandidateSphere<float>);
-    constexpr std::size_t kTexelBytes = 16;  // RGBA32UI
     const std::size_t largest =
         std::max({lists.entries.size(), lists.cellStarts.size(), lists.sphereNodes.size() * record / kTexelBytes,
                   lists.gridByteCount() / kTexelBytes});

@@ -134,13 +134,21 @@ static_assert(offsetof(Specialization, lightBatches) == LIGHT_BATCHES_ID * sizeo
 static_assert(sizeof(Specialization) == FIRST_SCENE_CONSTANT_ID * sizeof(std::uint32_t));
 
 // --- The candidate lists' texels (16 bytes each)
-// scene_data.glsl reads nodes and lights as 16-byte texels, each member from this texel on.
-static_assert(offsetof(GpuNode<float>, geometry) == 1 * 16 && offsetof(GpuNode<double>, geometry) == 2 * 16);
-static_assert(offsetof(GpuNode<float>, eyePower) == 2 * 16 && offsetof(GpuNode<double>, eyePower) == 4 * 16);
-static_assert(offsetof(GpuNode<float>, color1) == 3 * 16 && offsetof(GpuNode<double>, color1) == 6 * 16);
-static_assert(offsetof(GpuNode<float>, color2) == 4 * 16 && offsetof(GpuNode<double>, color2) == 7 * 16);
-static_assert(offsetof(GpuNode<float>, checker) == 5 * 16 && offsetof(GpuNode<double>, checker) == 8 * 16);
-static_assert(sizeof(GpuNode<float>) == 6 * 16 && sizeof(GpuNode<double>) == 10 * 16);
+// scene_data.glsl reads nodes and lights as 16-byte texels, each member from its texel
+// (shader_interface.h's NODE_*_TEXEL_*) on.
+inline constexpr std::size_t kTexelBytes = 16;  // an RGBA32UI texel
+static_assert(offsetof(GpuNode<float>, geometry) == NODE_GEOMETRY_TEXEL_F32 * kTexelBytes &&
+              offsetof(GpuNode<double>, geometry) == NODE_GEOMETRY_TEXEL_F64 * kTexelBytes);
+static_assert(offsetof(GpuNode<float>, eyePower) == NODE_EYE_POWER_TEXEL_F32 * kTexelBytes &&
+              offsetof(GpuNode<double>, eyePower) == NODE_EYE_POWER_TEXEL_F64 * kTexelBytes);
+static_assert(offsetof(GpuNode<float>, color1) == NODE_COLOR1_TEXEL_F32 * kTexelBytes &&
+              offsetof(GpuNode<double>, color1) == NODE_COLOR1_TEXEL_F64 * kTexelBytes);
+static_assert(offsetof(GpuNode<float>, color2) == NODE_COLOR2_TEXEL_F32 * kTexelBytes &&
+              offsetof(GpuNode<double>, color2) == NODE_COLOR2_TEXEL_F64 * kTexelBytes);
+static_assert(offsetof(GpuNode<float>, checker) == NODE_CHECKER_TEXEL_F32 * kTexelBytes &&
+              offsetof(GpuNode<double>, checker) == NODE_CHECKER_TEXEL_F64 * kTexelBytes);
+static_assert(sizeof(GpuNode<float>) == NODE_TEXELS_F32 * kTexelBytes &&
+              sizeof(GpuNode<double>) == NODE_TEXELS_F64 * kTexelBytes);
 static_assert(offsetof(GpuLight<float>, power) == 1 * 16 && offsetof(GpuLight<double>, power) == 2 * 16);
 static_assert(sizeof(GpuLight<float>) == 2 * 16 && sizeof(GpuLight<double>) == 4 * 16);
 static_assert(sizeof(GpuCandidateAxes) == 48);
