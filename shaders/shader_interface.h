@@ -100,6 +100,11 @@ HEXRAY_CONSTANT uint PLANE_CELL = 0u;
 HEXRAY_CONSTANT uint CAMERA_GRID = 0u;
 HEXRAY_CONSTANT uint CUBE_FACES = 6u;
 
+// f32-naive's shadow rays start this far off the surface along its normal, as the course does: a
+// no-op once below half an ulp of the coordinates, and too large for contact shadows near the
+// origin. The candidate lists' reach for those rays counts it.
+HEXRAY_CONSTANT float TEXTBOOK_SHADOW_NUDGE = 1e-4;
+
 #undef HEXRAY_CONSTANT
 #ifdef __cplusplus
 }  // namespace hexray::gpu

@@ -6,6 +6,7 @@
 #include "intersect.glsl"
 #include "precision.glsl"
 #include "ray.glsl"
+#include "shader_interface.h"
 
 struct Surface {
     vec3r position;
@@ -14,9 +15,8 @@ struct Surface {
     vec3r shadowOrigin;
 };
 
-// The course's fixed nudge along the normal (textbook): a no-op once it is below half an ulp
-// of the coordinates, and too large for contact shadows near the origin.
-const real SHADOW_EPSILON = 1e-4;
+// The course's fixed nudge along the normal (textbook, shader_interface.h).
+const real SHADOW_EPSILON = real(TEXTBOOK_SHADOW_NUDGE);
 // A bound on the rounding error of a reprojected sphere point, in units of its coordinates.
 const real REPROJECTION_ERROR = gamma(5);
 

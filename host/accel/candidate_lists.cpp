@@ -1,6 +1,7 @@
 #include "accel/candidate_lists.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -31,14 +32,22 @@ struct PlacedSphere {
     double centerSize;  // |center|
 };
 
+// How long a light's shadow rays its lists hold: `length`, or any length (+inf). A longer ray (one
+// the image may need when `longerRays`) takes the list of every sphere.
+struct ShadowReach {
+    double length = std::numeric_limits<double>::infinity();
+    bool longerRays = false;
+};
+
 struct PlacedScene {
     glm::dvec3 eye{0.0};
     double eyeSize = 0;                 // |eye|
     std::vector<PlacedSphere> spheres;  // in record order (morton_order.h)
     std::vector<std::uint32_t> planes;
+    std::vector<double> planeHeights;  // of `planes`, placed
     std::vector<glm::dvec3> lights;
-    std::vector<double> lightSizes;   // |light|
-    std::vector<double> shadowReach;  // per light: the longest ray its lists hold (+inf: any)
+    std::vector<double> lightSizes;  // |light|
+    std::vector<ShadowReach> shadowReach;
 };
 
 std::vector<PlacedSphere> inMortonOrder(std::vector<PlacedSphere> spheres) {
@@ -50,6 +59,51 @@ std::vector<PlacedSphere> inMortonOrder(std::vector<PlacedSphere> spheres) {
         ordered.push_back(spheres[index]);
     }
     return ordered;
+}
+
+// The directions of the camera rays at the corners of the image and its margin, from the eye.
+std::array<glm::dvec3, 4> cameraCorners(const Scene& scene) {
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    const double marginX = kImageMarginPixels / scene.image.width;
+    const double marginY = kImageMarginPixels / scene.image.height;
+    std::array<glm::dvec3, 4> corners;
+    for (int corner = 0; corner < 4; ++corner) {
+        const double x = corner & 1 ? 1.0 + marginX : -marginX;
+        const double y = corner & 2 ? 1.0 + marginY : -marginY;
+        corners[corner] = glm::normalize(sheet.topLeft + x * sheet.right + y * sheet.down);
+    }
+    return corners;
+}
+
+// The farthest from `light` that a camera ray can meet a plane: the farthest of the corner rays'
+// hits, since the hits of the rays between them fill the quadrilateral of those four, and distance
+// is convex. Nullopt when a corner ray runs away from a plane or along it (the horizon in view).
+std::optional<double> farthestPlaneHit(const PlacedScene& placed, const std::array<glm::dvec3, 4>& corners,
+                                       const glm::dvec3& light) {
+    double farthest = 0;
+    for (const double height : placed.planeHeights) {
+        const double rise = height - placed.eye.y;
+        if (rise == 0.0) {
+            continue;  // the eye on the plane sees it edge-on
+        }
+        for (const glm::dvec3& direction : corners) {
+            if (!(rise * direction.y > 0.0 && std::abs(direction.y) >= kLeastPlaneSlope)) {
+                return std::nullopt;
+            }
+            farthest = std::max(farthest, glm::distance(placed.eye + (rise / direction.y) * direction, light));
+        }
+    }
+    return farthest;
+}
+
+// f32-naive's shadow rays start at the surface and their rounding grows with their length: each
+// light's lists hold rays as long as the image's can be, when they are bounded.
+ShadowReach textbookReach(double farthestSphere, std::optional<double> farthestPlane) {
+    if (!farthestPlane) {
+        return {kTextbookReachFactor * farthestSphere, true};
+    }
+    const double longest = std::max(farthestSphere, *farthestPlane) + double(gpu::TEXTBOOK_SHADOW_NUDGE);
+    return {longest * (1.0 + kTextbookReachSlack), false};
 }
 
 PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulation formulation) {
@@ -69,21 +123,25 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
             spheres.push_back(s);
         } else {
             placed.planes.push_back(i);
+            const double height = std::get<Plane>(scene.nodes[i].geometry).height;
+            placed.planeHeights.push_back(placement.position({0.0, height, 0.0}).y);
         }
     }
     placed.spheres = inMortonOrder(std::move(spheres));
+    const std::array<glm::dvec3, 4> corners = cameraCorners(scene);
     for (const PointLight& light : scene.lights) {
         const glm::dvec3 position = placement.position(light.position);
         placed.lights.push_back(position);
         placed.lightSizes.push_back(glm::length(position));
-        double farthest = 0;
+        double farthest = 0;  // of the spheres and the eye
         for (int corner = 0; corner < 8; ++corner) {
             const glm::dvec3 point(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y,
                                    corner & 4 ? high.z : low.z);
             farthest = std::max(farthest, glm::length(point - position));
         }
-        placed.shadowReach.push_back(formulation == Formulation::Textbook ? kTextbookReachFactor * farthest
-                                                                          : std::numeric_limits<double>::infinity());
+        placed.shadowReach.push_back(formulation == Formulation::Textbook
+                                         ? textbookReach(farthest, farthestPlaneHit(placed, corners, position))
+                                         : ShadowReach{});
     }
     return placed;
 }
@@ -98,23 +156,19 @@ public:
         : unit_(kRoundingUnits * unitRoundoff(width)), textbook_(formulation == Formulation::Textbook) {}
 
     // To a camera ray: `distance` from the eye; the sphere's centre and the eye are `center`
-    // and `eye` large.
+    // and `eye` large. The textbook test's b^2 - 4ac errs by a few units of |f|^2, f = eye - centre
+    // being one rounding of the exact difference (textbookShadow); the float positions of the eye
+    // and the centre err by a unit of theirs.
     double camera(double radius, double distance, double center, double eye) const {
-        return stretched(radius, distance + radius + center + eye);
+        return textbook_ ? stretched(radius, distance + radius) + unit_ * (center + eye)
+                         : stretched(radius, distance + radius + center + eye);
     }
 
     // To a shadow ray between a light `light` large and a point at most `rayLength` from it,
-    // `distance` from the sphere. Robust: from the light, whose roots err about as much again as
-    // the discriminant. Textbook: from the point, as large as the light and the ray together; its
-    // root errs by up to the square root of the discriminant's error, so a sphere that far beyond
-    // the light counts too.
+    // `distance` from the sphere.
     double shadow(double radius, double distance, double center, double light, double rayLength) const {
-        const double scale = distance + radius + center + light;
-        if (!textbook_) {
-            return stretched(radius, 2.0 * scale);
-        }
-        const double fromPoint = scale + 2.0 * rayLength + light;
-        return 2.0 * stretched(radius, fromPoint) + std::sqrt(unit_) * fromPoint;
+        return textbook_ ? textbookShadow(radius, distance, center, light, rayLength)
+                         : stretched(radius, 2.0 * (distance + radius + center + light));
     }
 
 private:
@@ -123,6 +177,22 @@ private:
     double stretched(double radius, double scale) const {
         const double rounding = unit_ * scale;
         return textbook_ ? std::sqrt(radius * radius + rounding * scale) + rounding : radius + rounding;
+    }
+
+    // The robust test starts at the light, whose roots err about as much again as the discriminant.
+    // The textbook test starts at the point: its f = point - centre is one rounding of the exact
+    // difference, so b^2 - 4ac errs by a few units of |f|^2 wherever the scene lies. A sphere it
+    // reports lies along the ray between the point and the light, so |f| is at most the ray's
+    // length less the sphere's distance from the light, and a few radii (and the seeming radius
+    // and the roots' error, each up to a fraction sqrt(units) of |f|). Along the ray the roots err
+    // by that fraction too: a sphere that close to the light may be reported behind it, so it
+    // counts in every direction from the light.
+    double textbookShadow(double radius, double distance, double center, double light, double rayLength) const {
+        const double rootShare = std::sqrt(unit_);
+        const double fromPoint = (std::max(rayLength - distance, 0.0) + 3.0 * radius) / (1.0 - 4.0 * rootShare);
+        const double seeming = stretched(radius, fromPoint) + unit_ * (center + light);
+        const bool nearLight = distance <= std::hypot(seeming, radius + rootShare * fromPoint);
+        return nearLight ? 2.0 * distance + seeming : seeming;
     }
 
     double unit_;
@@ -258,7 +328,7 @@ void sightFromLight(const PlacedScene& placed, const Reach& reach, std::size_t l
         const PlacedSphere& s = placed.spheres[record];
         const glm::dvec3 fromLight = s.center - placed.lights[light];
         const double radius = reach.shadow(s.radius, glm::length(fromLight), s.centerSize, placed.lightSizes[light],
-                                           placed.shadowReach[light]);
+                                           placed.shadowReach[light].length);
         for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
             if (!mayShowOnFace(fromLight, radius, face)) {
                 continue;
@@ -472,10 +542,11 @@ void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<co
                 cell += grid.cellCount();
                 entry = binner.bin(grid, faces.footprints(face), entry);
             }
-            const bool robust = std::isinf(placed.shadowReach[light]);
-            const std::uint32_t pastReach = robust ? choice.grids[0].firstCell : everySphereCell;
+            // A light whose rays all lie within its reach names a cell of its own (never taken).
+            const ShadowReach& shadowReach = placed.shadowReach[light];
+            const std::uint32_t pastReach = shadowReach.longerRays ? everySphereCell : choice.grids[0].firstCell;
             for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(placed.shadowReach[light]));
+                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(shadowReach.length));
             }
         }
     });
@@ -577,8 +648,8 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
                              std::min((total.cells - cells) / lightShare, kLightCellsPerSample * samples)};
     const std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
     const bool listsEverySphere =
-        lightCount > 0 && (formulation == Formulation::Textbook ||
-                           std::ranges::any_of(plans, [](const LightGridPlan& plan) { return plan.cellSide == 0; }));
+        std::ranges::any_of(plans, [](const LightGridPlan& plan) { return plan.cellSide == 0; }) ||
+        std::ranges::any_of(placed.shadowReach, [](const ShadowReach& reach) { return reach.longerRays; });
     const bool unusedEverySphere = lightCount > 0 && !listsEverySphere;  // its cell and entries go unused
     const LightOffsets offsets =
         lightOffsets(plans, cells - (unusedEverySphere ? 1 : 0), entries - (unusedEverySphere ? everySphere : 0));

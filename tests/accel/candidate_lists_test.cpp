@@ -213,18 +213,52 @@ TEST(CandidateLists, ALightWhoseListsDoNotFitItsShareTakesTheListOfEverySphere) 
     }
 }
 
+std::uint32_t listLength(const CandidateLists& lists, std::uint32_t cell) {
+    return lists.cellStarts.at(cell + 1) - lists.cellStarts.at(cell);
+}
+
 TEST(CandidateLists, ListEverySphereForTextbookShadowRaysPastTheirReach) {
-    const Scene scene = testScene(200);
+    Scene scene = testScene(200);
+    scene.camera.pitchDegrees = 0.0;  // the floor to the horizon: its far points' rays are too long
     const auto lists =
         buildCandidateLists(scene, placementFor(scene, Formulation::Textbook), FloatWidth::F32, Formulation::Textbook);
     ASSERT_TRUE(lists);
     const gpu::GpuCandidateGrid& face = lists->grids.at(1);
     ASSERT_TRUE(std::isfinite(face.reach.x));
-    EXPECT_EQ(lists->cellStarts.at(face.cells.w + 1) - lists->cellStarts.at(face.cells.w), 200u);
+    EXPECT_EQ(listLength(*lists, face.cells.w), 200u);
     const auto robust =
         buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F32, Formulation::Robust);
     ASSERT_TRUE(robust);
     EXPECT_TRUE(std::isinf(robust->grids.at(1).reach.x));  // robust shadow rays start at the light
+}
+
+// testScene's view ends at the floor: its longest shadow rays start where the image's corners meet
+// it or at the farthest sphere. The textbook lists hold them all, and no ray takes a list of
+// every sphere.
+TEST(CandidateLists, TextbookListsHoldEveryShadowRayOfAViewThatEndsAtAPlane) {
+    const Scene scene = testScene(200);
+    const Placement placement = placementFor(scene, Formulation::Textbook);
+    const auto lists = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Textbook);
+    ASSERT_TRUE(lists);
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    const glm::dvec3 eye = placement.position(scene.camera.position);
+    const double floor = placement.position(glm::dvec3(0.0)).y;
+    for (std::uint32_t light = 0; light < scene.lights.size(); ++light) {
+        const glm::dvec3 position = placement.position(scene.lights[light].position);
+        double farthest = 0;
+        for (const double x : {0.0, 1.0}) {
+            for (const double y : {0.0, 1.0}) {
+                const glm::dvec3 direction = sheet.topLeft + x * sheet.right + y * sheet.down;
+                ASSERT_LT(direction.y, 0.0) << "the corner ray must meet the floor";
+                farthest = std::max(farthest, glm::distance(eye + (floor - eye.y) / direction.y * direction, position));
+            }
+        }
+        for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+            const gpu::GpuCandidateGrid& grid = lists->grids.at(1 + gpu::CUBE_FACES * light + face);
+            EXPECT_GE(grid.reach.x, farthest) << "light " << light << ", face " << face;
+            EXPECT_LT(listLength(*lists, grid.cells.w), 200u) << "light " << light << ", face " << face;
+        }
+    }
 }
 
 // Which spheres (node indices) any cell of grid `grid` lists, and how many cells list each.
