@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates docs/performance.md, docs/performance.csv and docs/performance.png: the speed
 # against error benchmark (hexray bench), the scaling curve over random-sphere scenes, and
-# whole-process times. Installs and builds first (ci/build.sh --bench: the usual packages plus
-# Embree 3 and matplotlib, which only this report uses; without Embree the bench drops its rows).
+# whole-process times (with a million-sphere frame against Embree's, tools/frame-bench.py).
+# Installs and builds first (ci/build.sh --bench: the usual packages plus Embree 3 and
+# matplotlib, which only this report uses; without Embree the bench drops its rows).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -53,6 +54,9 @@ done
 unset XDG_CACHE_HOME
 rm -rf "$output"
 median() { printf '%s\n' "$@" | sort -n | sed -n 4p; }
+
+# A whole frame of a million spheres against Embree's (tools/frame-bench.py prints its own table).
+frame=$(/usr/bin/python3 tools/frame-bench.py --spheres 1000000 --rounds 3)
 
 # Many scenes in one process against one process each (tools/batch-bench.sh prints its own table).
 batch=""
@@ -167,6 +171,15 @@ to exit, seven interleaved runs (median; all runs in ms):
 | warm (hexray's kernel cache and Mesa's shader cache filled) | $(median "${warm[@]}") | ${warm[*]} |
 | cold driver (\`MESA_SHADER_CACHE_DISABLE=true\`; the kernel's SPIR-V cached) | $(median "${cold[@]}") | ${cold[*]} |
 | a scene never seen (an empty kernel cache, Mesa's disabled: glslang and the driver compile) | $(median "${new[@]}") | ${new[*]} |
+
+## A whole frame against Embree's
+
+\`tools/frame-bench.py --spheres 1000000 --rounds 3\`: \`hexray render\` of a file of a million random
+spheres (\`tools/make-spheres-scene.py\`) at 1920×1080 to PNG, from exec to exit, against
+\`tests/bench/embree_frame.cpp\`, which loads the same file with the same loader, builds Embree's
+scene, traces it with the bench's Embree row and writes the PNG; interleaved.
+
+$frame
 
 ## Many scenes in one process
 

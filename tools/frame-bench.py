@@ -43,8 +43,11 @@ def main():
     parser.add_argument("--height", type=int, default=1080)
     args = parser.parse_args()
 
-    subprocess.run(["cmake", "--build", "build", "--parallel", str(os.cpu_count()), "--target", "hexray",
-                    "hexray_embree_frame"], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
+    built = subprocess.run(["cmake", "--build", "build", "--parallel", str(os.cpu_count()), "--target", "hexray",
+                            "hexray_embree_frame"], cwd=ROOT, stdout=subprocess.DEVNULL)
+    if built.returncode != 0:
+        sys.exit("frame-bench: building hexray and hexray_embree_frame failed (the latter needs Embree 3: "
+                 "bash ci/build.sh --bench)")
     icd = sorted(pathlib.Path("/usr/share/vulkan/icd.d").glob("lvp_icd.*.json"))[0]
     with tempfile.TemporaryDirectory() as work:
         work = pathlib.Path(work)

@@ -98,12 +98,35 @@ vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii
     return vk::raii::Pipeline(device, nullptr, vk::ComputePipelineCreateInfo({}, stage, *layout));
 }
 
+// The bytes of a packed vector, which it holds without copying them; release() frees them once
+// they are uploaded, so that a large scene is not held twice on the host while it is uploaded.
+class HeldBytes {
+public:
+    HeldBytes() = default;
+    template <typename T>
+    explicit HeldBytes(std::vector<T> values) {
+        auto owner = std::make_shared<const std::vector<T>>(std::move(values));
+        bytes_ = std::as_bytes(std::span(*owner));
+        owner_ = std::move(owner);
+    }
+    std::span<const std::byte> bytes() const { return bytes_; }
+    std::size_t size() const { return bytes_.size(); }
+    void release() {
+        owner_.reset();
+        bytes_ = {};
+    }
+
+private:
+    std::shared_ptr<const void> owner_;
+    std::span<const std::byte> bytes_;
+};
+
 // The scene in the chosen variant's layout, as the bytes the buffers receive.
 struct PackedScene {
     std::vector<std::byte> frame;
-    std::vector<std::byte> nodes;
-    std::vector<std::byte> lights;
-    std::vector<std::byte> candidateSpheres;  // empty: no candidate lists
+    HeldBytes nodes;
+    HeldBytes lights;
+    HeldBytes candidateSpheres;  // empty: no candidate lists
     // A generated kernel's specialization constants: their values, and each component's size.
     std::vector<std::byte> constants;
     std::vector<std::uint32_t> constantSizes;
@@ -132,8 +155,7 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
     gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, plan.placement);
     PackedScene bytes;
     if (plan.candidates) {
-        const auto spheres = gpu::packCandidateSpheres(packed, std::span(plan.candidates->sphereNodes));
-        bytes.candidateSpheres = bytesOf(std::span(spheres));
+        bytes.candidateSpheres = HeldBytes(gpu::packCandidateSpheres(packed, std::span(plan.candidates->sphereNodes)));
     }
     if (plan.layout == SceneLayout::Uniform) {
         // A uniform block declares all SMALL_SCENE_CAPACITY entries: the buffers must hold them.
@@ -150,8 +172,8 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
         }
     }
     bytes.frame = bytesOf(std::span(&packed.frame, 1));
-    bytes.nodes = bytesOf(std::span(packed.nodes));
-    bytes.lights = bytesOf(std::span(packed.lights));
+    bytes.nodes = HeldBytes(std::move(packed.nodes));
+    bytes.lights = HeldBytes(std::move(packed.lights));
     return bytes;
 }
 
@@ -682,17 +704,20 @@ std::uint64_t recordDispatches(const vk::raii::CommandBuffer& commands, const vk
 // the request of a traced pixel, bound to a descriptor set of `setLayout`.
 BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::CommandPool& commandPool,
                             const vk::raii::DescriptorSetLayout& setLayout, const Scene& scene, const RenderPlan& plan,
-                            const PackedScene& packed, const BandShape& shape,
-                            std::span<const std::byte> traceRequest) {
+                            PackedScene& packed, const BandShape& shape, std::span<const std::byte> traceRequest) {
     const vk::raii::Device& device = context.device();
     const vk::raii::PhysicalDevice& physicalDevice = context.physicalDevice();
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
-    const auto sceneBuffer = [&](std::size_t size) {
-        return holdingScene(scene, plan, [&] {
-            return TexelBuffer(device, physicalDevice, size, vk::Format::eR32G32B32A32Uint,
+    // Uploaded as soon as made, and the host's copy released: the buffers are made in order.
+    const auto sceneBuffer = [&](HeldBytes& bytes) {
+        TexelBuffer buffer = holdingScene(scene, plan, [&] {
+            return TexelBuffer(device, physicalDevice, bytes.size(), vk::Format::eR32G32B32A32Uint,
                                vk::BufferUsageFlagBits::eUniformBuffer);
         });
+        buffer.buffer().upload(bytes.bytes());
+        bytes.release();
+        return buffer;
     };
     // Only the output mode's buffers get their full size; the others are bound but never written.
     const auto output = [&](bool used, std::size_t bytesPerPixel) {
@@ -701,8 +726,8 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
     const bool encoded = !shape.linear && traceRequest.empty();
     BandBuffers buffers{
         HostVisibleBuffer(device, physicalDevice, packed.frame.size(), vk::BufferUsageFlagBits::eUniformBuffer),
-        sceneBuffer(packed.nodes.size()),
-        sceneBuffer(packed.lights.size()),
+        sceneBuffer(packed.nodes),
+        sceneBuffer(packed.lights),
         output(shape.linear, sizeof(GpuPixel)),
         output(shape.linear, sizeof(GpuPixelClass)),
         output(encoded, sizeof(gpu::GpuEncodedPixel)),
@@ -712,12 +737,11 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
         output(shape.batched, sizeof(gpu::GpuPixelCarry)),
         HostVisibleBuffer(device, physicalDevice, packed.bufferedValues().size(), storage),
         holdingScene(scene, plan, [&] {
-            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
+            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres.bytes());
         })};
+    packed.candidateSpheres.release();
     buffers.trace.upload(traceRequest);
     buffers.frame.upload(std::span(packed.frame));
-    buffers.nodes.buffer().upload(std::span(packed.nodes));
-    buffers.lights.buffer().upload(std::span(packed.lights));
     buffers.sceneValues.upload(packed.bufferedValues());
     bindBandBuffers(buffers, device, commandPool, setLayout, uniformScene);
     return buffers;
@@ -793,7 +817,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel,
                                              batched};
     const auto uploadStart = std::chrono::steady_clock::now();
-    const PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
+    PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     result.precision = plan.precision;
     result.usedCandidateLists = plan.layout == SceneLayout::TexelsCandidates;
     // The kernels: the plan's, or (culling, not for a traced pixel) one per tile class.
@@ -920,7 +944,7 @@ void GpuRenderer::renderPixelsInDoubt(const Scene& scene, const RenderPlan& fall
         found.pixels.resize(listed, glm::uvec2(UINT32_MAX));
         const gpu::Specialization specialization{outputModeFor(scene, output, false), scene.image.samplesPerPixel,
                                                  fallback.lightBatches.splits()};
-        const PackedScene packed = packFor(scene, fallback);
+        PackedScene packed = packFor(scene, fallback);
         const vk::raii::Pipeline* pipeline =
             pipelinesFor(std::span(&fallback.kernel, 1), fallback, specialization, packed.specValues(),
                          packed.specSizes(), result.timing.kernel)[0];

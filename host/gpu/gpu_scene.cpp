@@ -117,11 +117,13 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
 
+    packed.nodes.reserve(scene.nodes.size());
     for (const Node& node : scene.nodes) {
         packed.nodes.push_back(packNode<Real>(node, scene.shaders[node.shaderIndex], placement, sheet.origin));
     }
     // Irradiance falls off as 1/r^2: lengths divided by s need intensities divided by s^2.
     const double powerScale = 1.0 / (placement.scale * placement.scale);
+    packed.lights.reserve(scene.lights.size());
     for (const PointLight& light : scene.lights) {
         const double hidden = isLightHiddenFromView(scene, light) ? 1.0 : 0.0;
         packed.lights.push_back({toReal4<Real>(placement.position(light.position), hidden),

@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
     unsigned threads = 2;
     app.add_option("scene", scenePath, "a hexray scene file")->required()->check(CLI::ExistingFile);
     app.add_option("output", output, "the PNG to write")->required();
-    app.add_option("--width", width, "the image's width (default: the scene's)")->check(CLI::Range(1u, kMaxImageDimension));
+    app.add_option("--width", width, "the image's width (default: the scene's)")
+        ->check(CLI::Range(1u, kMaxImageDimension));
     app.add_option("--height", height, "the image's height (default: the scene's)")
         ->check(CLI::Range(1u, kMaxImageDimension));
     app.add_option("--threads", threads, "threads tracing and building")->check(CLI::Range(1u, 256u));
@@ -45,8 +46,8 @@ int main(int argc, char** argv) {
         auto start = std::chrono::steady_clock::now();
         Scene scene = loadSceneFile(scenePath);
         if (width != 0 || height != 0) {
-            overrideImageSize(scene, width != 0 ? width : scene.image.width,
-                              height != 0 ? height : scene.image.height, "--width/--height");
+            overrideImageSize(scene, width != 0 ? width : scene.image.width, height != 0 ? height : scene.image.height,
+                              "--width/--height");
         }
         const double load = millisecondsSince(start);
         start = std::chrono::steady_clock::now();
