@@ -32,11 +32,17 @@ struct PlacedSphere {
     double centerSize;  // |center|
 };
 
-// How long a light's shadow rays its lists hold: `length`, or any length (+inf). A longer ray (one
-// the image may need when `longerRays`) takes the list of every sphere.
+// How long a light's shadow rays its lists hold, by cube face: `length`, or any length (+inf). A
+// longer ray (one the image may need when `longerRays`) takes the list of every sphere.
 struct ShadowReach {
-    double length = std::numeric_limits<double>::infinity();
+    std::array<double, gpu::CUBE_FACES> length = infiniteReach();
     bool longerRays = false;
+
+    static std::array<double, gpu::CUBE_FACES> infiniteReach() {
+        std::array<double, gpu::CUBE_FACES> length;
+        length.fill(std::numeric_limits<double>::infinity());
+        return length;
+    }
 };
 
 struct PlacedScene {
@@ -75,12 +81,22 @@ std::array<glm::dvec3, 4> cameraCorners(const Scene& scene) {
     return corners;
 }
 
-// The farthest from `light` that a camera ray can meet a plane: the farthest of the corner rays'
-// hits, since the hits of the rays between them fill the quadrilateral of those four, and distance
-// is convex. Nullopt when a corner ray runs away from a plane or along it (the horizon in view).
-std::optional<double> farthestPlaneHit(const PlacedScene& placed, const std::array<glm::dvec3, 4>& corners,
-                                       const glm::dvec3& light) {
-    double farthest = 0;
+std::array<glm::dvec3, 8> boxCorners(const glm::dvec3& low, const glm::dvec3& high) {
+    std::array<glm::dvec3, 8> corners;
+    for (int corner = 0; corner < 8; ++corner) {
+        corners[corner] = {corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z};
+    }
+    return corners;
+}
+
+// Points around every point a camera ray can meet, and so every shadow ray's origin: the corners
+// of the spheres' and the eye's box, and where the image's corner rays meet each plane (the hits of
+// the rays between them fill the quadrilateral of those four). Nullopt when a corner ray runs away
+// from a plane or along it (the horizon in view).
+std::optional<std::vector<glm::dvec3>> shadowOriginHull(const PlacedScene& placed,
+                                                        std::span<const glm::dvec3> boxCorners,
+                                                        const std::array<glm::dvec3, 4>& corners) {
+    std::vector<glm::dvec3> hull(boxCorners.begin(), boxCorners.end());
     for (const double height : placed.planeHeights) {
         const double rise = height - placed.eye.y;
         if (rise == 0.0) {
@@ -90,20 +106,37 @@ std::optional<double> farthestPlaneHit(const PlacedScene& placed, const std::arr
             if (!(rise * direction.y > 0.0 && std::abs(direction.y) >= kLeastPlaneSlope)) {
                 return std::nullopt;
             }
-            farthest = std::max(farthest, glm::distance(placed.eye + (rise / direction.y) * direction, light));
+            hull.push_back(placed.eye + (rise / direction.y) * direction);
         }
     }
-    return farthest;
+    return hull;
 }
 
 // f32-naive's shadow rays start at the surface and their rounding grows with their length: each
-// light's lists hold rays as long as the image's can be, when they are bounded.
-ShadowReach textbookReach(double farthestSphere, std::optional<double> farthestPlane) {
-    if (!farthestPlane) {
-        return {kTextbookReachFactor * farthestSphere, true};
+// light's lists hold rays as long as the image's can be, face by face, when they are bounded. A
+// ray the shader looks up on a face has its largest component along the face's axis, so it is at
+// most sqrt(3) times as long as the hull reaches from the light along that axis.
+ShadowReach textbookReach(const std::optional<std::vector<glm::dvec3>>& hull, std::span<const glm::dvec3> boxCorners,
+                          const glm::dvec3& light) {
+    const std::span<const glm::dvec3> points = hull ? std::span<const glm::dvec3>(*hull) : boxCorners;
+    double farthest = 0;
+    std::array<double, gpu::CUBE_FACES> along{};
+    for (const glm::dvec3& point : points) {
+        const glm::dvec3 fromLight = point - light;
+        farthest = std::max(farthest, glm::length(fromLight));
+        for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+            along[face] = std::max(along[face], (face % 2 ? -1.0 : 1.0) * fromLight[int(face / 2)]);
+        }
     }
-    const double longest = std::max(farthestSphere, *farthestPlane) + double(gpu::TEXTBOOK_SHADOW_NUDGE);
-    return {longest * (1.0 + kTextbookReachSlack), false};
+    ShadowReach reach;
+    reach.longerRays = !hull;
+    const double nudge = double(gpu::TEXTBOOK_SHADOW_NUDGE);
+    for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+        const double alongFace = std::sqrt(3.0) * (1.0 + kFaceMargin) * (along[face] + nudge);
+        reach.length[face] = hull ? (1.0 + kTextbookReachSlack) * std::min(farthest + nudge, alongFace)
+                                  : kTextbookReachFactor * farthest;
+    }
+    return reach;
 }
 
 PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulation formulation) {
@@ -128,20 +161,14 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
         }
     }
     placed.spheres = inMortonOrder(std::move(spheres));
-    const std::array<glm::dvec3, 4> corners = cameraCorners(scene);
+    const std::array<glm::dvec3, 8> box = boxCorners(low, high);
+    const auto hull = shadowOriginHull(placed, box, cameraCorners(scene));
     for (const PointLight& light : scene.lights) {
         const glm::dvec3 position = placement.position(light.position);
         placed.lights.push_back(position);
         placed.lightSizes.push_back(glm::length(position));
-        double farthest = 0;  // of the spheres and the eye
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::dvec3 point(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y,
-                                   corner & 4 ? high.z : low.z);
-            farthest = std::max(farthest, glm::length(point - position));
-        }
-        placed.shadowReach.push_back(formulation == Formulation::Textbook
-                                         ? textbookReach(farthest, farthestPlaneHit(placed, corners, position))
-                                         : ShadowReach{});
+        placed.shadowReach.push_back(formulation == Formulation::Textbook ? textbookReach(hull, box, position)
+                                                                          : ShadowReach{});
     }
     return placed;
 }
@@ -324,12 +351,16 @@ void sightFromLight(const PlacedScene& placed, const Reach& reach, std::size_t l
     for (ViewPart& part : parts) {
         part.clear();
     }
+    const std::array<double, gpu::CUBE_FACES>& rayLength = placed.shadowReach[light].length;
     for (std::uint32_t record = 0; record < placed.spheres.size(); ++record) {
         const PlacedSphere& s = placed.spheres[record];
         const glm::dvec3 fromLight = s.center - placed.lights[light];
-        const double radius = reach.shadow(s.radius, glm::length(fromLight), s.centerSize, placed.lightSizes[light],
-                                           placed.shadowReach[light].length);
+        const double distance = glm::length(fromLight);
+        double radius = 0;
         for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
+            if (face == 0 || rayLength[face] != rayLength[face - 1]) {
+                radius = reach.shadow(s.radius, distance, s.centerSize, placed.lightSizes[light], rayLength[face]);
+            }
             if (!mayShowOnFace(fromLight, radius, face)) {
                 continue;
             }
@@ -546,7 +577,7 @@ void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<co
             const ShadowReach& shadowReach = placed.shadowReach[light];
             const std::uint32_t pastReach = shadowReach.longerRays ? everySphereCell : choice.grids[0].firstCell;
             for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(shadowReach.length));
+                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(shadowReach.length[face]));
             }
         }
     });

@@ -26,11 +26,12 @@ inline constexpr std::size_t kLightCellsPerSample = 4;
 // No grid is more than this many cells across.
 inline constexpr double kMaxCellsAcross = 65536;
 // f32-naive shadow rays start at the surface, and their rounding grows with their length.
-// A light's lists hold rays as long as the longest the image can need (to the farthest sphere, or
-// to the farthest point of a plane a corner of the image sees) and this share more, for the
-// shader's rounding of the ray's length; unless a corner ray meets a plane at a slope below
-// kLeastPlaneSlope or not at all (the horizon in view): then up to kTextbookReachFactor times the
-// farthest sphere or the eye, and a longer ray (off a far plane) takes a list of every sphere.
+// A light's lists hold rays as long as the longest the image can need on each cube face (to the
+// farthest sphere, or to the farthest point of a plane a corner of the image sees) and this share
+// more, for the shader's rounding of the ray's length; unless a corner ray meets a plane at a
+// slope below kLeastPlaneSlope or not at all (the horizon in view): then up to
+// kTextbookReachFactor times the farthest sphere or the eye, and a longer ray (off a far plane)
+// takes a list of every sphere.
 inline constexpr double kTextbookReachFactor = 2.0;
 inline constexpr double kTextbookReachSlack = 1e-3;
 inline constexpr double kLeastPlaneSlope = 1e-3;

@@ -232,9 +232,16 @@ TEST(CandidateLists, ListEverySphereForTextbookShadowRaysPastTheirReach) {
     EXPECT_TRUE(std::isinf(robust->grids.at(1).reach.x));  // robust shadow rays start at the light
 }
 
-// testScene's view ends at the floor: its longest shadow rays start where the image's corners meet
-// it or at the farthest sphere. The textbook lists hold them all, and no ray takes a list of
-// every sphere.
+// The cube face the shader looks a direction from a light up on (lightCandidates).
+std::uint32_t faceOf(const glm::dvec3& fromLight) {
+    const glm::dvec3 size = glm::abs(fromLight);
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    return 2 * std::uint32_t(axis) + (fromLight[axis] < 0 ? 1u : 0u);
+}
+
+// testScene's view ends at the floor: its shadow rays start where the image's rays meet the floor
+// or a sphere. The textbook lists of each cube face hold every ray that looks them up, and no ray
+// takes a list of every sphere.
 TEST(CandidateLists, TextbookListsHoldEveryShadowRayOfAViewThatEndsAtAPlane) {
     const Scene scene = testScene(200);
     const Placement placement = placementFor(scene, Formulation::Textbook);
@@ -243,19 +250,28 @@ TEST(CandidateLists, TextbookListsHoldEveryShadowRayOfAViewThatEndsAtAPlane) {
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
     const glm::dvec3 eye = placement.position(scene.camera.position);
     const double floor = placement.position(glm::dvec3(0.0)).y;
+    std::vector<glm::dvec3> origins;  // on the floor across the image, and atop each sphere
+    for (int i = 0; i <= 16; ++i) {
+        for (int j = 0; j <= 16; ++j) {
+            const glm::dvec3 direction = sheet.topLeft + i / 16.0 * sheet.right + j / 16.0 * sheet.down;
+            ASSERT_LT(direction.y, 0.0) << "the ray must meet the floor";
+            origins.push_back(eye + (floor - eye.y) / direction.y * direction);
+        }
+    }
+    for (const Node& node : scene.nodes) {
+        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+            origins.push_back(placement.position(sphere->center + glm::dvec3(0.0, sphere->radius, 0.0)));
+        }
+    }
     for (std::uint32_t light = 0; light < scene.lights.size(); ++light) {
         const glm::dvec3 position = placement.position(scene.lights[light].position);
-        double farthest = 0;
-        for (const double x : {0.0, 1.0}) {
-            for (const double y : {0.0, 1.0}) {
-                const glm::dvec3 direction = sheet.topLeft + x * sheet.right + y * sheet.down;
-                ASSERT_LT(direction.y, 0.0) << "the corner ray must meet the floor";
-                farthest = std::max(farthest, glm::distance(eye + (floor - eye.y) / direction.y * direction, position));
-            }
+        for (const glm::dvec3& origin : origins) {
+            const std::uint32_t face = faceOf(origin - position);
+            const gpu::GpuCandidateGrid& grid = lists->grids.at(1 + gpu::CUBE_FACES * light + face);
+            EXPECT_GE(grid.reach.x, glm::distance(origin, position)) << "light " << light << ", face " << face;
         }
         for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
             const gpu::GpuCandidateGrid& grid = lists->grids.at(1 + gpu::CUBE_FACES * light + face);
-            EXPECT_GE(grid.reach.x, farthest) << "light " << light << ", face " << face;
             EXPECT_LT(listLength(*lists, grid.cells.w), 200u) << "light " << light << ", face " << face;
         }
     }
