@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """A whole frame, process against process: `hexray render` of a random-sphere scene file to a
-PNG (load, plan, upload, render, write) against tests/bench/embree_frame.cpp (load, build, trace,
-write with Embree at its best), alternating, in one run. Prints each program's median wall time
-and peak resident memory (from wait4) and their ratios, as markdown. Needs build/hexray and
-build/tests/hexray_embree_frame (Embree 3: ci/build.sh --bench), which it builds. Usage:
+PNG (load, plan, upload, render, write), in the precision auto picks and in f32, against
+tests/bench/embree_frame.cpp (load, build, trace, write with Embree at its best), alternating, in
+one run. Prints each program's median wall time and peak resident memory (from wait4) and their
+ratios, as markdown. Needs build/hexray and build/tests/hexray_embree_frame (Embree 3:
+ci/build.sh --bench), which it builds. Usage:
 
     tools/frame-bench.py [--spheres 1000000] [--rounds 3] [--width 1920] [--height 1080]
 
@@ -20,6 +21,7 @@ import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+EMBREE = "Embree frame"
 
 
 def run_measured(command, env):
@@ -56,9 +58,11 @@ def main():
         scene = work / "scene.json"
         subprocess.run([sys.executable, ROOT / "tools/make-spheres-scene.py", str(args.spheres), scene], check=True)
         size = ["--width", str(args.width), "--height", str(args.height)]
+        render = [ROOT / "build/hexray", "render", scene, "-o", work / "hexray.png"] + size
         programs = {
-            "hexray render (lavapipe)": [ROOT / "build/hexray", "render", scene, "-o", work / "hexray.png"] + size,
-            "Embree frame": [ROOT / "build/tests/hexray_embree_frame", scene, work / "embree.png"] + size,
+            "hexray render (lavapipe, precision auto)": render,
+            "hexray render (lavapipe, --precision f32: Embree's float)": render + ["--precision", "f32"],
+            EMBREE: [ROOT / "build/tests/hexray_embree_frame", scene, work / "embree.png"] + size,
         }
         runs = {name: [] for name in programs}
         for _ in range(args.rounds + 1):
@@ -76,8 +80,10 @@ def main():
         medians[name] = (wall, peak)
         phases = measured[-1][2].splitlines()[-1] if measured[-1][2] else ""
         print(f"| {name} | {wall:.2f} | {peak:.0f} | {measured[0][0]:.2f} | {phases} |")
-    (hexray_wall, hexray_peak), (embree_wall, embree_peak) = medians.values()
-    print(f"\nhexray / Embree: wall {hexray_wall / embree_wall:.2f}x, peak memory {hexray_peak / embree_peak:.2f}x")
+    embree_wall, embree_peak = medians.pop(EMBREE)
+    print()
+    for name, (wall, peak) in medians.items():
+        print(f"{name} / Embree: wall {wall / embree_wall:.2f}x, peak memory {peak / embree_peak:.2f}x")
 
 
 if __name__ == "__main__":

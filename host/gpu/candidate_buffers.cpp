@@ -36,8 +36,16 @@ TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
     return texels;
 }
 
+TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
+                                          const vk::raii::PhysicalDevice& physicalDevice,
+                                          const BufferContents& contents, vk::Format format) {
+    TexelBuffer texels(device, physicalDevice, contents.size(), format);
+    contents.writeTo(texels.buffer().data());
+    return texels;
+}
+
 CandidateBuffers::CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
-                                   const CandidateLists* lists, std::span<const std::byte> sphereRecords)
+                                   const CandidateLists* lists, const BufferContents& sphereRecords)
     : buffers_{texelBuffer(device, physicalDevice,
                            {lists ? std::as_bytes(std::span(&lists->cameraAxes, 1)) : std::span<const std::byte>(),
                             lists ? bytesOf(lists->grids) : std::span<const std::byte>()},
@@ -46,7 +54,7 @@ CandidateBuffers::CandidateBuffers(const vk::raii::Device& device, const vk::rai
                            vk::Format::eR32Uint),
                texelBuffer(device, physicalDevice, {lists ? bytesOf(lists->entries) : std::span<const std::byte>()},
                            vk::Format::eR32Uint),
-               texelBuffer(device, physicalDevice, {sphereRecords}, vk::Format::eR32G32B32A32Uint)} {}
+               texelBuffer(device, physicalDevice, sphereRecords, vk::Format::eR32G32B32A32Uint)} {}
 
 void CandidateBuffers::write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const {
     for (std::size_t i = 0; i < kBindings.size(); ++i) {

@@ -10,6 +10,7 @@
 #include <vulkan/vulkan_raii.hpp>
 
 #include "accel/candidate_lists.h"
+#include "gpu/buffer_contents.h"
 #include "vulkan/texel_buffer.h"
 
 namespace hexray::inline gpu {
@@ -21,9 +22,9 @@ public:
                                                                gpu::CANDIDATE_SPHERE_BINDING};
     static bool isCandidateBinding(std::uint32_t binding);
 
-    // Uploads `lists` (may be null) and the spheres' records (gpu_scene.h's packCandidateSpheres).
+    // Uploads `lists` (may be null) and the spheres' records (gpu_scene.h's packCandidateSpheresInto).
     CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
-                     const CandidateLists* lists, std::span<const std::byte> sphereRecords);
+                     const CandidateLists* lists, const BufferContents& sphereRecords);
 
     void write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const;
 
@@ -34,6 +35,9 @@ private:
     // A buffer of `pieces` one after the other (no joined copy of them on the host).
     static TexelBuffer texelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                                    std::initializer_list<std::span<const std::byte>> pieces, vk::Format format);
+
+    static TexelBuffer texelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                                   const BufferContents& contents, vk::Format format);
 
     std::array<TexelBuffer, 4> buffers_;  // in kBindings' order
 };

@@ -12,6 +12,7 @@
 
 #include "camera/camera.h"
 
+#include "gpu/buffer_contents.h"
 #include "gpu/candidate_buffers.h"
 #include "gpu/plan_refused.h"
 #include "layout/gpu_layout.h"
@@ -98,35 +99,12 @@ vk::raii::Pipeline createPipeline(const vk::raii::Device& device, const vk::raii
     return vk::raii::Pipeline(device, nullptr, vk::ComputePipelineCreateInfo({}, stage, *layout));
 }
 
-// The bytes of a packed vector, which it holds without copying them; release() frees them once
-// they are uploaded, so that a large scene is not held twice on the host while it is uploaded.
-class HeldBytes {
-public:
-    HeldBytes() = default;
-    template <typename T>
-    explicit HeldBytes(std::vector<T> values) {
-        auto owner = std::make_shared<const std::vector<T>>(std::move(values));
-        bytes_ = std::as_bytes(std::span(*owner));
-        owner_ = std::move(owner);
-    }
-    std::span<const std::byte> bytes() const { return bytes_; }
-    std::size_t size() const { return bytes_.size(); }
-    void release() {
-        owner_.reset();
-        bytes_ = {};
-    }
-
-private:
-    std::shared_ptr<const void> owner_;
-    std::span<const std::byte> bytes_;
-};
-
 // The scene in the chosen variant's layout, as the bytes the buffers receive.
 struct PackedScene {
     std::vector<std::byte> frame;
-    HeldBytes nodes;
-    HeldBytes lights;
-    HeldBytes candidateSpheres;  // empty: no candidate lists
+    BufferContents nodes;
+    BufferContents lights;
+    BufferContents candidateSpheres;  // empty: no candidate lists
     // A generated kernel's specialization constants: their values, and each component's size.
     std::vector<std::byte> constants;
     std::vector<std::uint32_t> constantSizes;
@@ -152,10 +130,17 @@ std::vector<std::byte> bytesOf(std::span<T> values) {
 
 template <typename Real>
 PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
-    gpu::GpuScene<Real> packed = gpu::packScene<Real>(scene, plan.placement);
+    // A large scene's nodes are packed straight into their buffer (a generated kernel's constants
+    // read the packed nodes; its scenes are small).
+    const bool packedInBuffer = !plan.kernel.code && plan.layout != SceneLayout::Uniform;
+    gpu::GpuScene<Real> packed =
+        gpu::packScene<Real>(scene, plan.placement, packedInBuffer ? NodePacking::Later : NodePacking::Now);
     PackedScene bytes;
-    if (plan.candidates) {
-        bytes.candidateSpheres = HeldBytes(gpu::packCandidateSpheres(packed, std::span(plan.candidates->sphereNodes)));
+    if (const CandidateLists* lists = plan.candidates.get()) {
+        bytes.candidateSpheres = {
+            lists->sphereNodes.size() * sizeof(gpu::GpuCandidateSphere<Real>), [&scene, &plan](std::byte* out) {
+                gpu::packCandidateSpheresInto<Real>(scene, plan.placement, plan.candidates->sphereNodes, out);
+            }};
     }
     if (plan.layout == SceneLayout::Uniform) {
         // A uniform block declares all SMALL_SCENE_CAPACITY entries: the buffers must hold them.
@@ -172,8 +157,12 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
         }
     }
     bytes.frame = bytesOf(std::span(&packed.frame, 1));
-    bytes.nodes = HeldBytes(std::move(packed.nodes));
-    bytes.lights = HeldBytes(std::move(packed.lights));
+    bytes.nodes =
+        packedInBuffer
+            ? BufferContents(scene.nodes.size() * sizeof(gpu::GpuNode<Real>),
+                             [&scene, &plan](std::byte* out) { gpu::packNodesInto<Real>(scene, plan.placement, out); })
+            : BufferContents::of(std::move(packed.nodes));
+    bytes.lights = BufferContents::of(std::move(packed.lights));
     return bytes;
 }
 
@@ -709,14 +698,14 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
     const vk::raii::PhysicalDevice& physicalDevice = context.physicalDevice();
     const bool uniformScene = plan.layout == SceneLayout::Uniform;
     const vk::BufferUsageFlags storage = vk::BufferUsageFlagBits::eStorageBuffer;
-    // Uploaded as soon as made, and the host's copy released: the buffers are made in order.
-    const auto sceneBuffer = [&](HeldBytes& bytes) {
+    // Written as soon as made, and what the host held released: the buffers are made in order.
+    const auto sceneBuffer = [&](BufferContents& contents) {
         TexelBuffer buffer = holdingScene(scene, plan, [&] {
-            return TexelBuffer(device, physicalDevice, bytes.size(), vk::Format::eR32G32B32A32Uint,
+            return TexelBuffer(device, physicalDevice, contents.size(), vk::Format::eR32G32B32A32Uint,
                                vk::BufferUsageFlagBits::eUniformBuffer);
         });
-        buffer.buffer().upload(bytes.bytes());
-        bytes.release();
+        contents.writeTo(buffer.buffer().data());
+        contents.release();
         return buffer;
     };
     // Only the output mode's buffers get their full size; the others are bound but never written.
@@ -737,7 +726,7 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
         output(shape.batched, sizeof(gpu::GpuPixelCarry)),
         HostVisibleBuffer(device, physicalDevice, packed.bufferedValues().size(), storage),
         holdingScene(scene, plan, [&] {
-            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres.bytes());
+            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
         })};
     packed.candidateSpheres.release();
     buffers.trace.upload(traceRequest);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -100,7 +101,7 @@ GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& 
 }  // namespace
 
 template <typename Real>
-GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
+GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePacking nodes) {
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
 
     GpuScene<Real> packed;
@@ -117,9 +118,9 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
 
-    packed.nodes.reserve(scene.nodes.size());
-    for (const Node& node : scene.nodes) {
-        packed.nodes.push_back(packNode<Real>(node, scene.shaders[node.shaderIndex], placement, sheet.origin));
+    if (nodes == NodePacking::Now) {
+        packed.nodes.resize(scene.nodes.size());
+        packNodesInto<Real>(scene, placement, reinterpret_cast<std::byte*>(packed.nodes.data()));
     }
     // Irradiance falls off as 1/r^2: lengths divided by s need intensities divided by s^2.
     const double powerScale = 1.0 / (placement.scale * placement.scale);
@@ -132,23 +133,38 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement) {
     return packed;
 }
 
-template GpuScene<float> packScene<float>(const Scene&, const Placement&);
-template GpuScene<double> packScene<double>(const Scene&, const Placement&);
+template GpuScene<float> packScene<float>(const Scene&, const Placement&, NodePacking);
+template GpuScene<double> packScene<double>(const Scene&, const Placement&, NodePacking);
 
 template <typename Real>
-std::vector<GpuCandidateSphere<Real>> packCandidateSpheres(const GpuScene<Real>& packed,
-                                                           std::span<const std::uint32_t> nodes) {
-    std::vector<GpuCandidateSphere<Real>> spheres;
-    spheres.reserve(nodes.size());
-    for (const std::uint32_t i : nodes) {
-        spheres.push_back({packed.nodes[i].geometry, packed.nodes[i].eyePower, i, {}});
+void packNodesInto(const Scene& scene, const Placement& placement, std::byte* out) {
+    const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
+    for (const Node& node : scene.nodes) {
+        const GpuNode<Real> packed = packNode<Real>(node, scene.shaders[node.shaderIndex], placement, eye);
+        std::memcpy(out, &packed, sizeof packed);
+        out += sizeof packed;
     }
-    return spheres;
 }
 
-template std::vector<GpuCandidateSphere<float>> packCandidateSpheres<float>(const GpuScene<float>&,
-                                                                            std::span<const std::uint32_t>);
-template std::vector<GpuCandidateSphere<double>> packCandidateSpheres<double>(const GpuScene<double>&,
-                                                                              std::span<const std::uint32_t>);
+template void packNodesInto<float>(const Scene&, const Placement&, std::byte*);
+template void packNodesInto<double>(const Scene&, const Placement&, std::byte*);
+
+template <typename Real>
+void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
+                              std::span<const std::uint32_t> sphereNodes, std::byte* out) {
+    const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
+    for (const std::uint32_t i : sphereNodes) {
+        const Node& node = scene.nodes[i];
+        const GpuNode<Real> packed = packNode<Real>(node, scene.shaders[node.shaderIndex], placement, eye);
+        const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, {}};
+        std::memcpy(out, &sphere, sizeof sphere);
+        out += sizeof sphere;
+    }
+}
+
+template void packCandidateSpheresInto<float>(const Scene&, const Placement&, std::span<const std::uint32_t>,
+                                              std::byte*);
+template void packCandidateSpheresInto<double>(const Scene&, const Placement&, std::span<const std::uint32_t>,
+                                               std::byte*);
 
 }  // namespace hexray::gpu
