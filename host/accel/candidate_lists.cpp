@@ -180,7 +180,8 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
 class Reach {
 public:
     Reach(FloatWidth width, Formulation formulation)
-        : unit_(kRoundingUnits * unitRoundoff(width)), textbook_(formulation == Formulation::Textbook) {}
+        : unit_((formulation == Formulation::Textbook ? kTextbookRoundingUnits : kRoundingUnits) * unitRoundoff(width)),
+          textbook_(formulation == Formulation::Textbook) {}
 
     // To a camera ray: `distance` from the eye; the sphere's centre and the eye are `center`
     // and `eye` large. The textbook test's b^2 - 4ac errs by a few units of |f|^2, f = eye - centre

@@ -40,9 +40,13 @@ inline constexpr double kLeastPlaneSlope = 1e-3;
 // floating-point test reports (tests/gpu/gpu_candidates_test.cpp compares against every node).
 // A bound on the rounding of the shader's tests, in units of its roundoff of the magnitudes
 // involved. The error estimates in shaders/intersect.glsl put the robust discriminant within
-// about 6 units of the line distance and the textbook b^2 - 4ac within about 30 units of |f|^2;
-// this leaves a margin of two and more.
+// about 6 units of the line distance; this leaves a margin of two and more.
 inline constexpr double kRoundingUnits = 64.0;
+// The textbook b^2 - 4ac (f32-naive), over 4, errs by at most 16 units of |f|^2 (f = origin -
+// centre, one rounding of the exact difference: b^2 by 7 units of 4|f|^2, 4ac by 9, the
+// subtraction by a unit of its result), and so does the square of the distance by which a ray it
+// reports may miss: twice that.
+inline constexpr double kTextbookRoundingUnits = 32.0;
 // Camera rays land up to half a pixel past the image's edge (the sample pattern); the camera's
 // view covers a margin of this many pixels.
 inline constexpr double kImageMarginPixels = 2.0;
