@@ -78,7 +78,7 @@ def main():
         wall = statistics.median(m[0] for m in measured[1:])
         peak = statistics.median(m[1] for m in measured[1:])
         medians[name] = (wall, peak)
-        phases = measured[-1][2].splitlines()[-1] if measured[-1][2] else ""
+        phases = measured[-1][2].splitlines()[-1].split(" — ")[-1] if measured[-1][2] else ""
         print(f"| {name} | {wall:.2f} | {peak:.0f} | {measured[0][0]:.2f} | {phases} |")
     embree_wall, embree_peak = medians.pop(EMBREE)
     print()
