@@ -210,7 +210,7 @@ template <typename Work>
 decltype(auto) holdingScene(const Scene& scene, const RenderPlan& plan, Work&& work) {
     const auto what = [&] {
         return "the scene's " + sceneContents(scene) + " need about " + mebibytes(gpuSceneBytes(scene, plan)) +
-               " in the GPU's buffers, twice that while they are packed and uploaded (try --backend cpu)";
+               " in the GPU's buffers, and the candidate lists as much again on the host (try --backend cpu)";
     };
     try {
         return holding(what, work);

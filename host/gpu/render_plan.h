@@ -75,7 +75,7 @@ struct RenderPlan {
     Formulation formulation = Formulation::Robust;
     Placement placement;
     SceneLayout layout = SceneLayout::Uniform;
-    std::shared_ptr<const CandidateLists> candidates;  // StorageCandidates only: the lists the kernel reads
+    std::shared_ptr<const CandidateLists> candidates;  // TexelsCandidates only: the lists the kernel reads
     Kernel kernel;                                     // for the whole image (and for a traced pixel)
     TileClasses tileClasses;                           // when culling: the kernels that render the image instead
     // The data-driven kernel: how a pixel's samples and lights are split between dispatches, each
