@@ -44,15 +44,20 @@ std::set<std::uint32_t> cameraList(const CandidateLists& lists, const glm::vec3&
     return listAt(lists, gpu::CAMERA_GRID, across / glm::dot(direction, glm::vec3(lists.cameraAxes.forward)));
 }
 
+// The cube face the shader looks a direction from a light up on (lightCandidates): its largest
+// component's axis; the face's tangent axes are the next two, cyclically.
+template <typename Vec3>
+std::uint32_t faceOf(const Vec3& fromLight) {
+    const Vec3 size = glm::abs(fromLight);
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    return 2 * std::uint32_t(axis) + (fromLight[axis] < 0 ? 1u : 0u);
+}
+
 std::set<std::uint32_t> lightList(const CandidateLists& lists, std::uint32_t light, const glm::vec3& fromLight) {
-    const glm::vec3 size = glm::abs(fromLight);
-    const bool x = size.x >= size.y && size.x >= size.z;
-    const bool y = !x && size.y >= size.z;
-    const float major = x ? fromLight.x : (y ? fromLight.y : fromLight.z);
-    const glm::vec2 across = x ? glm::vec2(fromLight.y, fromLight.z)
-                               : (y ? glm::vec2(fromLight.z, fromLight.x) : glm::vec2(fromLight.x, fromLight.y));
-    const std::uint32_t face = (x ? 0u : (y ? 2u : 4u)) + (major < 0 ? 1u : 0u);
-    return listAt(lists, gpu::CAMERA_GRID + 1 + gpu::CUBE_FACES * light + face, across / std::abs(major));
+    const std::uint32_t face = faceOf(fromLight);
+    const int axis = int(face / 2);
+    const glm::vec2 across(fromLight[(axis + 1) % 3], fromLight[(axis + 2) % 3]);
+    return listAt(lists, gpu::CAMERA_GRID + 1 + gpu::CUBE_FACES * light + face, across / std::abs(fromLight[axis]));
 }
 
 // Directions from `origin` that graze the sphere: `count` of them around its outline, a
@@ -230,13 +235,6 @@ TEST(CandidateLists, ListEverySphereForTextbookShadowRaysPastTheirReach) {
         buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F32, Formulation::Robust);
     ASSERT_TRUE(robust);
     EXPECT_TRUE(std::isinf(robust->grids.at(1).reach.x));  // robust shadow rays start at the light
-}
-
-// The cube face the shader looks a direction from a light up on (lightCandidates).
-std::uint32_t faceOf(const glm::dvec3& fromLight) {
-    const glm::dvec3 size = glm::abs(fromLight);
-    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
-    return 2 * std::uint32_t(axis) + (fromLight[axis] < 0 ? 1u : 0u);
 }
 
 // testScene's view ends at the floor: its shadow rays start where the image's rays meet the floor
