@@ -77,7 +77,7 @@ void traceMain() {
         Hit hit = findNearestHit(ray);
         if (traceActive && hit.node != NO_NODE) {
             // Constant shaders never build a Surface; lit ones overwrite this with their own.
-            traceSurface(hitSurface(ray, hit), nodeColor1(hit.node).rgb);
+            traceSurface(hitSurface(ray, hit), lookColor1(nodeLook(hit.node)).rgb);
         }
         uint flags = 0u;
         vec3 color = hit.node == NO_NODE ? SCENE_BACKGROUND : shade(ray, hit, flags);
@@ -90,7 +90,7 @@ void traceMain() {
             trace.header.sampleColor = vec4(color, 1.0);
             for (uint i = 0u; i < frame.nodeCount; ++i) {
                 trace.entries[i].values = vec4r(candidateDistance(ray, i), 0.0, 0.0, 0.0);
-                trace.entries[i].status = uvec4(nodeKinds(i).x, 0u, 0u, 0u);
+                trace.entries[i].status = uvec4(nodeGeometryKind(i), 0u, 0u, 0u);
             }
         }
     }

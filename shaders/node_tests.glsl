@@ -10,7 +10,7 @@
 #include "scene_data.glsl"
 
 bool isPlaneNode(uint i) {
-    return nodeKinds(i).x == GEOMETRY_PLANE;
+    return nodeGeometryKind(i) == GEOMETRY_PLANE;
 }
 
 // Distance along the ray to a sphere (centre, radius); `power` is the ray origin's (originPower).

@@ -110,16 +110,17 @@ Surface hitSurface(Ray ray, Hit hit) {
 }
 
 vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 irradiance, inout uint flags) {
-    uint shader = nodeKinds(hit.node).y;
-    vec3 albedo = nodeColor1(hit.node).rgb;
+    uint look = nodeLook(hit.node);
+    uint shader = lookShaderKind(look);
+    vec3 albedo = lookColor1(look).rgb;
     if (shader == SHADER_CONSTANT) {
         return albedo;
     }
     Surface s = hitSurface(ray, hit);
-    vec4r checker = nodeChecker(hit.node);
+    vec4r checker = lookChecker(look);
     bool odd = isPlaneNode(hit.node) ? isOddPlaneCell(checker, s.position) : isOddSphereCell(checker, s.outwardNormal);
     if (shader == SHADER_CHECKER && odd) {
-        albedo = nodeColor2(hit.node).rgb;
+        albedo = lookColor2(look).rgb;
         flags |= ODD_CHECKER_BIT;
     }
     traceSurface(s, albedo);

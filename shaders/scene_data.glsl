@@ -26,15 +26,18 @@ layout(std140, set = 0, binding = FRAME_BINDING) uniform FrameBlock {
 } frame;
 
 struct Node {
-    uvec4 kinds;      // .x geometry, .y shader
     vec4r geometry;   // plane: .x height; sphere: .xyz centre, .w radius
     real eyePower;    // sphere: the eye's power |eye - centre|^2 - r^2 (from the host, in double); planes: 0
-    real unused0;
-    real unused1;
-    real unused2;
+    uint geometryKind;
+    uint look;        // the node's entry in the looks
+};
+
+// A shader as one kind of geometry shows it, shared by every node of that shader and kind.
+struct Look {
+    vec4r checker;    // .x size, .yz eye's fractional cell (plane), .w parity of the eye's cells
     vec4 color1;
     vec4 color2;
-    vec4r checker;    // .x size, .yz eye's fractional cell (plane), .w parity of the eye's cells
+    uint shaderKind;
 };
 
 struct Light {
@@ -45,48 +48,64 @@ struct Light {
 #ifdef HEXRAY_UNIFORM_SCENE
 layout(std140, set = 0, binding = NODE_BINDING) uniform NodeBlock {
     Node nodes[SMALL_SCENE_CAPACITY];
+    Look looks[SMALL_SCENE_CAPACITY];  // a small scene has at most as many looks as nodes
 };
 layout(std140, set = 0, binding = LIGHT_BINDING) uniform LightBlock {
     Light lights[SMALL_SCENE_CAPACITY];
 };
 
-uvec4 nodeKinds(uint i) { return nodes[i].kinds; }
 vec4r nodeGeometry(uint i) { return nodes[i].geometry; }
 real nodeEyePower(uint i) { return nodes[i].eyePower; }
-vec4 nodeColor1(uint i) { return nodes[i].color1; }
-vec4 nodeColor2(uint i) { return nodes[i].color2; }
-vec4r nodeChecker(uint i) { return nodes[i].checker; }
+uint nodeGeometryKind(uint i) { return nodes[i].geometryKind; }
+uint nodeLook(uint i) { return nodes[i].look; }
+uint lookShaderKind(uint l) { return looks[l].shaderKind; }
+vec4 lookColor1(uint l) { return looks[l].color1; }
+vec4 lookColor2(uint l) { return looks[l].color2; }
+vec4r lookChecker(uint l) { return looks[l].checker; }
 vec4r lightPosition(uint i) { return lights[i].position; }
 vec4r lightPower(uint i) { return lights[i].power; }
 #else
 #include "texels.glsl"
 
+// The nodes' records, then the looks'.
 layout(set = 0, binding = NODE_BINDING) uniform usamplerBuffer nodeTexels;
 layout(set = 0, binding = LIGHT_BINDING) uniform usamplerBuffer lightTexels;
 
-// Where Node's members start, in texels from the start of its record (shader_interface.h).
+// Where Node's and Look's members start, in texels from the start of their record (shader_interface.h).
 #ifdef HEXRAY_F64
-const int NODE_GEOMETRY_TEXEL = int(NODE_GEOMETRY_TEXEL_F64), NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F64),
-          NODE_COLOR1_TEXEL = int(NODE_COLOR1_TEXEL_F64), NODE_COLOR2_TEXEL = int(NODE_COLOR2_TEXEL_F64),
-          NODE_CHECKER_TEXEL = int(NODE_CHECKER_TEXEL_F64), NODE_TEXELS = int(NODE_TEXELS_F64);
+const int NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F64), NODE_TEXELS = int(NODE_TEXELS_F64),
+          LOOK_COLOR1_TEXEL = int(LOOK_COLOR1_TEXEL_F64), LOOK_COLOR2_TEXEL = int(LOOK_COLOR2_TEXEL_F64),
+          LOOK_SHADER_TEXEL = int(LOOK_SHADER_TEXEL_F64), LOOK_TEXELS = int(LOOK_TEXELS_F64);
 #else
-const int NODE_GEOMETRY_TEXEL = int(NODE_GEOMETRY_TEXEL_F32), NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F32),
-          NODE_COLOR1_TEXEL = int(NODE_COLOR1_TEXEL_F32), NODE_COLOR2_TEXEL = int(NODE_COLOR2_TEXEL_F32),
-          NODE_CHECKER_TEXEL = int(NODE_CHECKER_TEXEL_F32), NODE_TEXELS = int(NODE_TEXELS_F32);
+const int NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F32), NODE_TEXELS = int(NODE_TEXELS_F32),
+          LOOK_COLOR1_TEXEL = int(LOOK_COLOR1_TEXEL_F32), LOOK_COLOR2_TEXEL = int(LOOK_COLOR2_TEXEL_F32),
+          LOOK_SHADER_TEXEL = int(LOOK_SHADER_TEXEL_F32), LOOK_TEXELS = int(LOOK_TEXELS_F32);
 #endif
 const int LIGHT_TEXELS = 2 * REAL_VEC4_TEXELS;
 
 int nodeTexel(uint i, int member) { return NODE_TEXELS * int(i) + member; }
+int lookTexel(uint l, int member) { return NODE_TEXELS * int(frame.nodeCount) + LOOK_TEXELS * int(l) + member; }
 
-uvec4 nodeKinds(uint i) { return texelFetch(nodeTexels, nodeTexel(i, 0)); }
-vec4r nodeGeometry(uint i) { return realVec4At(nodeTexels, nodeTexel(i, NODE_GEOMETRY_TEXEL)); }
+vec4r nodeGeometry(uint i) { return realVec4At(nodeTexels, nodeTexel(i, int(NODE_GEOMETRY_TEXEL))); }
 real nodeEyePower(uint i) {
     uint unused;
     return realAt(nodeTexels, nodeTexel(i, NODE_EYE_POWER_TEXEL), unused);
 }
-vec4 nodeColor1(uint i) { return uintBitsToFloat(texelFetch(nodeTexels, nodeTexel(i, NODE_COLOR1_TEXEL))); }
-vec4 nodeColor2(uint i) { return uintBitsToFloat(texelFetch(nodeTexels, nodeTexel(i, NODE_COLOR2_TEXEL))); }
-vec4r nodeChecker(uint i) { return realVec4At(nodeTexels, nodeTexel(i, NODE_CHECKER_TEXEL)); }
+// The geometry kind and the look: the two words after eyePower.
+uvec2 nodeKindAndLook(uint i) {
+    uvec4 texel = texelFetch(nodeTexels, nodeTexel(i, NODE_EYE_POWER_TEXEL));
+#ifdef HEXRAY_F64
+    return texel.zw;
+#else
+    return texel.yz;
+#endif
+}
+uint nodeGeometryKind(uint i) { return nodeKindAndLook(i).x; }
+uint nodeLook(uint i) { return nodeKindAndLook(i).y; }
+uint lookShaderKind(uint l) { return texelFetch(nodeTexels, lookTexel(l, LOOK_SHADER_TEXEL)).x; }
+vec4 lookColor1(uint l) { return uintBitsToFloat(texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR1_TEXEL))); }
+vec4 lookColor2(uint l) { return uintBitsToFloat(texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR2_TEXEL))); }
+vec4r lookChecker(uint l) { return realVec4At(nodeTexels, lookTexel(l, int(LOOK_CHECKER_TEXEL))); }
 vec4r lightPosition(uint i) { return realVec4At(lightTexels, LIGHT_TEXELS * int(i)); }
 vec4r lightPower(uint i) { return realVec4At(lightTexels, LIGHT_TEXELS * int(i) + REAL_VEC4_TEXELS); }
 #endif

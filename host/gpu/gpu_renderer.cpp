@@ -128,6 +128,24 @@ std::vector<std::byte> bytesOf(std::span<T> values) {
     return {bytes.begin(), bytes.end()};
 }
 
+// The node buffer's contents: the nodes (packed already, or now straight into the buffer), then the looks.
+template <typename Real>
+BufferContents nodesThenLooks(const Scene& scene, const RenderPlan& plan, gpu::GpuScene<Real> packed,
+                              bool packedInBuffer) {
+    const std::size_t nodeBytes =
+        (packedInBuffer ? scene.nodes.size() : packed.nodes.size()) * sizeof(gpu::GpuNode<Real>);
+    const std::size_t lookBytes = packed.looks.size() * sizeof(gpu::GpuLook<Real>);
+    auto held = std::make_shared<const gpu::GpuScene<Real>>(std::move(packed));
+    return {nodeBytes + lookBytes, [&scene, &plan, held, packedInBuffer, nodeBytes, lookBytes](std::byte* out) {
+                if (packedInBuffer) {
+                    gpu::packNodesInto<Real>(scene, plan.placement, held->lookIndex, out);
+                } else {
+                    std::memcpy(out, held->nodes.data(), nodeBytes);
+                }
+                std::memcpy(out + nodeBytes, held->looks.data(), lookBytes);
+            }};
+}
+
 template <typename Real>
 PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
     // A large scene's nodes are packed straight into their buffer (a generated kernel's constants
@@ -145,6 +163,7 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
     if (plan.layout == SceneLayout::Uniform) {
         // A uniform block declares all SMALL_SCENE_CAPACITY entries: the buffers must hold them.
         packed.nodes.resize(gpu::SMALL_SCENE_CAPACITY);
+        packed.looks.resize(gpu::SMALL_SCENE_CAPACITY);
         packed.lights.resize(gpu::SMALL_SCENE_CAPACITY);
     }
     if (plan.kernel.code) {
@@ -157,12 +176,8 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
         }
     }
     bytes.frame = bytesOf(std::span(&packed.frame, 1));
-    bytes.nodes =
-        packedInBuffer
-            ? BufferContents(scene.nodes.size() * sizeof(gpu::GpuNode<Real>),
-                             [&scene, &plan](std::byte* out) { gpu::packNodesInto<Real>(scene, plan.placement, out); })
-            : BufferContents::of(std::move(packed.nodes));
     bytes.lights = BufferContents::of(std::move(packed.lights));
+    bytes.nodes = nodesThenLooks(scene, plan, std::move(packed), packedInBuffer);
     return bytes;
 }
 

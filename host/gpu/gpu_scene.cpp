@@ -65,35 +65,42 @@ RealVec4<Real> planeCheckerPhase(const glm::dvec3& origin, double size, double p
 constexpr double kSphereCheckerFullTurn = 360.0;
 
 template <typename Real>
-GpuNode<Real> packNode(const Node& node, const Shader& shader, const Placement& placement, const glm::dvec3& eye) {
+GpuNode<Real> packNode(const Node& node, const Placement& placement, const glm::dvec3& eye, std::uint32_t look) {
     GpuNode<Real> packed{};
-    const auto* plane = std::get_if<Plane>(&node.geometry);
-    if (plane) {
-        packed.kinds.x = GEOMETRY_PLANE;
+    packed.look = look;
+    if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
+        packed.geometryKind = GEOMETRY_PLANE;
         packed.geometry = toReal4<Real>(glm::dvec3(placement.position(glm::dvec3(0.0, plane->height, 0.0)).y, 0, 0));
     } else {
         const auto& sphere = std::get<Sphere>(node.geometry);
-        packed.kinds.x = GEOMETRY_SPHERE;
+        packed.geometryKind = GEOMETRY_SPHERE;
         packed.geometry = toReal4<Real>(placement.position(sphere.center), placement.length(sphere.radius));
         const glm::dvec3 fromCenter = placement.position(eye) - placement.position(sphere.center);
         packed.eyePower = Real(eyePower(fromCenter, placement.length(sphere.radius)));
     }
+    return packed;
+}
+
+template <typename Real>
+GpuLook<Real> packLook(const Shader& shader, bool sphere, const Placement& placement) {
+    GpuLook<Real> packed{};
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
-        packed.kinds.y = SHADER_CONSTANT;
+        packed.shaderKind = SHADER_CONSTANT;
         packed.color1 = toColor(constant->color);
     } else if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
-        packed.kinds.y = SHADER_LAMBERT;
+        packed.shaderKind = SHADER_LAMBERT;
         packed.color1 = toColor(lambert->color);
     } else {
         const auto& checker = std::get<CheckerShader>(shader);
-        packed.kinds.y = SHADER_CHECKER;
+        packed.shaderKind = SHADER_CHECKER;
         packed.color1 = toColor(checker.color1);
         packed.color2 = toColor(checker.color2);
         // Sphere checkers use angles, which neither move with the eye nor scale; capped (exactly:
         // see kSphereCheckerFullTurn) so that float holds the size. Plane sizes are lengths, which
         // the placement brings within float's range.
-        packed.checker = plane ? planeCheckerPhase<Real>(placement.origin, checker.size, placement.length(checker.size))
-                               : toReal4<Real>(glm::dvec3(std::min(checker.size, kSphereCheckerFullTurn), 0, 0));
+        packed.checker = sphere
+                             ? toReal4<Real>(glm::dvec3(std::min(checker.size, kSphereCheckerFullTurn), 0, 0))
+                             : planeCheckerPhase<Real>(placement.origin, checker.size, placement.length(checker.size));
     }
     return packed;
 }
@@ -118,9 +125,14 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
 
+    packed.lookIndex = LookIndex(scene);
+    for (std::size_t l = 0; l < packed.lookIndex.size(); ++l) {
+        packed.looks.push_back(packLook<Real>(scene.shaders[packed.lookIndex.shaderIndex(l)],
+                                              packed.lookIndex.showsSpheres(l), placement));
+    }
     if (nodes == NodePacking::Now) {
         packed.nodes.resize(scene.nodes.size());
-        packNodesInto<Real>(scene, placement, reinterpret_cast<std::byte*>(packed.nodes.data()));
+        packNodesInto<Real>(scene, placement, packed.lookIndex, reinterpret_cast<std::byte*>(packed.nodes.data()));
     }
     // Irradiance falls off as 1/r^2: lengths divided by s need intensities divided by s^2.
     const double powerScale = 1.0 / (placement.scale * placement.scale);
@@ -136,18 +148,30 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
 template GpuScene<float> packScene<float>(const Scene&, const Placement&, NodePacking);
 template GpuScene<double> packScene<double>(const Scene&, const Placement&, NodePacking);
 
+LookIndex::LookIndex(const Scene& scene) : lookOfSlot_(2 * scene.shaders.size(), 0) {
+    std::vector<bool> seen(lookOfSlot_.size(), false);
+    for (const Node& node : scene.nodes) {
+        const std::size_t at = slot(node.shaderIndex, isSphere(node));
+        if (!seen[at]) {
+            seen[at] = true;
+            lookOfSlot_[at] = std::uint32_t(looks_.size());
+            looks_.push_back({node.shaderIndex, isSphere(node)});
+        }
+    }
+}
+
 template <typename Real>
-void packNodesInto(const Scene& scene, const Placement& placement, std::byte* out) {
+void packNodesInto(const Scene& scene, const Placement& placement, const LookIndex& looks, std::byte* out) {
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
     for (const Node& node : scene.nodes) {
-        const GpuNode<Real> packed = packNode<Real>(node, scene.shaders[node.shaderIndex], placement, eye);
+        const GpuNode<Real> packed = packNode<Real>(node, placement, eye, looks.of(node));
         std::memcpy(out, &packed, sizeof packed);
         out += sizeof packed;
     }
 }
 
-template void packNodesInto<float>(const Scene&, const Placement&, std::byte*);
-template void packNodesInto<double>(const Scene&, const Placement&, std::byte*);
+template void packNodesInto<float>(const Scene&, const Placement&, const LookIndex&, std::byte*);
+template void packNodesInto<double>(const Scene&, const Placement&, const LookIndex&, std::byte*);
 
 template <typename Real>
 void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
@@ -155,7 +179,7 @@ void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
     for (const std::uint32_t i : sphereNodes) {
         const Node& node = scene.nodes[i];
-        const GpuNode<Real> packed = packNode<Real>(node, scene.shaders[node.shaderIndex], placement, eye);
+        const GpuNode<Real> packed = packNode<Real>(node, placement, eye, 0);
         const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, {}};
         std::memcpy(out, &sphere, sizeof sphere);
         out += sizeof sphere;

@@ -50,13 +50,13 @@ std::vector<std::byte> sceneConstantValues(const std::vector<SceneConstant>& con
                     append<Real>(bytes, scene.nodes[i].eyePower);
                     break;
                 case Field::Color1:
-                    append<float>(bytes, scene.nodes[i].color1[c]);
+                    append<float>(bytes, scene.looks[scene.nodes[i].look].color1[c]);
                     break;
                 case Field::Color2:
-                    append<float>(bytes, scene.nodes[i].color2[c]);
+                    append<float>(bytes, scene.looks[scene.nodes[i].look].color2[c]);
                     break;
                 case Field::Checker:
-                    append<Real>(bytes, scene.nodes[i].checker[c]);
+                    append<Real>(bytes, scene.looks[scene.nodes[i].look].checker[c]);
                     break;
                 case Field::LightPosition:
                     append<Real>(bytes, scene.lights[i].position[c]);

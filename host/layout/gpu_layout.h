@@ -40,20 +40,27 @@ struct GpuFrame {
     std::uint32_t lightCount;
 };
 
-// A node carries its own copy of its shader's parameters: one fetch per candidate, no indirection.
+// A node: its geometry and the index of its look. The looks follow the nodes in the node buffer.
 template <typename Real>
 struct GpuNode {
-    glm::uvec4 kinds;         // .x GEOMETRY_*, .y SHADER_*
     RealVec4<Real> geometry;  // plane: .x = height; sphere: .xyz = centre, .w = radius
     // Sphere: |eye - centre|^2 - r^2, the eye's power with respect to the sphere, which every
     // camera ray needs and float cannot form when the eye is close to a large sphere; planes: 0.
     Real eyePower;
-    Real unused[3];
-    glm::vec4 color1;  // .rgb: constant / lambert colour, checker's first colour
-    glm::vec4 color2;  // .rgb: checker's second colour
-    // Checker: .x = square size; .yz = the eye's fractional cell position (x, z) / size on a
-    // plane (the integer part is folded into .w), .w = parity (0 or 1) of the eye's whole cells.
+    std::uint32_t geometryKind;  // GEOMETRY_*
+    std::uint32_t look;          // its entry in the looks
+};
+
+// A shader as one kind of geometry shows it: every node of that shader and kind shares it, so a
+// million spheres of a few shaders carry a few looks, not a million copies of their colours.
+template <typename Real>
+struct GpuLook {
+    // Checker: .x = square size; on a plane .yz = the eye's fractional cell position (x, z) / size
+    // (the integer part is folded into .w), .w = parity (0 or 1) of the eye's whole cells.
     RealVec4<Real> checker;
+    glm::vec4 color1;          // .rgb: constant / lambert colour, checker's first colour
+    glm::vec4 color2;          // .rgb: checker's second colour
+    std::uint32_t shaderKind;  // SHADER_*
 };
 
 template <typename Real>
@@ -137,18 +144,28 @@ static_assert(sizeof(Specialization) == FIRST_SCENE_CONSTANT_ID * sizeof(std::ui
 // scene_data.glsl reads nodes and lights as 16-byte texels, each member from its texel
 // (shader_interface.h's NODE_*_TEXEL_*) on.
 inline constexpr std::size_t kTexelBytes = 16;  // an RGBA32UI texel
-static_assert(offsetof(GpuNode<float>, geometry) == NODE_GEOMETRY_TEXEL_F32 * kTexelBytes &&
-              offsetof(GpuNode<double>, geometry) == NODE_GEOMETRY_TEXEL_F64 * kTexelBytes);
-static_assert(offsetof(GpuNode<float>, eyePower) == NODE_EYE_POWER_TEXEL_F32 * kTexelBytes &&
-              offsetof(GpuNode<double>, eyePower) == NODE_EYE_POWER_TEXEL_F64 * kTexelBytes);
-static_assert(offsetof(GpuNode<float>, color1) == NODE_COLOR1_TEXEL_F32 * kTexelBytes &&
-              offsetof(GpuNode<double>, color1) == NODE_COLOR1_TEXEL_F64 * kTexelBytes);
-static_assert(offsetof(GpuNode<float>, color2) == NODE_COLOR2_TEXEL_F32 * kTexelBytes &&
-              offsetof(GpuNode<double>, color2) == NODE_COLOR2_TEXEL_F64 * kTexelBytes);
-static_assert(offsetof(GpuNode<float>, checker) == NODE_CHECKER_TEXEL_F32 * kTexelBytes &&
-              offsetof(GpuNode<double>, checker) == NODE_CHECKER_TEXEL_F64 * kTexelBytes);
-static_assert(sizeof(GpuNode<float>) == NODE_TEXELS_F32 * kTexelBytes &&
-              sizeof(GpuNode<double>) == NODE_TEXELS_F64 * kTexelBytes);
+template <typename Real>
+constexpr bool nodeTexelsMatch(std::size_t eyePowerTexel, std::size_t texels) {
+    using Node = GpuNode<Real>;
+    return offsetof(Node, geometry) == NODE_GEOMETRY_TEXEL * kTexelBytes &&
+           offsetof(Node, eyePower) == eyePowerTexel * kTexelBytes &&
+           offsetof(Node, geometryKind) == eyePowerTexel * kTexelBytes + sizeof(Real) &&
+           offsetof(Node, look) == offsetof(Node, geometryKind) + 4 && sizeof(Node) == texels * kTexelBytes;
+}
+static_assert(nodeTexelsMatch<float>(NODE_EYE_POWER_TEXEL_F32, NODE_TEXELS_F32) &&
+              nodeTexelsMatch<double>(NODE_EYE_POWER_TEXEL_F64, NODE_TEXELS_F64));
+template <typename Real>
+constexpr bool lookTexelsMatch(std::size_t color1Texel, std::size_t color2Texel, std::size_t shaderTexel,
+                               std::size_t texels) {
+    using Look = GpuLook<Real>;
+    return offsetof(Look, checker) == LOOK_CHECKER_TEXEL * kTexelBytes &&
+           offsetof(Look, color1) == color1Texel * kTexelBytes && offsetof(Look, color2) == color2Texel * kTexelBytes &&
+           offsetof(Look, shaderKind) == shaderTexel * kTexelBytes && sizeof(Look) == texels * kTexelBytes;
+}
+static_assert(lookTexelsMatch<float>(LOOK_COLOR1_TEXEL_F32, LOOK_COLOR2_TEXEL_F32, LOOK_SHADER_TEXEL_F32,
+                                     LOOK_TEXELS_F32) &&
+              lookTexelsMatch<double>(LOOK_COLOR1_TEXEL_F64, LOOK_COLOR2_TEXEL_F64, LOOK_SHADER_TEXEL_F64,
+                                      LOOK_TEXELS_F64));
 static_assert(offsetof(GpuLight<float>, power) == 1 * 16 && offsetof(GpuLight<double>, power) == 2 * 16);
 static_assert(sizeof(GpuLight<float>) == 2 * 16 && sizeof(GpuLight<double>) == 4 * 16);
 static_assert(sizeof(GpuCandidateAxes) == 48);

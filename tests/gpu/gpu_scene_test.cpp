@@ -24,6 +24,10 @@ gpu::GpuScene<float> packRelative(const Scene& scene) {
     return gpu::packScene<float>(scene, placementFor(scene, Formulation::Robust));
 }
 
+const gpu::GpuLook<float>& lookOf(const gpu::GpuScene<float>& packed, std::size_t node) {
+    return packed.looks.at(packed.nodes.at(node).look);
+}
+
 TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
     const Scene scene = checkerPlaneAndBall({1, 60, -120});
     // Lengths from the checker's 20 to the sphere's far side |(-11, 0, 120)| + 30 = 150.5: their
@@ -31,9 +35,9 @@ TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
     ASSERT_EQ(placementScale(scene), 64.0);
     const gpu::GpuScene<float> packed = packRelative(scene);
     EXPECT_EQ(packed.frame.origin, glm::vec4(0));
-    EXPECT_EQ(packed.nodes[0].kinds.x, gpu::GEOMETRY_PLANE);
+    EXPECT_EQ(packed.nodes[0].geometryKind, gpu::GEOMETRY_PLANE);
     EXPECT_EQ(packed.nodes[0].geometry.x, (15.0f - 60.0f) / 64);
-    EXPECT_EQ(packed.nodes[1].kinds.x, gpu::GEOMETRY_SPHERE);
+    EXPECT_EQ(packed.nodes[1].geometryKind, gpu::GEOMETRY_SPHERE);
     EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30) / 64.0f);
     EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0) / 64.0f);
     // 1/r^2 falloff in units 64 times larger: the power is 64^2 times smaller.
@@ -48,7 +52,7 @@ TEST(PackScene, WorldPlacementUploadsTheSceneAsWritten) {
     EXPECT_EQ(packed.frame.origin, glm::vec4(1, 60, -120, 0));
     EXPECT_EQ(packed.nodes[0].geometry.x, 15.0f);
     EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-10, 60, 0, 30));
-    EXPECT_EQ(packed.nodes[0].checker, glm::vec4(20, 0, 0, 0));
+    EXPECT_EQ(lookOf(packed, 0).checker, glm::vec4(20, 0, 0, 0));
 }
 
 TEST(PackScene, DoubleLayoutKeepsWhatFloatWouldRound) {
@@ -94,31 +98,56 @@ TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {
     // Eye x / 20 = -1.25: cell -2, fraction 0.75; z / 20 = 2.35: cell 2, fraction 0.35; parity 0.
     const Scene scene = checkerPlaneAndBall({-25, 60, 47});
     gpu::GpuScene<float> packed = packRelative(scene);
-    EXPECT_FLOAT_EQ(packed.nodes[0].checker.x, float(20.0 / placementScale(scene)));
-    EXPECT_NEAR(packed.nodes[0].checker.y, 0.75f, 1e-7f);
-    EXPECT_NEAR(packed.nodes[0].checker.z, 0.35f, 1e-6f);
-    EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);
+    EXPECT_FLOAT_EQ(lookOf(packed, 0).checker.x, float(20.0 / placementScale(scene)));
+    EXPECT_NEAR(lookOf(packed, 0).checker.y, 0.75f, 1e-7f);
+    EXPECT_NEAR(lookOf(packed, 0).checker.z, 0.35f, 1e-6f);
+    EXPECT_EQ(lookOf(packed, 0).checker.w, 0.0f);
     // x / 20 = 1.5: cell 1 (odd), z cell 0: parity 1.
     packed = packRelative(checkerPlaneAndBall({30, 60, 0}));
-    EXPECT_EQ(packed.nodes[0].checker.w, 1.0f);
+    EXPECT_EQ(lookOf(packed, 0).checker.w, 1.0f);
     // Cells -3 and 1e6 + 1 (both odd): parity 0, at coordinates float32 could not hold exactly.
     packed = packRelative(checkerPlaneAndBall({-50, 60, 20e6 + 30}));
-    EXPECT_EQ(packed.nodes[0].checker.w, 0.0f);
-    EXPECT_NEAR(packed.nodes[0].checker.z, 0.5f, 1e-6f);
+    EXPECT_EQ(lookOf(packed, 0).checker.w, 0.0f);
+    EXPECT_NEAR(lookOf(packed, 0).checker.z, 0.5f, 1e-6f);
 }
 
 TEST(PackScene, SphereCheckerUsesAnglesThatDoNotMoveWithTheEye) {
     const gpu::GpuScene<float> packed = packRelative(checkerPlaneAndBall({-25, 60, 47}));
-    EXPECT_EQ(packed.nodes[1].checker, glm::vec4(9, 0, 0, 0));
+    EXPECT_EQ(lookOf(packed, 1).checker, glm::vec4(9, 0, 0, 0));
 }
 
 TEST(PackScene, SphereCheckerSizesFromAFullTurnOnGiveTheCellsOf360Degrees) {
     // 2e43 degrees would be inf in float (lon / inf = -0 for lon < 0: cell 0, not -1).
     Scene scene = checkerPlaneAndBall({-25, 60, 47});
     scene.shaders[1] = CheckerShader{Color(1), Color(0), 2e43};
-    EXPECT_EQ(packRelative(scene).nodes[1].checker, glm::vec4(360, 0, 0, 0));
+    EXPECT_EQ(lookOf(packRelative(scene), 1).checker, glm::vec4(360, 0, 0, 0));
     scene.shaders[1] = CheckerShader{Color(1), Color(0), 359.0};
-    EXPECT_EQ(packRelative(scene).nodes[1].checker, glm::vec4(359, 0, 0, 0));
+    EXPECT_EQ(lookOf(packRelative(scene), 1).checker, glm::vec4(359, 0, 0, 0));
+}
+
+TEST(PackScene, NodesOfOneShaderAndKindShareALookAndAShaderOnPlanesAndSpheresHasTwo) {
+    Scene scene = checkerPlaneAndBall({-25, 60, 47});
+    scene.shaderNames.push_back("red");
+    scene.shaders.push_back(LambertShader{Color(1, 0, 0)});
+    // Nodes: floor (checker 0), ball (checker 1), then red, checker 0 and checker 1 spheres, a red plane.
+    scene.nodes.push_back(Node{Sphere{{0, 0, 0}, 1}, 2});
+    scene.nodes.push_back(Node{Sphere{{5, 0, 0}, 1}, 0});
+    scene.nodes.push_back(Node{Sphere{{9, 0, 0}, 1}, 1});
+    scene.nodes.push_back(Node{Plane{-5.0}, 2});
+    const gpu::GpuScene<float> packed = packRelative(scene);
+    std::vector<std::uint32_t> looks;
+    for (const gpu::GpuNode<float>& node : packed.nodes) {
+        looks.push_back(node.look);
+    }
+    EXPECT_EQ(looks, (std::vector<std::uint32_t>{0, 1, 2, 3, 1, 4}));
+    ASSERT_EQ(packed.looks.size(), 5u);
+    EXPECT_EQ(packed.looks[2].shaderKind, gpu::SHADER_LAMBERT);
+    EXPECT_EQ(packed.looks[2].color1, glm::vec4(1, 0, 0, 0));
+    EXPECT_EQ(packed.looks[4].color1, glm::vec4(1, 0, 0, 0));
+    // Checker 0 on the floor is a plane's (the eye's cell phase), on the sphere an angle's.
+    EXPECT_EQ(packed.looks[0].shaderKind, gpu::SHADER_CHECKER);
+    EXPECT_NEAR(packed.looks[0].checker.y, 0.75f, 1e-7f);
+    EXPECT_EQ(packed.looks[3].checker, glm::vec4(20, 0, 0, 0));
 }
 
 }  // namespace

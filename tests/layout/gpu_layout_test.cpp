@@ -33,23 +33,30 @@ struct Member {
         prefix #member, offsetof(type, member) \
     }
 
-// `nodes` and `lights` name the arrays whose element 0 reflection lists: the uniform blocks, or for
-// the texel layout (read as texels at the offsets gpu_layout.h asserts) the std430 probes.
+// `nodes`, `looks` and `lights` name the arrays whose element 0 reflection lists: the uniform blocks
+// (where the looks follow SMALL_SCENE_CAPACITY nodes in the node block: `looksStart` bytes in), or
+// for the texel layout (read as texels at the offsets gpu_layout.h asserts) the std430 probes.
 template <typename Real>
-std::vector<Member> sceneMembers(const std::string& nodes, const std::string& lights) {
+std::vector<Member> sceneMembers(const std::string& nodes, const std::string& looks, std::size_t looksStart,
+                                 const std::string& lights) {
     using Frame = GpuFrame<Real>;
     using Node = GpuNode<Real>;
+    using Look = GpuLook<Real>;
     using Light = GpuLight<Real>;
+    const auto lookMember = [&](const char* name, std::size_t offset) {
+        return Member{looks + "[0]." + name, looksStart + offset};
+    };
     return {
-        MEMBER("FrameBlock.", Frame, origin),     MEMBER("FrameBlock.", Frame, sheetTopLeft),
-        MEMBER("FrameBlock.", Frame, sheetRight), MEMBER("FrameBlock.", Frame, sheetDown),
-        MEMBER("FrameBlock.", Frame, background), MEMBER("FrameBlock.", Frame, ambient),
-        MEMBER("FrameBlock.", Frame, imageSize),  MEMBER("FrameBlock.", Frame, samplingOffset),
-        MEMBER("FrameBlock.", Frame, nodeCount),  MEMBER("FrameBlock.", Frame, lightCount),
-        MEMBER(nodes + "[0].", Node, kinds),      MEMBER(nodes + "[0].", Node, geometry),
-        MEMBER(nodes + "[0].", Node, eyePower),   MEMBER(nodes + "[0].", Node, color1),
-        MEMBER(nodes + "[0].", Node, color2),     MEMBER(nodes + "[0].", Node, checker),
-        MEMBER(lights + "[0].", Light, position), MEMBER(lights + "[0].", Light, power),
+        MEMBER("FrameBlock.", Frame, origin),           MEMBER("FrameBlock.", Frame, sheetTopLeft),
+        MEMBER("FrameBlock.", Frame, sheetRight),       MEMBER("FrameBlock.", Frame, sheetDown),
+        MEMBER("FrameBlock.", Frame, background),       MEMBER("FrameBlock.", Frame, ambient),
+        MEMBER("FrameBlock.", Frame, imageSize),        MEMBER("FrameBlock.", Frame, samplingOffset),
+        MEMBER("FrameBlock.", Frame, nodeCount),        MEMBER("FrameBlock.", Frame, lightCount),
+        MEMBER(nodes + "[0].", Node, geometry),         MEMBER(nodes + "[0].", Node, eyePower),
+        MEMBER(nodes + "[0].", Node, geometryKind),     MEMBER(nodes + "[0].", Node, look),
+        lookMember("checker", offsetof(Look, checker)), lookMember("color1", offsetof(Look, color1)),
+        lookMember("color2", offsetof(Look, color2)),   lookMember("shaderKind", offsetof(Look, shaderKind)),
+        MEMBER(lights + "[0].", Light, position),       MEMBER(lights + "[0].", Light, power),
     };
 }
 
@@ -90,6 +97,7 @@ std::vector<Member> outputMembers() {
 template <typename Real>
 std::map<std::string, std::size_t> arrayStrides() {
     std::map<std::string, std::size_t> strides{{"NodeProbe", sizeof(GpuNode<Real>)},
+                                               {"LookProbe", sizeof(GpuLook<Real>)},
                                                {"LightProbe", sizeof(GpuLight<Real>)}};
     strides.insert({{"TraceEntryProbe", sizeof(GpuTraceEntry<Real>)},
                     {"PixelCarryProbe", sizeof(GpuPixelCarry)},
@@ -108,31 +116,33 @@ struct Reflected {
 // A compute shader that declares every shared block and uses one member of each, so the
 // reflection keeps them all; `defines` picks the variant.
 std::map<std::string, Reflected> reflectBlocks(const std::string& defines) {
-    const std::string source = "#version 450\n#extension GL_GOOGLE_include_directive : require\n" + defines +
-                               "#include \"scene_data.glsl\"\n"
-                               "#include \"render_outputs.glsl\"\n"
-                               "#include \"inspect_hooks.glsl\"\n"
-                               "#include \"light_batches.glsl\"\n"
-                               "#ifdef HEXRAY_UNIFORM_SCENE\n"
-                               "#define PROBE(binding_) layout(std140, set = 1, binding = binding_) uniform\n"
-                               "#else\n"
-                               "#define PROBE(binding_) layout(std430, set = 1, binding = binding_) readonly buffer\n"
-                               "#endif\n"
-                               "PROBE(0) NodeProbe { Node nodeProbe[2]; };\n"
-                               "PROBE(1) LightProbe { Light lightProbe[2]; };\n"
-                               "layout(std430, set = 1, binding = 2) readonly buffer TraceEntryProbe {\n"
-                               "    TraceEntry traceEntryProbe[2];\n"
-                               "};\n"
-                               "layout(std430, set = 1, binding = 3) readonly buffer PixelCarryProbe {\n"
-                               "    PixelCarry pixelCarryProbe[2];\n"
-                               "};\n"
-                               "void main() {\n"
-                               "    pixels[0] = vec4(frame.nodeCount + nodeKinds(0u).x + band.firstRow);\n"
-                               "    classes[0] = uvec2(float(lightPower(0u).x));\n"
-                               "    encodedPixels[0] = trace.header.request.x + trace.entries[0].status.x;\n"
-                               "    aovs[0] = vec4(nodeProbe[1].kinds.x + lightProbe[1].power.x + "
-                               "traceEntryProbe[1].color.x + pixelCarryProbe[1].flags + carry[0].flags);\n"
-                               "}\n";
+    const std::string source =
+        "#version 450\n#extension GL_GOOGLE_include_directive : require\n" + defines +
+        "#include \"scene_data.glsl\"\n"
+        "#include \"render_outputs.glsl\"\n"
+        "#include \"inspect_hooks.glsl\"\n"
+        "#include \"light_batches.glsl\"\n"
+        "#ifdef HEXRAY_UNIFORM_SCENE\n"
+        "#define PROBE(binding_) layout(std140, set = 1, binding = binding_) uniform\n"
+        "#else\n"
+        "#define PROBE(binding_) layout(std430, set = 1, binding = binding_) readonly buffer\n"
+        "#endif\n"
+        "PROBE(0) NodeProbe { Node nodeProbe[2]; };\n"
+        "PROBE(1) LightProbe { Light lightProbe[2]; };\n"
+        "PROBE(4) LookProbe { Look lookProbe[2]; };\n"
+        "layout(std430, set = 1, binding = 2) readonly buffer TraceEntryProbe {\n"
+        "    TraceEntry traceEntryProbe[2];\n"
+        "};\n"
+        "layout(std430, set = 1, binding = 3) readonly buffer PixelCarryProbe {\n"
+        "    PixelCarry pixelCarryProbe[2];\n"
+        "};\n"
+        "void main() {\n"
+        "    pixels[0] = vec4(frame.nodeCount + nodeGeometryKind(0u) + lookShaderKind(0u) + band.firstRow);\n"
+        "    classes[0] = uvec2(float(lightPower(0u).x));\n"
+        "    encodedPixels[0] = trace.header.request.x + trace.entries[0].status.x;\n"
+        "    aovs[0] = vec4(nodeProbe[1].look + lookProbe[1].shaderKind + lightProbe[1].power.x + "
+        "traceEntryProbe[1].color.x + pixelCarryProbe[1].flags + carry[0].flags);\n"
+        "}\n";
     glslang::InitializeProcess();
     glslang::TShader shader(EShLangCompute);
     const char* text = source.c_str();
@@ -203,9 +213,12 @@ TEST_P(GpuLayoutTest, EveryMemberAndStrideIsWhereTheCppMirrorPutsIt) {
     const std::map<std::string, Reflected> reflected = reflectBlocks(variant.defines);
     ASSERT_FALSE(reflected.empty());
     const std::string nodes = variant.texels ? "nodeProbe" : "nodes";
+    const std::string looks = variant.texels ? "lookProbe" : "looks";
     const std::string lights = variant.texels ? "lightProbe" : "lights";
-    std::vector<Member> expected =
-        variant.f64 ? sceneMembers<double>(nodes, lights) : sceneMembers<float>(nodes, lights);
+    const std::size_t looksStart =
+        variant.texels ? 0 : SMALL_SCENE_CAPACITY * (variant.f64 ? sizeof(GpuNode<double>) : sizeof(GpuNode<float>));
+    std::vector<Member> expected = variant.f64 ? sceneMembers<double>(nodes, looks, looksStart, lights)
+                                               : sceneMembers<float>(nodes, looks, looksStart, lights);
     const std::vector<Member> outputs = variant.f64 ? outputMembers<double>() : outputMembers<float>();
     expected.insert(expected.end(), outputs.begin(), outputs.end());
     for (const Member& member : expected) {
@@ -221,8 +234,8 @@ TEST_P(GpuLayoutTest, EveryMemberAndStrideIsWhereTheCppMirrorPutsIt) {
     }
     // Every member the GLSL declares has its C++ mirror: padding, the probes, the texel buffers
     // (samplers, not blocks: their texels are asserted in gpu_layout.h), the other elements
-    // of a uniform array ("nodes[9].kinds") and the second name reflection gives a member reached
-    // through a variable index ("nodes.kinds") aside.
+    // of a uniform array ("nodes[9].look") and the second name reflection gives a member reached
+    // through a variable index ("nodes.look") aside.
     const auto mirrored = [&](std::string name) {
         name = std::regex_replace(name, std::regex(R"(\[[0-9]+\])"), "[0]");
         return std::any_of(expected.begin(), expected.end(), [&](const Member& m) { return m.name == name; }) ||
