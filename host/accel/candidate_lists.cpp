@@ -56,17 +56,6 @@ struct PlacedScene {
     std::vector<ShadowReach> shadowReach;
 };
 
-std::vector<PlacedSphere> inMortonOrder(std::vector<PlacedSphere> spheres) {
-    std::vector<glm::dvec3> centers(spheres.size());
-    std::transform(spheres.begin(), spheres.end(), centers.begin(), [](const PlacedSphere& s) { return s.center; });
-    std::vector<PlacedSphere> ordered;
-    ordered.reserve(spheres.size());
-    for (const std::uint32_t index : mortonOrder(centers)) {
-        ordered.push_back(spheres[index]);
-    }
-    return ordered;
-}
-
 // The directions of the camera rays at the corners of the image and its margin, from the eye.
 std::array<glm::dvec3, 4> cameraCorners(const Scene& scene) {
     const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
@@ -139,28 +128,52 @@ ShadowReach textbookReach(const std::optional<std::vector<glm::dvec3>>& hull, st
     return reach;
 }
 
-PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulation formulation) {
+// The spheres placed, in record order (morton_order.h), on `threads` threads, each from the scene
+// (the order is known first, from the centres alone).
+std::vector<PlacedSphere> placedInMortonOrder(const Scene& scene, const Placement& placement,
+                                              std::span<const std::uint32_t> sphereNodes,
+                                              std::span<const glm::dvec3> centers, unsigned threads) {
+    const std::vector<std::uint32_t> order = mortonOrder(centers);
+    std::vector<PlacedSphere> spheres(order.size());
+    runAcrossCores(
+        order.size(), kSpheresPerPlacingPart,
+        [&](std::size_t first, std::size_t end) {
+            for (std::size_t record = first; record < end; ++record) {
+                const std::uint32_t node = sphereNodes[order[record]];
+                const glm::dvec3& center = centers[order[record]];
+                const double radius = std::get<Sphere>(scene.nodes[node].geometry).radius;
+                spheres[record] = {center, placement.length(radius), node, glm::length(center)};
+            }
+        },
+        threads);
+    return spheres;
+}
+
+PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulation formulation, unsigned threads) {
     PlacedScene placed;
     placed.eye = placement.position(scene.camera.position);
     placed.eyeSize = glm::length(placed.eye);
-    std::vector<PlacedSphere> spheres;
-    spheres.reserve(scene.nodes.size());
+    std::vector<std::uint32_t> sphereNodes;
+    std::vector<glm::dvec3> centers;
+    sphereNodes.reserve(scene.nodes.size());
+    centers.reserve(scene.nodes.size());
     glm::dvec3 low = placed.eye;
     glm::dvec3 high = placed.eye;
     for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
         if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry)) {
             const glm::dvec3 center = placement.position(sphere->center);
-            const PlacedSphere s{center, placement.length(sphere->radius), i, glm::length(center)};
-            low = glm::min(low, s.center - s.radius);
-            high = glm::max(high, s.center + s.radius);
-            spheres.push_back(s);
+            const double radius = placement.length(sphere->radius);
+            low = glm::min(low, center - radius);
+            high = glm::max(high, center + radius);
+            sphereNodes.push_back(i);
+            centers.push_back(center);
         } else {
             placed.planes.push_back(i);
             const double height = std::get<Plane>(scene.nodes[i].geometry).height;
             placed.planeHeights.push_back(placement.position({0.0, height, 0.0}).y);
         }
     }
-    placed.spheres = inMortonOrder(std::move(spheres));
+    placed.spheres = placedInMortonOrder(scene, placement, sphereNodes, centers, threads);
     const std::array<glm::dvec3, 8> box = boxCorners(low, high);
     const auto hull = shadowOriginHull(placed, box, cameraCorners(scene));
     for (const PointLight& light : scene.lights) {
@@ -486,13 +499,17 @@ struct LightGridPlan {
     double cellSide = 0;
     std::size_t cells = 0;
     std::size_t entries = 0;
+    // When no thread plans more than one light: what the light's faces see and their grids, kept
+    // for writeLightGrids rather than sighted again.
+    std::optional<Sightings> faces;
+    std::vector<CandidateGrid> grids;
 };
 
 constexpr ViewSet kLightFaces{0, gpu::CUBE_FACES};
 
 // Each light's grids, decided light by light on up to `threads` threads (each its own lights; the
 // threads never depend on the number of lights), seeing the spheres anew for each light: only one
-// light's footprints per thread exist at a time.
+// light's footprints per thread exist at a time (and are kept when each thread has one light).
 std::vector<LightGridPlan> planLightGrids(const PlacedScene& placed, const Reach& reach, const LightBudget& budget,
                                           unsigned threads) {
     const std::size_t lights = placed.lights.size();
@@ -501,13 +518,19 @@ std::vector<LightGridPlan> planLightGrids(const PlacedScene& placed, const Reach
     if (parts == 0) {
         return plans;
     }
+    const bool keep = lights <= threads;
     runParts(parts, [&](unsigned part) {
         Sightings faces = lightFaces();
         for (std::size_t light = partBegin(lights, parts, part); light < partBegin(lights, parts, part + 1); ++light) {
             sightFromLight(placed, reach, light, faces);
             const double side = lightCellSide(faces, kLightFaces, budget.cells);
-            if (const auto choice = chooseGrids(faces, kLightFaces, side, budget.entries, budget.cells)) {
-                plans[light] = {choice->side, choice->cells, choice->entries};
+            if (auto choice = chooseGrids(faces, kLightFaces, side, budget.entries, budget.cells)) {
+                LightGridPlan& plan = plans[light];
+                plan = {choice->side, choice->cells, choice->entries, std::nullopt, {}};
+                if (keep) {
+                    plan.faces = std::move(faces);
+                    plan.grids = std::move(choice->grids);
+                }
             }
         }
     });
@@ -547,7 +570,7 @@ LightOffsets lightOffsets(std::span<const LightGridPlan> plans, std::size_t firs
 
 // Fills each light's cells, entries and grids as planned, on up to `threads` threads; a light's
 // shadow rays past its reach take `everySphereCell`.
-void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<const LightGridPlan> plans,
+void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<LightGridPlan> plans,
                      const LightOffsets& offsets, std::uint32_t everySphereCell, CandidateLists& lists,
                      unsigned threads) {
     const std::size_t lights = plans.size();
@@ -564,21 +587,26 @@ void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<co
                 std::fill(grids, grids + gpu::CUBE_FACES, everySphereGrid(everySphereCell));
                 continue;
             }
-            sightFromLight(placed, reach, light, faces);
-            GridChoice choice = gridsOfSide(faces, kLightFaces, plans[light].cellSide);
+            LightGridPlan& plan = plans[light];
+            if (!plan.faces) {
+                sightFromLight(placed, reach, light, faces);
+                plan.grids = gridsOfSide(faces, kLightFaces, plan.cellSide).grids;
+            }
+            const Sightings& seen = plan.faces ? *plan.faces : faces;
             std::size_t cell = offsets.cells[light];
             std::size_t entry = offsets.entries[light];
             for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-                CandidateGrid& grid = choice.grids[face];
+                CandidateGrid& grid = plan.grids[face];
                 grid.firstCell = std::uint32_t(cell);
                 cell += grid.cellCount();
-                entry = binner.bin(grid, faces.footprints(face), entry);
+                entry = binner.bin(grid, seen.footprints(face), entry);
             }
+            plan.faces.reset();  // its footprints are binned
             // A light whose rays all lie within its reach names a cell of its own (never taken).
             const ShadowReach& shadowReach = placed.shadowReach[light];
-            const std::uint32_t pastReach = shadowReach.longerRays ? everySphereCell : choice.grids[0].firstCell;
+            const std::uint32_t pastReach = shadowReach.longerRays ? everySphereCell : plan.grids[0].firstCell;
             for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-                grids[face] = gpuGrid(choice.grids[face], pastReach, floatNotAbove(shadowReach.length[face]));
+                grids[face] = gpuGrid(plan.grids[face], pastReach, floatNotAbove(shadowReach.length[face]));
             }
         }
     });
@@ -651,7 +679,7 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
                                                   const CandidateBudget& total) {
     const auto start = std::chrono::steady_clock::now();
     const unsigned threads = threadsFor(threadCount);
-    const PlacedScene placed = placeScene(scene, placement, formulation);
+    const PlacedScene placed = placeScene(scene, placement, formulation, threads);
     const Reach reach(width, formulation);
     const Sightings camera = sightCamera(placed, scene, reach, threads);
 
@@ -678,7 +706,7 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     const std::size_t lightShare = std::max<std::size_t>(lightCount, 1);
     const LightBudget budget{(total.entries - entries) / lightShare,
                              std::min((total.cells - cells) / lightShare, kLightCellsPerSample * samples)};
-    const std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
+    std::vector<LightGridPlan> plans = planLightGrids(placed, reach, budget, threads);
     const bool listsEverySphere =
         std::ranges::any_of(plans, [](const LightGridPlan& plan) { return plan.cellSide == 0; }) ||
         std::ranges::any_of(placed.shadowReach, [](const ShadowReach& reach) { return reach.longerRays; });

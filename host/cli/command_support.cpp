@@ -15,6 +15,7 @@
 #include "scene/scene_settings.h"
 #include "strip/strip_stamp.h"
 #include "util/out_of_memory.h"
+#include "util/parallel_parts.h"
 #include "util/printable.h"
 
 namespace hexray::cli {
@@ -104,15 +105,25 @@ Scene readAndParse(const std::string& path, const ImageOverride& image, std::str
     if (!image.settings.empty()) {
         text = withSettings(text, source, image.settings);  // the scene rendered, for its identity too
     }
-    if (identity) {
-        *identity = sceneTextIdentity(text);
-    }
     Progress progress("loading " + source, text.size(), Progress::Unit::Bytes);
     ParseProgress parseProgress;  // none unless shown: the parser's fastest path
     if (Progress::shown()) {
         parseProgress = [&](std::size_t parsed, std::size_t) { progress.update(parsed); };
     }
-    Scene scene = parseScene(text, source, parseProgress);
+    // The identity hashes every byte: for a large file, on a thread of its own beside the parser.
+    constexpr std::size_t kHashBesideFrom = std::size_t{1} << 20;
+    const bool beside = identity && text.size() >= kHashBesideFrom;
+    if (identity && !beside) {
+        *identity = sceneTextIdentity(text);
+    }
+    Scene scene;
+    runParts(beside ? 2 : 1, [&](unsigned part) {
+        if (part == 1) {
+            *identity = sceneTextIdentity(text);
+        } else {
+            scene = parseScene(text, source, parseProgress);
+        }
+    });
     applyImageOverride(scene, image);
     return scene;
 }

@@ -4,12 +4,26 @@
 #include <cstring>
 #include <vector>
 
+#include "util/parallel_parts.h"
+
 namespace hexray::inline gpu {
 namespace {
 
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& values) {
     return std::as_bytes(std::span(values));
+}
+
+// The lists are copied on every core, in parts of at least this many bytes: most of a large copy's
+// time goes to the fresh buffer's first touch, which the cores share.
+constexpr std::size_t kBytesPerCopyPart = std::size_t{4} << 20;
+
+void copyAcrossCores(std::byte* to, std::span<const std::byte> from) {
+    runAcrossCores(from.size(), kBytesPerCopyPart, [&](std::size_t first, std::size_t end) {
+        if (end > first) {  // an empty span may have a null data(), which memcpy must not get
+            std::memcpy(to + first, from.data() + first, end - first);
+        }
+    });
 }
 
 }  // namespace
@@ -28,9 +42,7 @@ TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
     TexelBuffer texels(device, physicalDevice, size, format);
     std::size_t offset = 0;
     for (const std::span<const std::byte> piece : pieces) {
-        if (!piece.empty()) {  // an empty span may have a null data(), which memcpy must not get
-            std::memcpy(texels.buffer().data() + offset, piece.data(), piece.size());
-        }
+        copyAcrossCores(texels.buffer().data() + offset, piece);
         offset += piece.size();
     }
     return texels;

@@ -9,6 +9,7 @@
 
 #include "camera/camera.h"
 #include "precision/precision.h"
+#include "util/parallel_parts.h"
 
 namespace hexray::inline gpu {
 namespace {
@@ -105,6 +106,9 @@ GpuLook<Real> packLook(const Shader& shader, bool sphere, const Placement& place
     return packed;
 }
 
+// Large scenes are packed on every core, in parts of at least this many nodes.
+constexpr std::size_t kNodesPerPackingPart = std::size_t{1} << 16;
+
 }  // namespace
 
 template <typename Real>
@@ -163,11 +167,12 @@ LookIndex::LookIndex(const Scene& scene) : lookOfSlot_(2 * scene.shaders.size(),
 template <typename Real>
 void packNodesInto(const Scene& scene, const Placement& placement, const LookIndex& looks, std::byte* out) {
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
-    for (const Node& node : scene.nodes) {
-        const GpuNode<Real> packed = packNode<Real>(node, placement, eye, looks.of(node));
-        std::memcpy(out, &packed, sizeof packed);
-        out += sizeof packed;
-    }
+    runAcrossCores(scene.nodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const GpuNode<Real> packed = packNode<Real>(scene.nodes[i], placement, eye, looks.of(scene.nodes[i]));
+            std::memcpy(out + i * sizeof packed, &packed, sizeof packed);
+        }
+    });
 }
 
 template void packNodesInto<float>(const Scene&, const Placement&, const LookIndex&, std::byte*);
@@ -177,13 +182,14 @@ template <typename Real>
 void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
                               std::span<const std::uint32_t> sphereNodes, std::byte* out) {
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
-    for (const std::uint32_t i : sphereNodes) {
-        const Node& node = scene.nodes[i];
-        const GpuNode<Real> packed = packNode<Real>(node, placement, eye, 0);
-        const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, {}};
-        std::memcpy(out, &sphere, sizeof sphere);
-        out += sizeof sphere;
-    }
+    runAcrossCores(sphereNodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
+        for (std::size_t record = first; record < end; ++record) {
+            const std::uint32_t i = sphereNodes[record];
+            const GpuNode<Real> packed = packNode<Real>(scene.nodes[i], placement, eye, 0);
+            const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, {}};
+            std::memcpy(out + record * sizeof sphere, &sphere, sizeof sphere);
+        }
+    });
 }
 
 template void packCandidateSpheresInto<float>(const Scene&, const Placement&, std::span<const std::uint32_t>,

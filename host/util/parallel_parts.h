@@ -67,4 +67,13 @@ inline unsigned threadsFor(unsigned requested) {
     return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
+// Runs work(first, end) over [0, count) split into equal parts, one per thread (threadsFor), each
+// of at least `leastPerPart` items (for a little work, starting a thread costs more than it saves).
+inline void runAcrossCores(std::size_t count, std::size_t leastPerPart,
+                           const std::function<void(std::size_t, std::size_t)>& work, unsigned threads = 0) {
+    const unsigned parts =
+        unsigned(std::clamp<std::size_t>(count / std::max<std::size_t>(leastPerPart, 1), 1, threadsFor(threads)));
+    runParts(parts, [&](unsigned part) { work(partBegin(count, parts, part), partBegin(count, parts, part + 1)); });
+}
+
 }  // namespace hexray::util

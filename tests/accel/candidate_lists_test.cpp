@@ -164,8 +164,10 @@ Scene withLights(Scene scene, std::size_t count) {
 }
 
 TEST(CandidateLists, AreTheSameOnAnyNumberOfThreads) {
-    // Few lights (each light's spheres on one thread) and more lights than threads.
-    for (const Scene& scene : {testScene(4000), withLights(testScene(400), 40)}) {
+    // Few lights (each light's spheres on one thread), more lights than threads, and enough spheres
+    // to be placed in several parts (kSpheresPerPlacingPart).
+    const auto placedInParts = std::uint32_t(3 * candidates::kSpheresPerPlacingPart);
+    for (const Scene& scene : {testScene(4000), withLights(testScene(400), 40), testScene(placedInParts)}) {
         const Placement placement = placementFor(scene, Formulation::Robust);
         const auto one = buildCandidateLists(scene, placement, FloatWidth::F32, Formulation::Robust, 1);
         ASSERT_TRUE(one);

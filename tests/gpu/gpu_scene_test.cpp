@@ -125,6 +125,30 @@ TEST(PackScene, SphereCheckerSizesFromAFullTurnOnGiveTheCellsOf360Degrees) {
     EXPECT_EQ(lookOf(packRelative(scene), 1).checker, glm::vec4(359, 0, 0, 0));
 }
 
+TEST(PackScene, ALargeScenesNodesAndSphereRecordsEachLandInTheirOwnPlace) {
+    // Enough nodes to be packed on several threads, in parts.
+    Scene scene = checkerPlaneAndBall({0, 60, -120});
+    const std::size_t spheres = 300000;
+    for (std::size_t i = 0; i < spheres; ++i) {
+        scene.nodes.push_back(Node{Sphere{{double(i), 1, 5}, 0.5}, std::uint32_t(i % 2)});
+    }
+    const Placement placement = placementFor(Scene{}, Formulation::Textbook);  // positions as written
+    std::vector<gpu::GpuNode<float>> nodes(scene.nodes.size());
+    gpu::packNodesInto<float>(scene, placement, gpu::LookIndex(scene), reinterpret_cast<std::byte*>(nodes.data()));
+    std::vector<std::uint32_t> sphereNodes(spheres);
+    for (std::size_t record = 0; record < spheres; ++record) {
+        sphereNodes[record] = std::uint32_t(scene.nodes.size() - 1 - record);  // last node first
+    }
+    std::vector<gpu::GpuCandidateSphere<float>> records(spheres);
+    gpu::packCandidateSpheresInto<float>(scene, placement, sphereNodes, reinterpret_cast<std::byte*>(records.data()));
+    for (std::size_t i = 2; i < scene.nodes.size(); ++i) {
+        ASSERT_EQ(nodes[i].geometry.x, float(i - 2)) << i;
+        const std::size_t record = scene.nodes.size() - 1 - i;
+        ASSERT_EQ(records[record].node, i) << record;
+        ASSERT_EQ(records[record].sphere.x, float(i - 2)) << record;
+    }
+}
+
 TEST(PackScene, NodesOfOneShaderAndKindShareALookAndAShaderOnPlanesAndSpheresHasTwo) {
     Scene scene = checkerPlaneAndBall({-25, 60, 47});
     scene.shaderNames.push_back("red");
