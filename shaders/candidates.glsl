@@ -40,12 +40,20 @@ struct CandidateSphere {
     uint node;
 };
 
+int candidateSphereTexel(uint index) {
+    return (REAL_VEC4_TEXELS + 1) * int(index);
+}
+
 CandidateSphere candidateSphere(uint index) {
-    int at = (REAL_VEC4_TEXELS + 1) * int(index);
     CandidateSphere s;
-    s.sphere = realVec4At(candidateSpheres, at);
-    s.eyePower = realAt(candidateSpheres, at + REAL_VEC4_TEXELS, s.node);
+    s.sphere = realVec4At(candidateSpheres, candidateSphereTexel(index));
+    s.eyePower = realAt(candidateSpheres, candidateSphereTexel(index) + REAL_VEC4_TEXELS, s.node);
     return s;
+}
+
+// Its centre and radius alone: all a shadow ray reads (a texel fewer).
+vec4r candidateSphereGeometry(uint index) {
+    return realVec4At(candidateSpheres, candidateSphereTexel(index));
 }
 
 CandidateRange planeCandidates() {

@@ -14,11 +14,16 @@ Hit nearer(Hit hit, real t, uint node) {
     return t < hit.t || (t == hit.t && t != NO_HIT && node < hit.node) ? Hit(t, node) : hit;
 }
 
-// Whether node `node`, found between the surface of `hit` and a light (`blocks`), shadows it. A
-// sphere the camera sees from outside cannot shadow its own visible points (convexity), so its
-// own test is left out; that is also why its shadow rays may start right on it.
+// Whether a node found between the surface of the hit and a light (`blocks`) shadows it;
+// `isHitsSphere`: it is the hit's own sphere. A sphere the camera sees from outside cannot shadow
+// its own visible points (convexity), so its own test is left out; that is also why its shadow rays
+// may start right on it.
+bool castsShadow(bool blocks, bool isHitsSphere, bool seenFromOutside) {
+    return blocks && !(seenFromOutside && isHitsSphere);
+}
+
 bool castsShadow(bool blocks, uint node, Hit hit, bool seenFromOutside) {
-    return blocks && !(seenFromOutside && node == hit.node);
+    return castsShadow(blocks, node == hit.node, seenFromOutside);
 }
 
 // Where the shadow rays of surface `s` on `sphere` start: on the surface when the camera sees the

@@ -13,12 +13,17 @@ bool isPlaneNode(uint i) {
     return nodeGeometryKind(i) == GEOMETRY_PLANE;
 }
 
-// Distance along the ray to a sphere (centre, radius); `power` is the ray origin's (originPower).
+// Whether every sphere lies far enough from the eye (or around it) for the fast test: the plan's
+// decision (render_plan.h, RenderPlan::fastCameraTests), as a generated kernel's per sphere.
+layout(constant_id = FAST_CAMERA_TESTS_ID) const bool FAST_CAMERA_TESTS = false;
+
+// Distance along a camera ray to a sphere (centre, radius); `power` is the eye's (originPower).
 real sphereDistanceFor(Ray ray, vec4r sphere, real power) {
 #ifdef HEXRAY_TEXTBOOK
     return sphereDistanceTextbook(ray, sphere.xyz, sphere.w);
 #else
-    return sphereDistance(ray, sphere.xyz, sphere.w, power);
+    return FAST_CAMERA_TESTS ? sphereDistanceFast(ray, sphere.xyz, sphere.w)
+                             : sphereDistance(ray, sphere.xyz, sphere.w, power);
 #endif
 }
 

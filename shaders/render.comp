@@ -20,6 +20,12 @@
 #include "candidates.glsl"
 #endif
 
+#ifdef HEXRAY_CANDIDATES
+// The sphere record of the last findNearestHit's hit (NO_NODE: a plane, or none). A shadow ray
+// tells the hit's own sphere by its record, so reads no candidate's node.
+uint hitRecord;
+#endif
+
 Hit findNearestHit(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
 #ifdef HEXRAY_CANDIDATES
@@ -28,10 +34,14 @@ Hit findNearestHit(Ray ray) {
         uint node = candidateEntry(k);
         hit = nearer(hit, planeNodeDistance(ray, node), node);
     }
+    hitRecord = NO_NODE;
     CandidateRange spheres = cameraCandidates(vec3(ray.direction));
     for (uint k = spheres.first; k < spheres.end; ++k) {
-        CandidateSphere s = candidateSphere(candidateEntry(k));
-        hit = nearer(hit, sphereDistanceFor(ray, s.sphere, s.eyePower), s.node);
+        uint record = candidateEntry(k);
+        CandidateSphere s = candidateSphere(record);
+        Hit nearest = nearer(hit, sphereDistanceFor(ray, s.sphere, s.eyePower), s.node);
+        hitRecord = nearest.node != hit.node ? record : hitRecord;  // a sphere has one record
+        hit = nearest;
     }
 #else
     for (uint i = 0u; i < frame.nodeCount; ++i) {
@@ -50,18 +60,18 @@ bool planeBlocks(uint node, LightPath path, vec3r light) {
 #endif
 }
 
-// Whether sphere `node` (centre, radius) shadows the surface of `hit` from the light at `light`.
+// Whether `sphere` (centre, radius) shadows the surface of the hit from the light at `light`.
 // Robust: tested from the light toward the surface, the same origin for every pixel, and not the
-// hit's own sphere when the eye sees it from outside (`hitSeenFromOutside`, castsShadow). The
-// textbook test starts at the surface, as a course does.
-bool sphereBlocks(uint node, vec4r sphere, LightPath path, vec3r light, Hit hit, bool hitSeenFromOutside) {
+// hit's own sphere (`isHitsSphere`) when the eye sees it from outside (`hitSeenFromOutside`,
+// castsShadow). The textbook test starts at the surface, as a course does.
+bool sphereBlocks(vec4r sphere, bool isHitsSphere, LightPath path, vec3r light, bool hitSeenFromOutside) {
 #ifdef HEXRAY_TEXTBOOK
     return sphereDistanceTextbook(path.shadowRay, sphere.xyz, sphere.w) < path.shadowLength;
 #else
     vec3r f = light - sphere.xyz;
     bool crosses =
         sphereCrossesSegment(f, sphere.w, originPower(f, sphere.w), -path.shadowRay.direction, path.shadowLength);
-    return castsShadow(crosses, node, hit, hitSeenFromOutside);
+    return castsShadow(crosses, isHitsSphere, hitSeenFromOutside);
 #endif
 }
 
@@ -69,10 +79,11 @@ bool isOccluded(uint light, LightPath path, Hit hit) {
     vec4r lightAt = lightPosition(light);
     vec3r position = lightAt.xyz;
     bool hitSeenFromOutside = nodeEyePower(hit.node) > 0.0;  // planes: 0
+    // A surface facing away from the light gets nothing from it, whatever lies between: no tests.
 #ifdef HEXRAY_TEXTBOOK
-    bool blocked = false;
+    bool blocked = !path.facing;
 #else
-    bool blocked = lightAt.w > 0.0;  // a sphere holding the eye hides it
+    bool blocked = !path.facing || lightAt.w > 0.0;  // a sphere holding the eye hides it
 #endif
 #ifdef HEXRAY_CANDIDATES
     CandidateRange planes = planeCandidates();
@@ -81,13 +92,13 @@ bool isOccluded(uint light, LightPath path, Hit hit) {
     }
     CandidateRange spheres = lightCandidates(light, vec3(-path.shadowRay.direction), float(path.shadowLength));
     for (uint k = spheres.first; k < spheres.end && !blocked; ++k) {
-        CandidateSphere s = candidateSphere(candidateEntry(k));
-        blocked = sphereBlocks(s.node, s.sphere, path, position, hit, hitSeenFromOutside);
+        uint record = candidateEntry(k);
+        blocked = sphereBlocks(candidateSphereGeometry(record), record == hitRecord, path, position, hitSeenFromOutside);
     }
 #else
     for (uint i = 0u; i < frame.nodeCount && !blocked; ++i) {
         blocked = isPlaneNode(i) ? planeBlocks(i, path, position)
-                                 : sphereBlocks(i, nodeGeometry(i), path, position, hit, hitSeenFromOutside);
+                                 : sphereBlocks(nodeGeometry(i), i == hit.node, path, position, hitSeenFromOutside);
     }
 #endif
     return blocked;
@@ -103,7 +114,7 @@ Surface hitSurface(Ray ray, Hit hit) {
     return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
     real eyePower = nodeEyePower(hit.node);
-    Surface sphere = sphereSurface(ray, geometry, eyePower);
+    Surface sphere = FAST_CAMERA_TESTS ? sphereSurfaceFast(ray, hit.t, geometry) : sphereSurface(ray, geometry, eyePower);
     sphere.shadowOrigin = sphereShadowOrigin(sphere, geometry, !(eyePower > 0.0));
     return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
 #endif

@@ -64,6 +64,15 @@ SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formula
     return outside || distance <= kFastMaxInside * r ? SphereTest::Fast : SphereTest::Robust;
 }
 
+// Whether every sphere takes the fast test from the eye.
+bool everySphereFastFromEye(const Scene& scene, Formulation formulation) {
+    return std::ranges::all_of(scene.nodes, [&](const Node& node) {
+        const auto* sphere = std::get_if<Sphere>(&node.geometry);
+        return !sphere || sphereTestFor(*sphere, scene.camera.position, formulation,
+                                        std::numeric_limits<double>::infinity()) == SphereTest::Fast;
+    });
+}
+
 // The shadow tests a light needs. A plane blocks a segment only when its ends lie strictly on
 // opposite sides; every point the camera sees lies on the eye's side of a plane or on it (a camera
 // ray stops at the plane), so a plane with the eye and the light strictly on one side never blocks
@@ -314,6 +323,7 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         const bool candidates = plan.layout == SceneLayout::TexelsCandidates;
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
+        plan.fastCameraTests = everySphereFastFromEye(scene, plan.formulation);
     }
     planLoops(scene, request, device, plan);
     if (plan.precision == Precision::F32Certified) {

@@ -129,6 +129,24 @@ TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
     EXPECT_EQ(everyNode.kernel.name, "render.comp f32 storage");
 }
 
+// The data-driven kernel's camera test, for the whole scene: fast when every sphere would get it in
+// a generated kernel, robust as soon as one would not (here one whose surface is a tenth of its
+// radius from the eye), and the textbook one in f32-naive.
+TEST(RenderPlan, TheDataDrivenKernelTakesTheFastCameraTestOnlyWhenEverySphereWould) {
+    Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
+    for (int i = 0; i < 40; ++i) {
+        scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
+    }
+    const RenderPlan plan = planRender(scene, {Precision::F32}, kLavapipe);
+    ASSERT_FALSE(plan.kernel.code);
+    EXPECT_TRUE(plan.fastCameraTests);
+    EXPECT_FALSE(planRender(scene, {Precision::F32Naive}, kLavapipe).fastCameraTests);
+
+    scene.nodes.push_back(Node{Sphere{scene.camera.position + glm::dvec3(0, 0, 11), 10}, scene.nodes[1].shaderIndex});
+    EXPECT_FALSE(planRender(scene, {Precision::F32}, kLavapipe).fastCameraTests);
+    EXPECT_FALSE(planRender(scene, {Precision::F64}, kLavapipe).fastCameraTests);
+}
+
 TEST(RenderPlan, ListsTheDeviceCannotHoldAreNotUsed) {
     Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
     for (int i = 0; i < 40; ++i) {
