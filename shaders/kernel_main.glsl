@@ -77,7 +77,7 @@ void traceMain() {
         Hit hit = findNearestHit(ray);
         if (traceActive && hit.node != NO_NODE) {
             // Constant shaders never build a Surface; lit ones overwrite this with their own.
-            traceSurface(hitSurface(ray, hit), lookColor1(nodeLook(hit.node)).rgb);
+            traceSurface(hitSurface(ray, hit), lookColor1(nodeLook(hit.node)));
         }
         uint flags = 0u;
         vec3 color = hit.node == NO_NODE ? SCENE_BACKGROUND : shade(ray, hit, flags);

@@ -123,7 +123,7 @@ Surface hitSurface(Ray ray, Hit hit) {
 vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 irradiance, inout uint flags) {
     uint look = nodeLook(hit.node);
     uint shader = lookShaderKind(look);
-    vec3 albedo = lookColor1(look).rgb;
+    vec3 albedo = lookColor1(look);
     if (shader == SHADER_CONSTANT) {
         return albedo;
     }
@@ -131,7 +131,7 @@ vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 ir
     vec4r checker = lookChecker(look);
     bool odd = isPlaneNode(hit.node) ? isOddPlaneCell(checker, s.position) : isOddSphereCell(checker, s.outwardNormal);
     if (shader == SHADER_CHECKER && odd) {
-        albedo = lookColor2(look).rgb;
+        albedo = lookColor2(look);
         flags |= ODD_CHECKER_BIT;
     }
     traceSurface(s, albedo);

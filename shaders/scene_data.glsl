@@ -35,9 +35,9 @@ struct Node {
 // A shader as one kind of geometry shows it, shared by every node of that shader and kind.
 struct Look {
     vec4r checker;    // .x size, .yz eye's fractional cell (plane), .w parity of the eye's cells
-    vec4 color1;
+    vec3 color1;
+    uint shaderKind;  // in color1's texel
     vec4 color2;
-    uint shaderKind;
 };
 
 struct Light {
@@ -59,8 +59,8 @@ real nodeEyePower(uint i) { return nodes[i].eyePower; }
 uint nodeGeometryKind(uint i) { return nodes[i].geometryKind; }
 uint nodeLook(uint i) { return nodes[i].look; }
 uint lookShaderKind(uint l) { return looks[l].shaderKind; }
-vec4 lookColor1(uint l) { return looks[l].color1; }
-vec4 lookColor2(uint l) { return looks[l].color2; }
+vec3 lookColor1(uint l) { return looks[l].color1; }
+vec3 lookColor2(uint l) { return looks[l].color2.rgb; }
 vec4r lookChecker(uint l) { return looks[l].checker; }
 vec4r lightPosition(uint i) { return lights[i].position; }
 vec4r lightPower(uint i) { return lights[i].power; }
@@ -75,11 +75,11 @@ layout(set = 0, binding = LIGHT_BINDING) uniform usamplerBuffer lightTexels;
 #ifdef HEXRAY_F64
 const int NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F64), NODE_TEXELS = int(NODE_TEXELS_F64),
           LOOK_COLOR1_TEXEL = int(LOOK_COLOR1_TEXEL_F64), LOOK_COLOR2_TEXEL = int(LOOK_COLOR2_TEXEL_F64),
-          LOOK_SHADER_TEXEL = int(LOOK_SHADER_TEXEL_F64), LOOK_TEXELS = int(LOOK_TEXELS_F64);
+          LOOK_TEXELS = int(LOOK_TEXELS_F64);
 #else
 const int NODE_EYE_POWER_TEXEL = int(NODE_EYE_POWER_TEXEL_F32), NODE_TEXELS = int(NODE_TEXELS_F32),
           LOOK_COLOR1_TEXEL = int(LOOK_COLOR1_TEXEL_F32), LOOK_COLOR2_TEXEL = int(LOOK_COLOR2_TEXEL_F32),
-          LOOK_SHADER_TEXEL = int(LOOK_SHADER_TEXEL_F32), LOOK_TEXELS = int(LOOK_TEXELS_F32);
+          LOOK_TEXELS = int(LOOK_TEXELS_F32);
 #endif
 const int LIGHT_TEXELS = 2 * REAL_VEC4_TEXELS;
 
@@ -102,9 +102,10 @@ uvec2 nodeKindAndLook(uint i) {
 }
 uint nodeGeometryKind(uint i) { return nodeKindAndLook(i).x; }
 uint nodeLook(uint i) { return nodeKindAndLook(i).y; }
-uint lookShaderKind(uint l) { return texelFetch(nodeTexels, lookTexel(l, LOOK_SHADER_TEXEL)).x; }
-vec4 lookColor1(uint l) { return uintBitsToFloat(texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR1_TEXEL))); }
-vec4 lookColor2(uint l) { return uintBitsToFloat(texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR2_TEXEL))); }
+// The first colour and the shader kind share a texel.
+uint lookShaderKind(uint l) { return texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR1_TEXEL)).w; }
+vec3 lookColor1(uint l) { return uintBitsToFloat(texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR1_TEXEL)).xyz); }
+vec3 lookColor2(uint l) { return uintBitsToFloat(texelFetch(nodeTexels, lookTexel(l, LOOK_COLOR2_TEXEL)).xyz); }
 vec4r lookChecker(uint l) { return realVec4At(nodeTexels, lookTexel(l, int(LOOK_CHECKER_TEXEL))); }
 vec4r lightPosition(uint i) { return realVec4At(lightTexels, LIGHT_TEXELS * int(i)); }
 vec4r lightPower(uint i) { return realVec4At(lightTexels, LIGHT_TEXELS * int(i) + REAL_VEC4_TEXELS); }

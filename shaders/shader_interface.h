@@ -82,15 +82,15 @@ HEXRAY_CONSTANT uint TRACE_LIGHT_AT_POINT = 4u;  // r^2 = 0
 // Where the data-driven kernels read a node's members and a look's (scene_data.glsl), in 16-byte
 // texels from the start of its record, in f32 and in f64 (std430 puts a dvec4, two texels, at a
 // multiple of 32 bytes); gpu_layout.h asserts them against GpuNode and GpuLook. A node's geometry
-// kind and look are the words after its eyePower, in the same texel.
+// kind and look are the words after its eyePower, in the same texel; a look's shader kind is the
+// word after its first colour.
 HEXRAY_CONSTANT uint NODE_GEOMETRY_TEXEL = 0u;
 HEXRAY_CONSTANT uint NODE_EYE_POWER_TEXEL_F32 = 1u, NODE_EYE_POWER_TEXEL_F64 = 2u;
 HEXRAY_CONSTANT uint NODE_TEXELS_F32 = 2u, NODE_TEXELS_F64 = 4u;
 HEXRAY_CONSTANT uint LOOK_CHECKER_TEXEL = 0u;
 HEXRAY_CONSTANT uint LOOK_COLOR1_TEXEL_F32 = 1u, LOOK_COLOR1_TEXEL_F64 = 2u;
 HEXRAY_CONSTANT uint LOOK_COLOR2_TEXEL_F32 = 2u, LOOK_COLOR2_TEXEL_F64 = 3u;
-HEXRAY_CONSTANT uint LOOK_SHADER_TEXEL_F32 = 3u, LOOK_SHADER_TEXEL_F64 = 4u;
-HEXRAY_CONSTANT uint LOOK_TEXELS_F32 = 4u, LOOK_TEXELS_F64 = 6u;
+HEXRAY_CONSTANT uint LOOK_TEXELS_F32 = 3u, LOOK_TEXELS_F64 = 4u;
 
 // The uniform-buffer layout's capacity: scenes with at most this many nodes and as many lights
 // come in uniform blocks of this many entries.

@@ -87,14 +87,14 @@ GpuLook<Real> packLook(const Shader& shader, bool sphere, const Placement& place
     GpuLook<Real> packed{};
     if (const auto* constant = std::get_if<ConstantShader>(&shader)) {
         packed.shaderKind = SHADER_CONSTANT;
-        packed.color1 = toColor(constant->color);
+        packed.color1 = glm::vec3(constant->color);
     } else if (const auto* lambert = std::get_if<LambertShader>(&shader)) {
         packed.shaderKind = SHADER_LAMBERT;
-        packed.color1 = toColor(lambert->color);
+        packed.color1 = glm::vec3(lambert->color);
     } else {
         const auto& checker = std::get<CheckerShader>(shader);
         packed.shaderKind = SHADER_CHECKER;
-        packed.color1 = toColor(checker.color1);
+        packed.color1 = glm::vec3(checker.color1);
         packed.color2 = toColor(checker.color2);
         // Sphere checkers use angles, which neither move with the eye nor scale; capped (exactly:
         // see kSphereCheckerFullTurn) so that float holds the size. Plane sizes are lengths, which

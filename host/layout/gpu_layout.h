@@ -58,9 +58,9 @@ struct GpuLook {
     // Checker: .x = square size; on a plane .yz = the eye's fractional cell position (x, z) / size
     // (the integer part is folded into .w), .w = parity (0 or 1) of the eye's whole cells.
     RealVec4<Real> checker;
-    glm::vec4 color1;          // .rgb: constant / lambert colour, checker's first colour
+    glm::vec3 color1;          // constant / lambert colour, checker's first colour
+    std::uint32_t shaderKind;  // SHADER_*: in color1's texel, read with it
     glm::vec4 color2;          // .rgb: checker's second colour
-    std::uint32_t shaderKind;  // SHADER_*
 };
 
 template <typename Real>
@@ -157,17 +157,15 @@ constexpr bool nodeTexelsMatch(std::size_t eyePowerTexel, std::size_t texels) {
 static_assert(nodeTexelsMatch<float>(NODE_EYE_POWER_TEXEL_F32, NODE_TEXELS_F32) &&
               nodeTexelsMatch<double>(NODE_EYE_POWER_TEXEL_F64, NODE_TEXELS_F64));
 template <typename Real>
-constexpr bool lookTexelsMatch(std::size_t color1Texel, std::size_t color2Texel, std::size_t shaderTexel,
-                               std::size_t texels) {
+constexpr bool lookTexelsMatch(std::size_t color1Texel, std::size_t color2Texel, std::size_t texels) {
     using Look = GpuLook<Real>;
     return offsetof(Look, checker) == LOOK_CHECKER_TEXEL * kTexelBytes &&
-           offsetof(Look, color1) == color1Texel * kTexelBytes && offsetof(Look, color2) == color2Texel * kTexelBytes &&
-           offsetof(Look, shaderKind) == shaderTexel * kTexelBytes && sizeof(Look) == texels * kTexelBytes;
+           offsetof(Look, color1) == color1Texel * kTexelBytes &&
+           offsetof(Look, shaderKind) == color1Texel * kTexelBytes + 12 &&
+           offsetof(Look, color2) == color2Texel * kTexelBytes && sizeof(Look) == texels * kTexelBytes;
 }
-static_assert(lookTexelsMatch<float>(LOOK_COLOR1_TEXEL_F32, LOOK_COLOR2_TEXEL_F32, LOOK_SHADER_TEXEL_F32,
-                                     LOOK_TEXELS_F32) &&
-              lookTexelsMatch<double>(LOOK_COLOR1_TEXEL_F64, LOOK_COLOR2_TEXEL_F64, LOOK_SHADER_TEXEL_F64,
-                                      LOOK_TEXELS_F64));
+static_assert(lookTexelsMatch<float>(LOOK_COLOR1_TEXEL_F32, LOOK_COLOR2_TEXEL_F32, LOOK_TEXELS_F32) &&
+              lookTexelsMatch<double>(LOOK_COLOR1_TEXEL_F64, LOOK_COLOR2_TEXEL_F64, LOOK_TEXELS_F64));
 static_assert(offsetof(GpuLight<float>, power) == 1 * 16 && offsetof(GpuLight<double>, power) == 2 * 16);
 static_assert(sizeof(GpuLight<float>) == 2 * 16 && sizeof(GpuLight<double>) == 4 * 16);
 static_assert(sizeof(GpuCandidateAxes) == 48);

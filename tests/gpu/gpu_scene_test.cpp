@@ -166,8 +166,8 @@ TEST(PackScene, NodesOfOneShaderAndKindShareALookAndAShaderOnPlanesAndSpheresHas
     EXPECT_EQ(looks, (std::vector<std::uint32_t>{0, 1, 2, 3, 1, 4}));
     ASSERT_EQ(packed.looks.size(), 5u);
     EXPECT_EQ(packed.looks[2].shaderKind, gpu::SHADER_LAMBERT);
-    EXPECT_EQ(packed.looks[2].color1, glm::vec4(1, 0, 0, 0));
-    EXPECT_EQ(packed.looks[4].color1, glm::vec4(1, 0, 0, 0));
+    EXPECT_EQ(packed.looks[2].color1, glm::vec3(1, 0, 0));
+    EXPECT_EQ(packed.looks[4].color1, glm::vec3(1, 0, 0));
     // Checker 0 on the floor is a plane's (the eye's cell phase), on the sphere an angle's.
     EXPECT_EQ(packed.looks[0].shaderKind, gpu::SHADER_CHECKER);
     EXPECT_NEAR(packed.looks[0].checker.y, 0.75f, 1e-7f);
