@@ -25,9 +25,6 @@ inline constexpr std::size_t kSideSampleStride = 8;
 inline constexpr std::size_t kLightCellsPerSample = 4;
 // No grid is more than this many cells across.
 inline constexpr double kMaxCellsAcross = 65536;
-
-// --- Speed: large scenes' spheres are placed on every core, in parts of at least this many.
-inline constexpr std::size_t kSpheresPerPlacingPart = std::size_t{1} << 16;
 // f32-naive shadow rays start at the surface, and their rounding grows with their length.
 // A light's lists hold rays as long as the longest the image can need on each cube face (to the
 // farthest sphere, or to the farthest point of a plane a corner of the image sees) and this share
@@ -65,5 +62,8 @@ inline constexpr double kCellSlack = 0.02;
 // Slack for the footprint's own rounding on the host, in tangent units: a few hundred units of
 // double roundoff of the magnitudes involved, far below any float the shader computes.
 inline constexpr double kFootprintSlack = 1e-12;
+
+// --- Speed: a large scene's spheres are placed on every core, in parts of at least this many.
+inline constexpr std::size_t kSpheresPerPlacingPart = std::size_t{1} << 16;
 
 }  // namespace hexray::accel::candidates
