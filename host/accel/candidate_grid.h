@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/sphere_footprint.h"
+#include "util/uninitialized_vector.h"
 
 namespace hexray::inline accel {
 
@@ -49,7 +50,7 @@ CandidateGrid gridOver(const TangentBox& window, double cell);
 class CellBinner {
 public:
     // Writes into `cellStarts` and `entries`, sized for every grid to come.
-    CellBinner(std::vector<std::uint32_t>& cellStarts, std::vector<std::uint32_t>& entries)
+    CellBinner(UninitializedVector<std::uint32_t>& cellStarts, UninitializedVector<std::uint32_t>& entries)
         : cellStarts_(cellStarts), entries_(entries) {}
 
     // Bins `parts` (one span of footprints per thread) into `grid`'s cells, from entry
@@ -58,8 +59,8 @@ public:
                     std::size_t firstEntry);
 
 private:
-    std::vector<std::uint32_t>& cellStarts_;
-    std::vector<std::uint32_t>& entries_;
+    UninitializedVector<std::uint32_t>& cellStarts_;
+    UninitializedVector<std::uint32_t>& entries_;
     std::vector<std::vector<std::uint32_t>> counts_;  // per part: counts, then write cursors
 };
 

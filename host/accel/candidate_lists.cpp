@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -568,6 +570,16 @@ LightOffsets lightOffsets(std::span<const LightGridPlan> plans, std::size_t firs
     return offsets;
 }
 
+// The lists' arrays are not zeroed before they are written (UninitializedVector): a count that
+// differed from its plan would leave entries no one wrote, so it is an error.
+void expectAsPlanned(std::size_t cell, std::size_t entry, std::size_t plannedCell, std::size_t plannedEntry) {
+    if (cell != plannedCell || entry != plannedEntry) {
+        throw std::logic_error("candidate lists: " + std::to_string(cell) + " cells and " + std::to_string(entry) +
+                               " entries written where " + std::to_string(plannedCell) + " and " +
+                               std::to_string(plannedEntry) + " were planned");
+    }
+}
+
 // Fills each light's cells, entries and grids as planned, on up to `threads` threads; a light's
 // shadow rays past its reach take `everySphereCell`.
 void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<LightGridPlan> plans,
@@ -601,6 +613,7 @@ void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<Li
                 cell += grid.cellCount();
                 entry = binner.bin(grid, seen.footprints(face), entry);
             }
+            expectAsPlanned(cell, entry, offsets.cells[light + 1], offsets.entries[light + 1]);
             plan.faces.reset();  // its footprints are binned
             // A light whose rays all lie within its reach names a cell of its own (never taken).
             const ShadowReach& shadowReach = placed.shadowReach[light];
@@ -640,6 +653,9 @@ public:
         }
         return nextCell_++;
     }
+
+    // Throws unless the next cell and entry are `cell` and `entry`.
+    void expectAt(std::size_t cell, std::size_t entry) const { expectAsPlanned(nextCell_, nextEntry_, cell, entry); }
 
     // `grid`'s cells, from what `view` sees; sets their first cell.
     void grid(CandidateGrid& grid, const Sightings& sightings, std::size_t view) {
@@ -720,6 +736,7 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     writer.cell(placed.planes);  // gpu::PLANE_CELL
     writeCameraGrid(writer, cameraGrid->grids[0], camera, lists);
     const std::uint32_t everySphereCell = listsEverySphere ? writer.everyRecord(everySphere) : 0;
+    writer.expectAt(offsets.cells.front(), offsets.entries.front());
     writeLightGrids(placed, reach, plans, offsets, everySphereCell, lists, threads);
     lists.sphereNodes.reserve(placed.spheres.size());
     for (const PlacedSphere& s : placed.spheres) {

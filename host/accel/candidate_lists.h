@@ -25,16 +25,17 @@
 #include "layout/gpu_layout.h"
 #include "precision/arithmetic.h"
 #include "scene/scene.h"
+#include "util/uninitialized_vector.h"
 
 namespace hexray::inline accel {
 
 struct CandidateLists {
     gpu::GpuCandidateAxes cameraAxes{};
-    std::vector<gpu::GpuCandidateGrid> grids;  // the camera's, then gpu::CUBE_FACES per light
-    std::vector<std::uint32_t> cellStarts;     // one per cell, and the end of the last list
+    std::vector<gpu::GpuCandidateGrid> grids;       // the camera's, then gpu::CUBE_FACES per light
+    UninitializedVector<std::uint32_t> cellStarts;  // one per cell, and the end of the last list
     // List after list: the planes' node indices (cell gpu::PLANE_CELL), then records, ascending in
     // each list.
-    std::vector<std::uint32_t> entries;
+    UninitializedVector<std::uint32_t> entries;
     // Each record's sphere, as its node index: the spheres in Morton order (morton_order.h), so
     // that neighbouring rays read neighbouring records.
     std::vector<std::uint32_t> sphereNodes;

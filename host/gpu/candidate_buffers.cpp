@@ -9,8 +9,8 @@
 namespace hexray::inline gpu {
 namespace {
 
-template <typename T>
-std::span<const std::byte> bytesOf(const std::vector<T>& values) {
+template <typename Values>
+std::span<const std::byte> bytesOf(const Values& values) {
     return std::as_bytes(std::span(values));
 }
 
