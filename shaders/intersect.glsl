@@ -119,6 +119,19 @@ bool sphereCrossesSegmentFromInside(vec3r f, real power, vec3r direction, real s
     return far < segmentLength;
 }
 
+// The fast form of sphereCrossesSegment, for an origin (a light) well away from the sphere's surface
+// as sphereDistanceFast's: the same discriminant and roots, the nearest root ahead (the far one from
+// inside) within the segment.
+bool sphereCrossesSegmentFast(vec3r f, real radius, vec3r direction, real segmentLength) {
+    real b = dot(f, direction);
+    vec3r l = f - b * direction;
+    real discriminant = radius * radius - dot(l, l);
+    real root = sqrt(max(discriminant, 0.0));
+    real near = -b - root;
+    real t = near > 0.0 ? near : root - b;
+    return discriminant >= 0.0 && t > 0.0 && t < segmentLength;
+}
+
 // A plane blocks a segment exactly when its ends lie strictly on opposite sides: no division,
 // so a light lying in the plane is never blocked by it through rounding.
 bool planeSeparates(real height, vec3r origin, vec3r target) {

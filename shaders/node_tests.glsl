@@ -13,9 +13,18 @@ bool isPlaneNode(uint i) {
     return nodeGeometryKind(i) == GEOMETRY_PLANE;
 }
 
-// Whether every sphere lies far enough from the eye (or around it) for the fast test: the plan's
-// decision (render_plan.h, RenderPlan::fastCameraTests), as a generated kernel's per sphere.
+// Whether every sphere lies far enough from the eye (or around it) for the fast test, and from
+// every light: the plan's decisions (render_plan.h, RenderPlan::fastCameraTests and
+// fastShadowTests), as a generated kernel's per sphere.
 layout(constant_id = FAST_CAMERA_TESTS_ID) const bool FAST_CAMERA_TESTS = false;
+layout(constant_id = FAST_SHADOW_TESTS_ID) const bool FAST_SHADOW_TESTS = false;
+
+// Whether a sphere (centre, radius) meets the segment from a light `f` from its centre, along
+// `direction`, `segmentLength` long.
+bool sphereCrossesSegmentFor(vec3r f, vec4r sphere, vec3r direction, real segmentLength) {
+    return FAST_SHADOW_TESTS ? sphereCrossesSegmentFast(f, sphere.w, direction, segmentLength)
+                             : sphereCrossesSegment(f, sphere.w, originPower(f, sphere.w), direction, segmentLength);
+}
 
 // Distance along a camera ray to a sphere (centre, radius); `power` is the eye's (originPower).
 real sphereDistanceFor(Ray ray, vec4r sphere, real power) {

@@ -68,9 +68,7 @@ bool sphereBlocks(vec4r sphere, bool isHitsSphere, LightPath path, vec3r light, 
 #ifdef HEXRAY_TEXTBOOK
     return sphereDistanceTextbook(path.shadowRay, sphere.xyz, sphere.w) < path.shadowLength;
 #else
-    vec3r f = light - sphere.xyz;
-    bool crosses =
-        sphereCrossesSegment(f, sphere.w, originPower(f, sphere.w), -path.shadowRay.direction, path.shadowLength);
+    bool crosses = sphereCrossesSegmentFor(light - sphere.xyz, sphere, -path.shadowRay.direction, path.shadowLength);
     return castsShadow(crosses, isHitsSphere, hitSeenFromOutside);
 #endif
 }

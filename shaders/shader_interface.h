@@ -60,7 +60,8 @@ HEXRAY_CONSTANT uint OUTPUT_MODE_ID = 0u;
 HEXRAY_CONSTANT uint SAMPLES_PER_PIXEL_ID = 1u;
 HEXRAY_CONSTANT uint LIGHT_BATCHES_ID = 2u;  // the data-driven kernel: 1 when a band takes several dispatches
 HEXRAY_CONSTANT uint FAST_CAMERA_TESTS_ID = 3u;  // the data-driven kernel: 1 when every sphere takes the fast test
-HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 4u;
+HEXRAY_CONSTANT uint FAST_SHADOW_TESTS_ID = 4u;  // the same from every light
+HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 5u;
 
 // What each pixel shows (PixelClass on the host): the node index, or BACKGROUND; flags with
 // ODD_CHECKER_BIT for a checker-shaded hit in a color2 cell and bit i + 1 for each of the first

@@ -819,7 +819,7 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
     const bool tracing = !traceRequest.empty();
     const bool batched = plan.lightBatches.splits() && !tracing;  // a traced pixel is one dispatch
     const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel,
-                                             batched, plan.fastCameraTests};
+                                             batched, plan.fastCameraTests, plan.fastShadowTests};
     const auto uploadStart = std::chrono::steady_clock::now();
     PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     result.precision = plan.precision;
@@ -947,7 +947,8 @@ void GpuRenderer::renderPixelsInDoubt(const Scene& scene, const RenderPlan& fall
         const std::size_t listed = (found.pixels.size() + kGroup - 1) / kGroup * kGroup;
         found.pixels.resize(listed, glm::uvec2(UINT32_MAX));
         const gpu::Specialization specialization{outputModeFor(scene, output, false), scene.image.samplesPerPixel,
-                                                 fallback.lightBatches.splits(), fallback.fastCameraTests};
+                                                 fallback.lightBatches.splits(), fallback.fastCameraTests,
+                                                 fallback.fastShadowTests};
         PackedScene packed = packFor(scene, fallback);
         const vk::raii::Pipeline* pipeline =
             pipelinesFor(std::span(&fallback.kernel, 1), fallback, specialization, packed.specValues(),

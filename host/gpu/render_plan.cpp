@@ -30,10 +30,15 @@ namespace {
 // the normal from the hit point; for a shadow ray from a light, which decides only blocked or
 // not, b^2 - power when also d <= kFastMaxShadowOutside * r (the discriminant's error grows like
 // d^2 / r; at 32 r it is still a hundredth of the band compare calls ambiguous, 2^-17 of the
-// distances), else the robust test.
+// distances), else the robust test. The data-driven kernel, which has no power from the host for a
+// light, takes the camera's fast form from the lights too (sphereCrossesSegmentFast: the error is
+// that of l, at any distance), when every sphere would take it from every light.
 constexpr double kFastMinOutside = 1.25;
 constexpr double kFastMaxInside = 0.5;
 constexpr double kFastMaxShadowOutside = 32.0;
+// The data-driven kernel takes the fast tests for the whole scene when every (origin, sphere) pair
+// would; past this many pairs it is not checked, and the robust tests serve.
+constexpr std::size_t kFastTestChecks = std::size_t{1} << 24;
 // Culling: at most this many tile classes, each a kernel that glslang and the driver compile
 // (cached on disk by both). Auto culls only renders of at least kCullingMinSamples samples: on
 // lavapipe a class kernel's compile costs about as much as culling saves on 5 to 50 million samples
@@ -64,13 +69,27 @@ SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formula
     return outside || distance <= kFastMaxInside * r ? SphereTest::Fast : SphereTest::Robust;
 }
 
-// Whether every sphere takes the fast test from the eye.
-bool everySphereFastFromEye(const Scene& scene, Formulation formulation) {
+// Whether every sphere takes the fast test from each of `origins` (the eye, or the lights); no for
+// more than kFastTestChecks pairs, which would take longer to check than the robust tests cost.
+bool everySphereFastFrom(const Scene& scene, const std::vector<glm::dvec3>& origins, Formulation formulation) {
+    if (double(scene.nodes.size()) * double(origins.size()) > double(kFastTestChecks)) {
+        return false;
+    }
     return std::ranges::all_of(scene.nodes, [&](const Node& node) {
         const auto* sphere = std::get_if<Sphere>(&node.geometry);
-        return !sphere || sphereTestFor(*sphere, scene.camera.position, formulation,
-                                        std::numeric_limits<double>::infinity()) == SphereTest::Fast;
+        return !sphere || std::ranges::all_of(origins, [&](const glm::dvec3& origin) {
+            return sphereTestFor(*sphere, origin, formulation, std::numeric_limits<double>::infinity()) ==
+                   SphereTest::Fast;
+        });
     });
+}
+
+std::vector<glm::dvec3> lightPositions(const Scene& scene) {
+    std::vector<glm::dvec3> positions;
+    for (const PointLight& light : scene.lights) {
+        positions.push_back(light.position);
+    }
+    return positions;
 }
 
 // The shadow tests a light needs. A plane blocks a segment only when its ends lie strictly on
@@ -323,7 +342,8 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         const bool candidates = plan.layout == SceneLayout::TexelsCandidates;
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
-        plan.fastCameraTests = everySphereFastFromEye(scene, plan.formulation);
+        plan.fastCameraTests = everySphereFastFrom(scene, {scene.camera.position}, plan.formulation);
+        plan.fastShadowTests = everySphereFastFrom(scene, lightPositions(scene), plan.formulation);
     }
     planLoops(scene, request, device, plan);
     if (plan.precision == Precision::F32Certified) {

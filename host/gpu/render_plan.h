@@ -78,8 +78,10 @@ struct RenderPlan {
     std::shared_ptr<const CandidateLists> candidates;  // TexelsCandidates only: the lists the kernel reads
     Kernel kernel;                                     // for the whole image (and for a traced pixel)
     // The data-driven kernel: every sphere takes the fast camera test (as a generated kernel decides
-    // sphere by sphere), passed to it as FAST_CAMERA_TESTS_ID.
+    // sphere by sphere), passed to it as FAST_CAMERA_TESTS_ID; and the fast test from every light
+    // (FAST_SHADOW_TESTS_ID).
     bool fastCameraTests = false;
+    bool fastShadowTests = false;
     TileClasses tileClasses;  // when culling: the kernels that render the image instead
     // The data-driven kernel: how a pixel's samples and lights are split between dispatches, each
     // within `loopPassLimit` (loop_budget.h), and what tracing a pixel needs in one.

@@ -133,6 +133,7 @@ struct Specialization {
     std::uint32_t samplesPerPixel = 1;                     // SAMPLES_PER_PIXEL_ID
     std::uint32_t lightBatches = 0;                        // LIGHT_BATCHES_ID (a VkBool32)
     std::uint32_t fastCameraTests = 0;                     // FAST_CAMERA_TESTS_ID (a VkBool32)
+    std::uint32_t fastShadowTests = 0;                     // FAST_SHADOW_TESTS_ID (a VkBool32)
 
     auto operator<=>(const Specialization&) const = default;
 };
@@ -140,6 +141,7 @@ static_assert(offsetof(Specialization, outputMode) == OUTPUT_MODE_ID * sizeof(st
 static_assert(offsetof(Specialization, samplesPerPixel) == SAMPLES_PER_PIXEL_ID * sizeof(std::uint32_t));
 static_assert(offsetof(Specialization, lightBatches) == LIGHT_BATCHES_ID * sizeof(std::uint32_t));
 static_assert(offsetof(Specialization, fastCameraTests) == FAST_CAMERA_TESTS_ID * sizeof(std::uint32_t));
+static_assert(offsetof(Specialization, fastShadowTests) == FAST_SHADOW_TESTS_ID * sizeof(std::uint32_t));
 static_assert(sizeof(Specialization) == FIRST_SCENE_CONSTANT_ID * sizeof(std::uint32_t));
 
 // --- The candidate lists' texels (16 bytes each)

@@ -208,16 +208,24 @@ TEST_P(GpuCandidatesTest, GiveTheSameImageAtTheEdgeCases) {
 // f32-naive is left out: it disagrees with the reference (shadow acne) with or without lists.
 class GpuCandidatesAgreementTest : public GpuCandidatesTest {};
 
-// Random spheres take the fast camera test (RenderPlan::fastCameraTests); with a sphere whose
-// surface passes a tenth of its radius from the eye, every sphere takes the robust one.
+// Random spheres take the fast camera and shadow tests (RenderPlan::fastCameraTests and
+// fastShadowTests); with a sphere whose surface passes a tenth of its radius from the eye, or from
+// a light, every sphere takes the robust one from there.
 TEST_P(GpuCandidatesAgreementTest, AgreeWithTheCpuReference) {
     GpuRenderer renderer(context());
-    for (const std::uint32_t spheres : {100u, 2000u, 20000u, 0u}) {
-        SCOPED_TRACE(spheres ? std::to_string(spheres) + " spheres" : "a sphere next to the eye");
-        Scene scene = randomScene(spheres ? spheres : 2000u, 11);
-        if (spheres == 0) {
+    for (const std::uint32_t spheres : {100u, 2000u, 20000u, 0u, 1u}) {
+        const bool nextToEye = spheres == 0;
+        const bool nextToLight = spheres == 1;
+        SCOPED_TRACE(nextToEye     ? "a sphere next to the eye"
+                     : nextToLight ? "a sphere next to a light"
+                                   : std::to_string(spheres) + " spheres");
+        Scene scene = randomScene(nextToEye || nextToLight ? 2000u : spheres, 11);
+        if (nextToEye) {
             const glm::dvec3 aside = glm::cross(cameraForward(scene.camera), glm::dvec3(0, 1, 0));
             scene.nodes.push_back(Node{Sphere{scene.camera.position + 11.0 * glm::normalize(aside), 10.0}, 2});
+        }
+        if (nextToLight) {
+            scene.nodes.push_back(Node{Sphere{scene.lights[0].position + glm::dvec3(0, 11, 0), 10.0}, 2});
         }
         const GpuRenderResult gpu = renderer.render(scene, GetParam());
         ASSERT_TRUE(gpu.usedCandidateLists) << "Auto must choose the lists past a generated kernel";

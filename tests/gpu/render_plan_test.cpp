@@ -129,10 +129,11 @@ TEST(RenderPlan, LargeScenesGetTheDataDrivenKernel) {
     EXPECT_EQ(everyNode.kernel.name, "render.comp f32 storage");
 }
 
-// The data-driven kernel's camera test, for the whole scene: fast when every sphere would get it in
-// a generated kernel, robust as soon as one would not (here one whose surface is a tenth of its
-// radius from the eye), and the textbook one in f32-naive.
-TEST(RenderPlan, TheDataDrivenKernelTakesTheFastCameraTestOnlyWhenEverySphereWould) {
+// The data-driven kernel's camera and shadow tests, for the whole scene: fast when every sphere
+// would get it in a generated kernel from the eye (and from every light), robust as soon as one
+// would not (here one whose surface is a tenth of its radius from the eye, or from a light), and
+// the textbook ones in f32-naive.
+TEST(RenderPlan, TheDataDrivenKernelTakesTheFastTestsOnlyWhenEverySphereWould) {
     Scene scene = loadSceneFile(test::sourcePath("scenes/lecture-demo.json"));
     for (int i = 0; i < 40; ++i) {
         scene.nodes.push_back(Node{Sphere{{double(i) * 30, 10, 200}, 5}, scene.nodes[1].shaderIndex});
@@ -140,7 +141,16 @@ TEST(RenderPlan, TheDataDrivenKernelTakesTheFastCameraTestOnlyWhenEverySphereWou
     const RenderPlan plan = planRender(scene, {Precision::F32}, kLavapipe);
     ASSERT_FALSE(plan.kernel.code);
     EXPECT_TRUE(plan.fastCameraTests);
-    EXPECT_FALSE(planRender(scene, {Precision::F32Naive}, kLavapipe).fastCameraTests);
+    EXPECT_TRUE(plan.fastShadowTests);
+    const RenderPlan naive = planRender(scene, {Precision::F32Naive}, kLavapipe);
+    EXPECT_FALSE(naive.fastCameraTests);
+    EXPECT_FALSE(naive.fastShadowTests);
+
+    Scene nearLight = scene;
+    nearLight.nodes.push_back(Node{Sphere{scene.lights[0].position + glm::dvec3(0, 0, 11), 10}, 1});
+    const RenderPlan nearLightPlan = planRender(nearLight, {Precision::F32}, kLavapipe);
+    EXPECT_TRUE(nearLightPlan.fastCameraTests);
+    EXPECT_FALSE(nearLightPlan.fastShadowTests);
 
     scene.nodes.push_back(Node{Sphere{scene.camera.position + glm::dvec3(0, 0, 11), 10}, scene.nodes[1].shaderIndex});
     EXPECT_FALSE(planRender(scene, {Precision::F32}, kLavapipe).fastCameraTests);
