@@ -130,21 +130,19 @@ ShadowReach textbookReach(const std::optional<std::vector<glm::dvec3>>& hull, st
     return reach;
 }
 
-// The spheres placed, in record order (morton_order.h), on `threads` threads, each from the scene
-// (the order is known first, from the centres alone).
-std::vector<PlacedSphere> placedInMortonOrder(const Scene& scene, const Placement& placement,
-                                              std::span<const std::uint32_t> sphereNodes,
-                                              std::span<const glm::dvec3> centers, unsigned threads) {
+// The placed spheres (node, centre and radius, in node order) in record order (morton_order.h),
+// gathered on `threads` threads.
+std::vector<PlacedSphere> placedInMortonOrder(std::span<const std::uint32_t> sphereNodes,
+                                              std::span<const glm::dvec3> centers, std::span<const double> radii,
+                                              unsigned threads) {
     const std::vector<std::uint32_t> order = mortonOrder(centers);
     std::vector<PlacedSphere> spheres(order.size());
     runAcrossCores(
         order.size(), kSpheresPerPlacingPart,
         [&](std::size_t first, std::size_t end) {
             for (std::size_t record = first; record < end; ++record) {
-                const std::uint32_t node = sphereNodes[order[record]];
-                const glm::dvec3& center = centers[order[record]];
-                const double radius = std::get<Sphere>(scene.nodes[node].geometry).radius;
-                spheres[record] = {center, placement.length(radius), node, glm::length(center)};
+                const std::uint32_t i = order[record];
+                spheres[record] = {centers[i], radii[i], sphereNodes[i], glm::length(centers[i])};
             }
         },
         threads);
@@ -157,8 +155,10 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
     placed.eyeSize = glm::length(placed.eye);
     std::vector<std::uint32_t> sphereNodes;
     std::vector<glm::dvec3> centers;
+    std::vector<double> radii;
     sphereNodes.reserve(scene.nodes.size());
     centers.reserve(scene.nodes.size());
+    radii.reserve(scene.nodes.size());
     glm::dvec3 low = placed.eye;
     glm::dvec3 high = placed.eye;
     for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
@@ -169,13 +169,14 @@ PlacedScene placeScene(const Scene& scene, const Placement& placement, Formulati
             high = glm::max(high, center + radius);
             sphereNodes.push_back(i);
             centers.push_back(center);
+            radii.push_back(radius);
         } else {
             placed.planes.push_back(i);
             const double height = std::get<Plane>(scene.nodes[i].geometry).height;
             placed.planeHeights.push_back(placement.position({0.0, height, 0.0}).y);
         }
     }
-    placed.spheres = placedInMortonOrder(scene, placement, sphereNodes, centers, threads);
+    placed.spheres = placedInMortonOrder(sphereNodes, centers, radii, threads);
     const std::array<glm::dvec3, 8> box = boxCorners(low, high);
     const auto hull = shadowOriginHull(placed, box, cameraCorners(scene));
     for (const PointLight& light : scene.lights) {

@@ -461,6 +461,13 @@ std::uint32_t outputModeFor(const Scene& scene, GpuOutput output, bool tracing) 
     return scene.image.encoding == Encoding::Srgb ? gpu::OUTPUT_8BIT_SRGB : gpu::OUTPUT_8BIT_LINEAR;
 }
 
+// The specialization constants of a render by `plan`: its output mode, its samples, whether its
+// lights come in batches, and the plan's choice of sphere tests.
+gpu::Specialization specializationFor(const Scene& scene, const RenderPlan& plan, std::uint32_t outputMode,
+                                      bool batched) {
+    return {outputMode, scene.image.samplesPerPixel, batched, plan.fastCameraTests, plan.fastShadowTests};
+}
+
 }  // namespace
 
 GpuPixelTrace GpuRenderer::tracePixel(const Scene& scene, const RenderPlan& plan, std::uint32_t x, std::uint32_t y,
@@ -818,8 +825,8 @@ void GpuRenderer::renderBands(const Scene& scene, const RenderPlan& plan, GpuOut
                               std::span<const std::byte> traceRequest) {
     const bool tracing = !traceRequest.empty();
     const bool batched = plan.lightBatches.splits() && !tracing;  // a traced pixel is one dispatch
-    const gpu::Specialization specialization{outputModeFor(scene, output, tracing), scene.image.samplesPerPixel,
-                                             batched, plan.fastCameraTests, plan.fastShadowTests};
+    const gpu::Specialization specialization =
+        specializationFor(scene, plan, outputModeFor(scene, output, tracing), batched);
     const auto uploadStart = std::chrono::steady_clock::now();
     PackedScene packed = holdingScene(scene, plan, [&] { return packFor(scene, plan); });
     result.precision = plan.precision;
@@ -946,9 +953,8 @@ void GpuRenderer::renderPixelsInDoubt(const Scene& scene, const RenderPlan& fall
         constexpr std::size_t kGroup = WORKGROUP_SIZE * WORKGROUP_SIZE;
         const std::size_t listed = (found.pixels.size() + kGroup - 1) / kGroup * kGroup;
         found.pixels.resize(listed, glm::uvec2(UINT32_MAX));
-        const gpu::Specialization specialization{outputModeFor(scene, output, false), scene.image.samplesPerPixel,
-                                                 fallback.lightBatches.splits(), fallback.fastCameraTests,
-                                                 fallback.fastShadowTests};
+        const gpu::Specialization specialization =
+            specializationFor(scene, fallback, outputModeFor(scene, output, false), fallback.lightBatches.splits());
         PackedScene packed = packFor(scene, fallback);
         const vk::raii::Pipeline* pipeline =
             pipelinesFor(std::span(&fallback.kernel, 1), fallback, specialization, packed.specValues(),
