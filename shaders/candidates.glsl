@@ -18,7 +18,7 @@ layout(set = 0, binding = CANDIDATE_GRID_BINDING) uniform usamplerBuffer candida
 layout(set = 0, binding = CANDIDATE_CELL_BINDING) uniform usamplerBuffer cellStarts;
 layout(set = 0, binding = CANDIDATE_ENTRY_BINDING) uniform usamplerBuffer candidateEntries;
 // One record per sphere (GpuCandidateSphere), in the lists' order (CandidateLists::sphereNodes):
-// centre and radius, the eye's power, the node index.
+// centre and radius, the eye's power, the node index, its look.
 layout(set = 0, binding = CANDIDATE_SPHERE_BINDING) uniform usamplerBuffer candidateSpheres;
 
 struct CandidateRange {
@@ -38,6 +38,7 @@ struct CandidateSphere {
     vec4r sphere;  // centre, radius
     real eyePower;
     uint node;
+    uint look;
 };
 
 int candidateSphereTexel(uint index) {
@@ -47,7 +48,16 @@ int candidateSphereTexel(uint index) {
 CandidateSphere candidateSphere(uint index) {
     CandidateSphere s;
     s.sphere = realVec4At(candidateSpheres, candidateSphereTexel(index));
-    s.eyePower = realAt(candidateSpheres, candidateSphereTexel(index) + REAL_VEC4_TEXELS, s.node);
+    uvec4 texel = texelFetch(candidateSpheres, candidateSphereTexel(index) + REAL_VEC4_TEXELS);
+#ifdef HEXRAY_F64
+    s.eyePower = packDouble2x32(texel.xy);
+    s.node = texel.z;
+    s.look = texel.w;
+#else
+    s.eyePower = uintBitsToFloat(texel.x);
+    s.node = texel.y;
+    s.look = texel.z;
+#endif
     return s;
 }
 

@@ -40,12 +40,16 @@ real sphereNodeDistance(Ray ray, uint i, real power) {
     return sphereDistanceFor(ray, nodeGeometry(i), power);
 }
 
-real planeNodeDistance(Ray ray, uint i) {
+real planeDistanceOf(Ray ray, real height) {
 #ifdef HEXRAY_TEXTBOOK
-    return planeDistanceTextbook(ray, nodeGeometry(i).x);
+    return planeDistanceTextbook(ray, height);
 #else
-    return planeDistance(ray, nodeGeometry(i).x);
+    return planeDistance(ray, height);
 #endif
+}
+
+real planeNodeDistance(Ray ray, uint i) {
+    return planeDistanceOf(ray, nodeGeometry(i).x);
 }
 
 // Distance along a camera ray to node i. Camera rays all start at the eye, whose power with

@@ -20,19 +20,40 @@
 #include "candidates.glsl"
 #endif
 
+// What shading reads of the hit's node.
+struct HitNode {
+    vec4r geometry;
+    real eyePower;
+    bool plane;
+    uint look;
+};
+
+HitNode readHitNode(uint node) {
+    return HitNode(nodeGeometry(node), nodeEyePower(node), isPlaneNode(node), nodeLook(node));
+}
+
 #ifdef HEXRAY_CANDIDATES
 // The sphere record of the last findNearestHit's hit (NO_NODE: a plane, or none). A shadow ray
 // tells the hit's own sphere by its record, so reads no candidate's node.
 uint hitRecord;
+// The last findNearestHit's hit's node, from its record or plane: the nodes lie in the scene's
+// order, the records in space's, so neighbouring pixels' hits are rarely near in the nodes.
+HitNode hitNode;
 #endif
 
 Hit findNearestHit(Ray ray) {
     Hit hit = Hit(NO_HIT, NO_NODE);
 #ifdef HEXRAY_CANDIDATES
+    hitNode = HitNode(vec4r(0.0), 0.0, true, 0u);
     CandidateRange planes = planeCandidates();
     for (uint k = planes.first; k < planes.end; ++k) {
         uint node = candidateEntry(k);
-        hit = nearer(hit, planeNodeDistance(ray, node), node);
+        vec4r geometry = nodeGeometry(node);
+        Hit nearest = nearer(hit, planeDistanceOf(ray, geometry.x), node);
+        if (nearest.node != hit.node) {
+            hitNode = HitNode(geometry, 0.0, true, nodeLook(node));
+        }
+        hit = nearest;
     }
     hitRecord = NO_NODE;
     CandidateRange spheres = cameraCandidates(vec3(ray.direction));
@@ -40,7 +61,9 @@ Hit findNearestHit(Ray ray) {
         uint record = candidateEntry(k);
         CandidateSphere s = candidateSphere(record);
         Hit nearest = nearer(hit, sphereDistanceFor(ray, s.sphere, s.eyePower), s.node);
-        hitRecord = nearest.node != hit.node ? record : hitRecord;  // a sphere has one record
+        bool closer = nearest.node != hit.node;  // a sphere has one record
+        hitRecord = closer ? record : hitRecord;
+        hitNode = closer ? HitNode(s.sphere, s.eyePower, false, s.look) : hitNode;
         hit = nearest;
     }
 #else
@@ -49,6 +72,14 @@ Hit findNearestHit(Ray ray) {
     }
 #endif
     return hit;
+}
+
+HitNode hitNodeOf(Hit hit) {
+#ifdef HEXRAY_CANDIDATES
+    return hitNode;
+#else
+    return readHitNode(hit.node);
+#endif
 }
 
 // Whether plane `node` lies strictly between the surface and the light at `light`.
@@ -73,10 +104,10 @@ bool sphereBlocks(vec4r sphere, bool isHitsSphere, LightPath path, vec3r light, 
 #endif
 }
 
-bool isOccluded(uint light, LightPath path, Hit hit) {
+bool isOccluded(uint light, LightPath path, Hit hit, HitNode node) {
     vec4r lightAt = lightPosition(light);
     vec3r position = lightAt.xyz;
-    bool hitSeenFromOutside = nodeEyePower(hit.node) > 0.0;  // planes: 0
+    bool hitSeenFromOutside = node.eyePower > 0.0;  // planes: 0
     // A surface facing away from the light gets nothing from it, whatever lies between: no tests.
 #ifdef HEXRAY_TEXTBOOK
     bool blocked = !path.facing;
@@ -106,28 +137,33 @@ real candidateDistance(Ray ray, uint node) {
     return cameraRayDistance(ray, node);
 }
 
-Surface hitSurface(Ray ray, Hit hit) {
-    vec4r geometry = nodeGeometry(hit.node);
+Surface surfaceOf(Ray ray, Hit hit, HitNode node) {
+    vec4r geometry = node.geometry;
 #ifdef HEXRAY_TEXTBOOK
-    return isPlaneNode(hit.node) ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
+    return node.plane ? planeSurfaceTextbook(ray, hit.t) : sphereSurfaceTextbook(ray, hit.t, geometry);
 #else
-    real eyePower = nodeEyePower(hit.node);
+    real eyePower = node.eyePower;
     Surface sphere = FAST_CAMERA_TESTS ? sphereSurfaceFast(ray, hit.t, geometry) : sphereSurface(ray, geometry, eyePower);
     sphere.shadowOrigin = sphereShadowOrigin(sphere, geometry, !(eyePower > 0.0));
-    return isPlaneNode(hit.node) ? planeSurface(ray, hit.t, geometry.x) : sphere;
+    return node.plane ? planeSurface(ray, hit.t, geometry.x) : sphere;
 #endif
 }
 
+Surface hitSurface(Ray ray, Hit hit) {
+    return surfaceOf(ray, hit, readHitNode(hit.node));
+}
+
 vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 irradiance, inout uint flags) {
-    uint look = nodeLook(hit.node);
+    HitNode node = hitNodeOf(hit);
+    uint look = node.look;
     uint shader = lookShaderKind(look);
     vec3 albedo = lookColor1(look);
     if (shader == SHADER_CONSTANT) {
         return albedo;
     }
-    Surface s = hitSurface(ray, hit);
+    Surface s = surfaceOf(ray, hit, node);
     vec4r checker = lookChecker(look);
-    bool odd = isPlaneNode(hit.node) ? isOddPlaneCell(checker, s.position) : isOddSphereCell(checker, s.outwardNormal);
+    bool odd = node.plane ? isOddPlaneCell(checker, s.position) : isOddSphereCell(checker, s.outwardNormal);
     if (shader == SHADER_CHECKER && odd) {
         albedo = lookColor2(look);
         flags |= ODD_CHECKER_BIT;
@@ -135,7 +171,7 @@ vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 ir
     traceSurface(s, albedo);
     for (uint i = firstLight; i < endLight; ++i) {
         LightPath path = lightPath(s, lightPosition(i).xyz);
-        irradiance += lightTerm(i, lightPower(i), path, isOccluded(i, path, hit), flags);
+        irradiance += lightTerm(i, lightPower(i), path, isOccluded(i, path, hit, node), flags);
     }
     return litColor(albedo, irradiance);
 }

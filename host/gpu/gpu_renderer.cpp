@@ -155,9 +155,10 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
         gpu::packScene<Real>(scene, plan.placement, packedInBuffer ? NodePacking::Later : NodePacking::Now);
     PackedScene bytes;
     if (const CandidateLists* lists = plan.candidates.get()) {
+        auto looks = std::make_shared<const gpu::LookIndex>(packed.lookIndex);
         bytes.candidateSpheres = {
-            lists->sphereNodes.size() * sizeof(gpu::GpuCandidateSphere<Real>), [&scene, &plan](std::byte* out) {
-                gpu::packCandidateSpheresInto<Real>(scene, plan.placement, plan.candidates->sphereNodes, out);
+            lists->sphereNodes.size() * sizeof(gpu::GpuCandidateSphere<Real>), [&scene, &plan, looks](std::byte* out) {
+                gpu::packCandidateSpheresInto<Real>(scene, plan.placement, plan.candidates->sphereNodes, *looks, out);
             }};
     }
     if (plan.layout == SceneLayout::Uniform) {

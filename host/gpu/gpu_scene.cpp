@@ -180,21 +180,21 @@ template void packNodesInto<double>(const Scene&, const Placement&, const LookIn
 
 template <typename Real>
 void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
-                              std::span<const std::uint32_t> sphereNodes, std::byte* out) {
+                              std::span<const std::uint32_t> sphereNodes, const LookIndex& looks, std::byte* out) {
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
     runAcrossCores(sphereNodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t record = first; record < end; ++record) {
             const std::uint32_t i = sphereNodes[record];
-            const GpuNode<Real> packed = packNode<Real>(scene.nodes[i], placement, eye, 0);
-            const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, {}};
+            const GpuNode<Real> packed = packNode<Real>(scene.nodes[i], placement, eye, looks.of(scene.nodes[i]));
+            const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, packed.look};
             std::memcpy(out + record * sizeof sphere, &sphere, sizeof sphere);
         }
     });
 }
 
 template void packCandidateSpheresInto<float>(const Scene&, const Placement&, std::span<const std::uint32_t>,
-                                              std::byte*);
+                                              const LookIndex&, std::byte*);
 template void packCandidateSpheresInto<double>(const Scene&, const Placement&, std::span<const std::uint32_t>,
-                                               std::byte*);
+                                               const LookIndex&, std::byte*);
 
 }  // namespace hexray::gpu

@@ -87,13 +87,13 @@ struct GpuCandidateGrid {
 };
 
 // One sphere of a candidate list, packed tight (texels have no alignment beyond their own size):
-// two texels in float, three in double.
+// two texels in float (the last word unused), three in double.
 template <typename Real>
-struct GpuCandidateSphere {
+struct alignas(16) GpuCandidateSphere {
     glm::vec<4, Real> sphere;  // centre, radius: the node's geometry
     Real eyePower;             // the node's eyePower
     std::uint32_t node;
-    std::uint32_t unused[sizeof(Real) == 4 ? 2 : 1];
+    std::uint32_t look;  // the node's look: shading reads the hit's record, not its node
 };
 
 // Which rows of the image one dispatch covers (large images render in bands) and, of each pixel,
@@ -176,9 +176,11 @@ static_assert(offsetof(GpuCandidateGrid, reach) == 32);
 static_assert(sizeof(GpuCandidateGrid) == 48);
 static_assert(offsetof(GpuCandidateSphere<float>, eyePower) == 16);
 static_assert(offsetof(GpuCandidateSphere<float>, node) == 20);
+static_assert(offsetof(GpuCandidateSphere<float>, look) == 24);
 static_assert(sizeof(GpuCandidateSphere<float>) == 32);
 static_assert(offsetof(GpuCandidateSphere<double>, eyePower) == 32);
 static_assert(offsetof(GpuCandidateSphere<double>, node) == 40);
+static_assert(offsetof(GpuCandidateSphere<double>, look) == 44);
 static_assert(sizeof(GpuCandidateSphere<double>) == 48);
 
 // --- Inspection (shaders/inspect_hooks.glsl): `hexray render --aov` and `hexray pixel`.

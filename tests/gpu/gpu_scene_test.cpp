@@ -140,13 +140,16 @@ TEST(PackScene, ALargeScenesNodesAndSphereRecordsEachLandInTheirOwnPlace) {
         sphereNodes[record] = std::uint32_t(scene.nodes.size() - 1 - record);  // last node first
     }
     std::vector<gpu::GpuCandidateSphere<float>> records(spheres);
-    gpu::packCandidateSpheresInto<float>(scene, placement, sphereNodes, reinterpret_cast<std::byte*>(records.data()));
+    gpu::packCandidateSpheresInto<float>(scene, placement, sphereNodes, gpu::LookIndex(scene),
+                                         reinterpret_cast<std::byte*>(records.data()));
     for (std::size_t i = 2; i < scene.nodes.size(); ++i) {
         ASSERT_EQ(nodes[i].geometry.x, float(i - 2)) << i;
         const std::size_t record = scene.nodes.size() - 1 - i;
         ASSERT_EQ(records[record].node, i) << record;
         ASSERT_EQ(records[record].sphere.x, float(i - 2)) << record;
+        ASSERT_EQ(records[record].look, nodes[i].look) << record;
     }
+    EXPECT_NE(records[0].look, records[1].look);  // two shaders, two looks
 }
 
 TEST(PackScene, NodesOfOneShaderAndKindShareALookAndAShaderOnPlanesAndSpheresHasTwo) {
