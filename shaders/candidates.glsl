@@ -24,6 +24,7 @@ layout(set = 0, binding = CANDIDATE_SPHERE_BINDING) uniform usamplerBuffer candi
 struct CandidateRange {
     uint first;
     uint end;
+    bool depthOrdered;  // nearest first from the view's origin (liesBeyond)
 };
 
 uint cellStart(uint cell) {
@@ -34,40 +35,45 @@ uint candidateEntry(uint k) {
     return texelFetch(candidateEntries, int(k)).x;
 }
 
-struct CandidateSphere {
-    vec4r sphere;  // centre, radius
+int candidateSphereTexel(uint index) {
+    return (REAL_VEC4_TEXELS + 1) * int(index);
+}
+
+// A record's centre and radius: all a shadow ray reads.
+vec4r candidateSphereGeometry(uint index) {
+    return realVec4At(candidateSpheres, candidateSphereTexel(index));
+}
+
+// The rest of a record: what a camera ray reads of a sphere it may hit.
+struct CandidateSphereNode {
     real eyePower;
     uint node;
     uint look;
 };
 
-int candidateSphereTexel(uint index) {
-    return (REAL_VEC4_TEXELS + 1) * int(index);
-}
-
-CandidateSphere candidateSphere(uint index) {
-    CandidateSphere s;
-    s.sphere = realVec4At(candidateSpheres, candidateSphereTexel(index));
+CandidateSphereNode candidateSphereNode(uint index) {
     uvec4 texel = texelFetch(candidateSpheres, candidateSphereTexel(index) + REAL_VEC4_TEXELS);
 #ifdef HEXRAY_F64
-    s.eyePower = packDouble2x32(texel.xy);
-    s.node = texel.z;
-    s.look = texel.w;
+    return CandidateSphereNode(packDouble2x32(texel.xy), texel.z, texel.w);
 #else
-    s.eyePower = uintBitsToFloat(texel.x);
-    s.node = texel.y;
-    s.look = texel.z;
+    return CandidateSphereNode(uintBitsToFloat(texel.x), texel.y, texel.z);
 #endif
-    return s;
 }
 
-// Its centre and radius alone: all a shadow ray reads (a texel fewer).
-vec4r candidateSphereGeometry(uint index) {
-    return realVec4At(candidateSpheres, candidateSphereTexel(index));
+// Whether a sphere of radius `radius` whose centre lies `distanceSquared` (|f|^2) from a view's
+// origin lies past `rayLength` along every ray from it, its test's rounding included: whether its
+// depth (shader_interface.h's DEPTH_ORDER_UNITS) passes the ray's end by DEPTH_ORDER_SLACK of it.
+// In a depth-ordered list every later sphere then does too. Squares of sums of positive terms: no
+// cancellation, so the slack covers this test's own rounding.
+bool liesBeyond(real distanceSquared, real radius, real rayLength) {
+    real margin = real(DEPTH_ORDER_UNITS) * UNIT_ROUNDOFF;
+    real end = rayLength + radius * (1.0 + margin);
+    real shrink = (1.0 - margin) * (1.0 - margin) * (1.0 - real(DEPTH_ORDER_SLACK));
+    return distanceSquared * shrink > end * end * (1.0 + real(DEPTH_ORDER_SLACK));
 }
 
 CandidateRange planeCandidates() {
-    return CandidateRange(cellStart(PLANE_CELL), cellStart(PLANE_CELL + 1u));
+    return CandidateRange(cellStart(PLANE_CELL), cellStart(PLANE_CELL + 1u), false);
 }
 
 // The list of the cell of grid `grid` that holds `tangent`; empty outside the grid, where no
@@ -77,14 +83,14 @@ CandidateRange gridCandidates(uint grid, vec2 tangent, float rayLength) {
     int base = 3 + 3 * int(grid);
     vec4 window = uintBitsToFloat(texelFetch(candidateGrids, base));
     uvec4 cells = texelFetch(candidateGrids, base + 1);
-    float reach = uintBitsToFloat(texelFetch(candidateGrids, base + 2).x);
+    vec2 reachAndOrder = uintBitsToFloat(texelFetch(candidateGrids, base + 2).xy);
     vec2 position = (tangent - window.xy) * window.zw;
     bool inside = all(greaterThanEqual(position, vec2(0.0))) && all(lessThan(position, vec2(cells.xy)));
     uvec2 cell = uvec2(clamp(position, vec2(0.0), vec2(cells.xy - 1u)));
-    bool pastReach = rayLength > reach;
+    bool pastReach = rayLength > reachAndOrder.x;
     uint index = pastReach ? cells.w : cells.z + cell.y * cells.x + cell.x;
     uint first = cellStart(index);
-    return CandidateRange(first, inside || pastReach ? cellStart(index + 1u) : first);
+    return CandidateRange(first, inside || pastReach ? cellStart(index + 1u) : first, reachAndOrder.y > 0.0 && !pastReach);
 }
 
 // The spheres a camera ray with this direction can meet.

@@ -59,12 +59,29 @@ Hit findNearestHit(Ray ray) {
     CandidateRange spheres = cameraCandidates(vec3(ray.direction));
     for (uint k = spheres.first; k < spheres.end; ++k) {
         uint record = candidateEntry(k);
-        CandidateSphere s = candidateSphere(record);
-        Hit nearest = nearer(hit, sphereDistanceFor(ray, s.sphere, s.eyePower), s.node);
-        bool closer = nearest.node != hit.node;  // a sphere has one record
-        hitRecord = closer ? record : hitRecord;
-        hitNode = closer ? HitNode(s.sphere, s.eyePower, false, s.look) : hitNode;
-        hit = nearest;
+        vec4r sphere = candidateSphereGeometry(record);
+        vec3r fromSphere = ray.origin - sphere.xyz;
+        if (spheres.depthOrdered && liesBeyond(dot(fromSphere, fromSphere), sphere.w, hit.t)) {
+            break;  // so do the rest
+        }
+        // The fast test needs no eye power: the rest of the record is read only for a sphere that
+        // may be the nearest (its node breaks a tie).
+        CandidateSphereNode s;
+        if (!FAST_CAMERA_TESTS) {
+            s = candidateSphereNode(record);
+        }
+        real t = sphereDistanceFor(ray, sphere, s.eyePower);
+        if (t <= hit.t && t != NO_HIT) {
+            if (FAST_CAMERA_TESTS) {
+                s = candidateSphereNode(record);
+            }
+            Hit nearest = nearer(hit, t, s.node);
+            if (nearest.node != hit.node) {  // a sphere has one record
+                hitRecord = record;
+                hitNode = HitNode(sphere, s.eyePower, false, s.look);
+            }
+            hit = nearest;
+        }
     }
 #else
     for (uint i = 0u; i < frame.nodeCount; ++i) {

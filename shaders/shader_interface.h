@@ -104,6 +104,15 @@ HEXRAY_CONSTANT uint SMALL_SCENE_CAPACITY = 32u;
 HEXRAY_CONSTANT uint PLANE_CELL = 0u;
 HEXRAY_CONSTANT uint CAMERA_GRID = 0u;
 HEXRAY_CONSTANT uint CUBE_FACES = 6u;
+// A robust kernel's camera lists are in depth order from the eye: by |f| (1 - m) - r (1 + m) for
+// a sphere of radius r whose centre lies f from it, m being DEPTH_ORDER_UNITS units of the
+// kernel's roundoff, below any distance the kernel's own test of the sphere can report (its error
+// is a few units of |f| + r). A ray stops reading its list at the first sphere whose depth passes
+// its nearest hit so far by DEPTH_ORDER_SLACK of it, more than the kernel's rounding of that test
+// and the depth's own rounding to float (candidates.glsl's liesBeyond). The lights' lists stay in
+// record order: sorting them cost the host more than it saved the kernel.
+HEXRAY_CONSTANT float DEPTH_ORDER_UNITS = 1024.0;
+HEXRAY_CONSTANT float DEPTH_ORDER_SLACK = 1.52587890625e-5;  // 2^-16
 
 // f32-naive's shadow rays start this far off the surface along its normal, as the course does: a
 // no-op once below half an ulp of the coordinates, and too large for contact shadows near the

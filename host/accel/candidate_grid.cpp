@@ -11,12 +11,7 @@ namespace {
 
 using namespace candidates;  // the tunables
 
-// Rounding to float moves a number by at most half a unit in its last place (2^-24 of it); moving
-// it by more than that first rounds outward, without a look at the result.
-float roundedDown(double x) {
-    return float(x - std::abs(x) * 0x1p-22 - 0x1p-126);
-}
-
+// roundedDown's mirror (below).
 float roundedUp(double x) {
     return float(x + std::abs(x) * 0x1p-22 + 0x1p-126);
 }
@@ -29,19 +24,41 @@ void forEachCell(const CandidateGrid& grid, std::span<const Footprint> footprint
         for (std::uint32_t row = row0; row <= row1; ++row) {
             const std::size_t rowStart = std::size_t(row) * grid.columns;
             for (std::uint32_t column = column0; column <= column1; ++column) {
-                visit(rowStart + column, f.sphere);
+                visit(rowStart + column, f);
             }
         }
     }
 }
 
+// Lists hold a few spheres each: an insertion sort, stable, so ties keep their order.
+void sortListByDepth(std::span<std::uint32_t> spheres, std::span<float> depths) {
+    for (std::size_t i = 1; i < spheres.size(); ++i) {
+        const std::uint32_t sphere = spheres[i];
+        const float depth = depths[i];
+        std::size_t j = i;
+        for (; j > 0 && depths[j - 1] > depth; --j) {
+            spheres[j] = spheres[j - 1];
+            depths[j] = depths[j - 1];
+        }
+        spheres[j] = sphere;
+        depths[j] = depth;
+    }
+}
+
 }  // namespace
 
-Footprint footprintOf(std::uint32_t sphere, const TangentBox& box) {
+// Rounding to float moves a number by at most half a unit in its last place (2^-24 of it); moving
+// it by more than that first rounds outward, without a look at the result.
+float roundedDown(double x) {
+    return float(x - std::abs(x) * 0x1p-22 - 0x1p-126);
+}
+
+Footprint footprintOf(std::uint32_t sphere, const TangentBox& box, float depth) {
     const double size = std::max({std::abs(box.u0), std::abs(box.u1), std::abs(box.v0), std::abs(box.v1)});
     const double pad = kLookupPad * (1.0 + size);
-    return {sphere, roundedDown(box.u0 - pad), roundedDown(box.v0 - pad), roundedUp(box.u1 + pad),
-            roundedUp(box.v1 + pad)};
+    return {
+        sphere, roundedDown(box.u0 - pad), roundedDown(box.v0 - pad), roundedUp(box.u1 + pad), roundedUp(box.v1 + pad),
+        depth};
 }
 
 void CandidateGrid::cellRange(const Footprint& f, std::uint32_t& column0, std::uint32_t& row0, std::uint32_t& column1,
@@ -77,13 +94,13 @@ CandidateGrid gridOver(const TangentBox& window, double cell) {
 }
 
 std::size_t CellBinner::bin(const CandidateGrid& grid, std::span<const std::span<const Footprint>> parts,
-                            std::size_t firstEntry) {
+                            std::size_t firstEntry, bool byDepth) {
     const std::size_t cells = grid.cellCount();
     counts_.resize(parts.size());
     runParts(unsigned(parts.size()), [&](unsigned part) {
         std::vector<std::uint32_t>& counts = counts_[part];
         counts.assign(cells, 0);
-        forEachCell(grid, parts[part], [&](std::size_t cell, std::uint32_t) { ++counts[cell]; });
+        forEachCell(grid, parts[part], [&](std::size_t cell, const Footprint&) { ++counts[cell]; });
     });
     std::size_t next = firstEntry;
     for (std::size_t cell = 0; cell < cells; ++cell) {
@@ -94,12 +111,35 @@ std::size_t CellBinner::bin(const CandidateGrid& grid, std::span<const std::span
             next += count;
         }
     }
+    // Each footprint's depth goes beside its entries (at their place less firstEntry), to sort by.
+    depths_.resize(byDepth ? next - firstEntry : 0);
     runParts(unsigned(parts.size()), [&](unsigned part) {
         std::vector<std::uint32_t>& cursors = counts_[part];
-        forEachCell(grid, parts[part],
-                    [&](std::size_t cell, std::uint32_t sphere) { entries_[cursors[cell]++] = sphere; });
+        forEachCell(grid, parts[part], [&](std::size_t cell, const Footprint& f) {
+            const std::uint32_t entry = cursors[cell]++;
+            entries_[entry] = f.sphere;
+            if (byDepth) {
+                depths_[entry - firstEntry] = f.depth;
+            }
+        });
     });
+    if (byDepth) {
+        sortByDepth(grid, firstEntry, next, unsigned(parts.size()));
+    }
     return next;
+}
+
+void CellBinner::sortByDepth(const CandidateGrid& grid, std::size_t firstEntry, std::size_t endEntry,
+                             unsigned threads) {
+    const std::size_t cells = grid.cellCount();
+    runParts(threads, [&](unsigned part) {
+        for (std::size_t cell = partBegin(cells, threads, part); cell < partBegin(cells, threads, part + 1); ++cell) {
+            const std::size_t first = cellStarts_[grid.firstCell + cell];
+            const std::size_t end = cell + 1 < cells ? cellStarts_[grid.firstCell + cell + 1] : endEntry;
+            sortListByDepth(std::span(entries_.data() + first, end - first),
+                            std::span(depths_.data() + (first - firstEntry), end - first));
+        }
+    });
 }
 
 }  // namespace hexray::accel

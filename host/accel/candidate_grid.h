@@ -17,11 +17,15 @@ namespace hexray::inline accel {
 struct Footprint {
     std::uint32_t sphere;  // its record
     float u0, v0, u1, v1;
+    float depth;  // from the view's origin, for lists in depth order (candidate_lists.cpp's DepthOrder)
 };
+
+// The float at or just below `x` (never above), without a look at the rounding.
+float roundedDown(double x);
 
 // `box` padded by the shader's float look-up error (a few units of float roundoff of its
 // coordinates), rounded outward.
-Footprint footprintOf(std::uint32_t sphere, const TangentBox& box);
+Footprint footprintOf(std::uint32_t sphere, const TangentBox& box, float depth);
 
 // Cells over a window, as the shader looks them up: its floats, and the cells in rows.
 struct CandidateGrid {
@@ -46,7 +50,7 @@ CandidateGrid gridOver(const TangentBox& window, double cell);
 
 // Lists for the cells of grids, filled from footprints by a counting sort on several threads.
 // Each thread's footprints follow the previous thread's in every list, so lists keep the
-// footprints' order.
+// footprints' order (or the spheres' depths' order, where given).
 class CellBinner {
 public:
     // Writes into `cellStarts` and `entries`, sized for every grid to come.
@@ -54,13 +58,19 @@ public:
         : cellStarts_(cellStarts), entries_(entries) {}
 
     // Bins `parts` (one span of footprints per thread) into `grid`'s cells, from entry
-    // `firstEntry` on; returns the entry after the last.
+    // `firstEntry` on; returns the entry after the last. `byDepth`: each list then goes in order of
+    // its footprints' depths, ties in the footprints' order.
     std::size_t bin(const CandidateGrid& grid, std::span<const std::span<const Footprint>> parts,
-                    std::size_t firstEntry);
+                    std::size_t firstEntry, bool byDepth = false);
 
 private:
+    // Each of `grid`'s lists, from entry `firstEntry` to `endEntry`, in order of `depths_`, on
+    // `threads` threads.
+    void sortByDepth(const CandidateGrid& grid, std::size_t firstEntry, std::size_t endEntry, unsigned threads);
+
     UninitializedVector<std::uint32_t>& cellStarts_;
     UninitializedVector<std::uint32_t>& entries_;
+    UninitializedVector<float> depths_;               // beside the grid's entries, while binning by depth
     std::vector<std::vector<std::uint32_t>> counts_;  // per part: counts, then write cursors
 };
 

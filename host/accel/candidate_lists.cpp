@@ -243,6 +243,40 @@ private:
     bool textbook_;
 };
 
+// ---------------------------------------------------------------- depth order
+
+// The order of the camera's lists: a robust kernel's by depth from the eye (shader_interface.h's
+// DEPTH_ORDER_UNITS), so that a ray stops at the first sphere past its nearest hit; a textbook
+// kernel's by record, its tests erring too much for a depth to bound them.
+class DepthOrder {
+public:
+    DepthOrder(FloatWidth width, Formulation formulation)
+        : width_(width),
+          margin_(gpu::DEPTH_ORDER_UNITS * unitRoundoff(width)),
+          applies_(formulation == Formulation::Robust) {}
+
+    bool applies() const { return applies_; }
+
+    // The sphere's depth from `origin`, from the values the kernel holds (rounded to its floats),
+    // rounded down; 0 when the order does not apply.
+    float of(const glm::dvec3& origin, const PlacedSphere& s) const {
+        if (!applies_) {
+            return 0.0f;
+        }
+        const bool f32 = width_ == FloatWidth::F32;
+        const glm::dvec3 center = f32 ? glm::dvec3(glm::vec3(s.center)) : s.center;
+        const glm::dvec3 from = f32 ? glm::dvec3(glm::vec3(origin)) : origin;
+        const double radius = f32 ? double(float(s.radius)) : s.radius;
+        const double depth = glm::distance(center, from) * (1.0 - margin_) - radius * (1.0 + margin_);
+        return roundedDown(depth);
+    }
+
+private:
+    FloatWidth width_;
+    double margin_;
+    bool applies_;
+};
+
 // ---------------------------------------------------------------- views
 
 TangentView cameraView(const Scene& scene) {
@@ -297,8 +331,8 @@ struct ViewPart {
     std::optional<TangentBox> window;   // around them all
     std::vector<float> sampledSides;    // larger sides of the footprints of every kSideSampleStride-th record
 
-    void add(std::uint32_t sphere, const TangentBox& box) {
-        const Footprint f = footprintOf(sphere, box);
+    void add(std::uint32_t sphere, const TangentBox& box, float depth) {
+        const Footprint f = footprintOf(sphere, box, depth);
         if (sphere % kSideSampleStride == 0) {
             sampledSides.push_back(std::max(f.u1 - f.u0, f.v1 - f.v0));
         }
@@ -332,7 +366,8 @@ struct Sightings {
 };
 
 // The camera's view, sighted by `threads` threads, each over its share of the spheres.
-Sightings sightCamera(const PlacedScene& placed, const Scene& scene, const Reach& reach, unsigned threads) {
+Sightings sightCamera(const PlacedScene& placed, const Scene& scene, const Reach& reach, const DepthOrder& depth,
+                      unsigned threads) {
     Sightings sightings;
     sightings.views.push_back(cameraView(scene));
     sightings.parts.assign(threads, std::vector<ViewPart>(1));
@@ -345,7 +380,7 @@ Sightings sightCamera(const PlacedScene& placed, const Scene& scene, const Reach
             const glm::dvec3 fromEye = s.center - placed.eye;
             const double eyeReach = reach.camera(s.radius, glm::length(fromEye), s.centerSize, placed.eyeSize);
             if (const auto box = ballFootprint(sightings.views[0], fromEye, eyeReach)) {
-                part.add(std::uint32_t(record), *box);
+                part.add(std::uint32_t(record), *box, depth.of(placed.eye, s));
             }
         }
     });
@@ -382,7 +417,7 @@ void sightFromLight(const PlacedScene& placed, const Reach& reach, std::size_t l
                 continue;
             }
             if (const auto box = ballFootprint(faces.views[face], fromLight, radius)) {
-                parts[face].add(record, *box);
+                parts[face].add(record, *box, 0.0f);
             }
         }
     }
@@ -473,11 +508,11 @@ double lightCellSide(const Sightings& sightings, const ViewSet& set, std::size_t
     return std::max(double(*middle), std::sqrt(area / double(cellBudget)));
 }
 
-gpu::GpuCandidateGrid gpuGrid(const CandidateGrid& grid, std::uint32_t pastReachCell, float reach) {
+gpu::GpuCandidateGrid gpuGrid(const CandidateGrid& grid, std::uint32_t pastReachCell, float reach, bool depthOrder) {
     gpu::GpuCandidateGrid g{};
     g.window = glm::vec4(grid.u0, grid.v0, grid.uScale, grid.vScale);
     g.cells = glm::uvec4(grid.columns, grid.rows, grid.firstCell, pastReachCell);
-    g.reach = glm::vec4(reach, 0, 0, 0);
+    g.reach = glm::vec4(reach, depthOrder ? 1.0f : 0.0f, 0, 0);
     return g;
 }
 
@@ -620,7 +655,8 @@ void writeLightGrids(const PlacedScene& placed, const Reach& reach, std::span<Li
             const ShadowReach& shadowReach = placed.shadowReach[light];
             const std::uint32_t pastReach = shadowReach.longerRays ? everySphereCell : plan.grids[0].firstCell;
             for (std::uint32_t face = 0; face < gpu::CUBE_FACES; ++face) {
-                grids[face] = gpuGrid(plan.grids[face], pastReach, floatNotAbove(shadowReach.length[face]));
+                // In record order (DepthOrder applies to the camera's lists only).
+                grids[face] = gpuGrid(plan.grids[face], pastReach, floatNotAbove(shadowReach.length[face]), false);
             }
         }
     });
@@ -658,12 +694,12 @@ public:
     // Throws unless the next cell and entry are `cell` and `entry`.
     void expectAt(std::size_t cell, std::size_t entry) const { expectAsPlanned(nextCell_, nextEntry_, cell, entry); }
 
-    // `grid`'s cells, from what `view` sees; sets their first cell.
-    void grid(CandidateGrid& grid, const Sightings& sightings, std::size_t view) {
+    // `grid`'s cells, from what `view` sees (`byDepth`: each list in depth order); sets their first cell.
+    void grid(CandidateGrid& grid, const Sightings& sightings, std::size_t view, bool byDepth) {
         grid.firstCell = nextCell_;
         nextCell_ += std::uint32_t(grid.cellCount());
         const auto parts = sightings.footprints(view);
-        nextEntry_ = binner_.bin(grid, parts, nextEntry_);
+        nextEntry_ = binner_.bin(grid, parts, nextEntry_, byDepth);
     }
 
 private:
@@ -674,9 +710,10 @@ private:
 };
 
 // The camera's grid, in the lists' first grid and the cells after the planes'.
-void writeCameraGrid(ListWriter& writer, CandidateGrid grid, const Sightings& camera, CandidateLists& lists) {
-    writer.grid(grid, camera, 0);
-    lists.grids[gpu::CAMERA_GRID] = gpuGrid(grid, grid.firstCell, std::numeric_limits<float>::infinity());
+void writeCameraGrid(ListWriter& writer, CandidateGrid grid, const Sightings& camera, bool depthOrder,
+                     CandidateLists& lists) {
+    writer.grid(grid, camera, 0, depthOrder);
+    lists.grids[gpu::CAMERA_GRID] = gpuGrid(grid, grid.firstCell, std::numeric_limits<float>::infinity(), depthOrder);
     const TangentView& view = camera.views[0];
     lists.cameraAxes = {glm::vec4(glm::vec3(view.right), 0), glm::vec4(glm::vec3(view.down), 0),
                         glm::vec4(glm::vec3(view.forward), 0)};
@@ -698,7 +735,8 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     const unsigned threads = threadsFor(threadCount);
     const PlacedScene placed = placeScene(scene, placement, formulation, threads);
     const Reach reach(width, formulation);
-    const Sightings camera = sightCamera(placed, scene, reach, threads);
+    const DepthOrder depth(width, formulation);
+    const Sightings camera = sightCamera(placed, scene, reach, depth, threads);
 
     // The camera's cells start at a pixel's size and may take up to half the budgets; the lights
     // share what it leaves. One list of every sphere serves every light's rays past its reach
@@ -735,7 +773,7 @@ std::optional<CandidateLists> buildCandidateLists(const Scene& scene, const Plac
     lists.grids.resize(1 + lightCount * gpu::CUBE_FACES);
     ListWriter writer(lists, offsets.cells.back(), offsets.entries.back());
     writer.cell(placed.planes);  // gpu::PLANE_CELL
-    writeCameraGrid(writer, cameraGrid->grids[0], camera, lists);
+    writeCameraGrid(writer, cameraGrid->grids[0], camera, depth.applies(), lists);
     const std::uint32_t everySphereCell = listsEverySphere ? writer.everyRecord(everySphere) : 0;
     writer.expectAt(offsets.cells.front(), offsets.entries.front());
     writeLightGrids(placed, reach, plans, offsets, everySphereCell, lists, threads);

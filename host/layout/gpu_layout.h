@@ -83,7 +83,7 @@ struct GpuCandidateAxes {
 struct GpuCandidateGrid {
     glm::vec4 window;  // .xy: tangent coordinates (u, v) of the first corner; .zw: cells per unit
     glm::uvec4 cells;  // .xy: cells across u and v; .z: the grid's first cell; .w: the cell past reach
-    glm::vec4 reach;   // .x: the longest ray the lists hold (+inf: any)
+    glm::vec4 reach;   // .x: the longest ray the lists hold (+inf: any); .y: 1 when they are in depth order
 };
 
 // One sphere of a candidate list, packed tight (texels have no alignment beyond their own size):

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -131,26 +132,94 @@ TEST(CandidateLists, HoldEverySphereAShadowRayGrazes) {
     EXPECT_EQ(checked, 2u * 3000u * 16u);
 }
 
-TEST(CandidateLists, ListThePlanesFirstThenRecordsInAscendingOrder) {
-    const Scene scene = testScene(500);
-    const auto lists =
-        buildCandidateLists(scene, placementFor(scene, Formulation::Robust), FloatWidth::F64, Formulation::Robust);
-    ASSERT_TRUE(lists);
-    ASSERT_EQ(lists->cellStarts.at(gpu::PLANE_CELL + 1), 1u);
-    EXPECT_EQ(lists->entries.at(0), 0u);  // the floor, node 0
-    for (std::size_t cell = gpu::PLANE_CELL + 1; cell + 1 < lists->cellStarts.size(); ++cell) {
-        const auto first = lists->entries.begin() + lists->cellStarts[cell];
-        const auto end = lists->entries.begin() + lists->cellStarts[cell + 1];
-        ASSERT_TRUE(std::is_sorted(first, end)) << "cell " << cell;
-        ASSERT_TRUE(std::adjacent_find(first, end) == end) << "cell " << cell;
+// The planes' cell, then each grid's cells, every sphere in one record; each list as `inOrder`
+// says (given the grid and the list's spheres' nodes, in list order).
+template <typename InOrder>
+void expectListsAfterThePlanes(const Scene& scene, const CandidateLists& lists, const InOrder& inOrder) {
+    ASSERT_EQ(lists.cellStarts.at(gpu::PLANE_CELL + 1), 1u);
+    EXPECT_EQ(lists.entries.at(0), 0u);  // the floor, node 0
+    EXPECT_EQ(lists.cellStarts.back(), lists.entries.size());
+    ASSERT_EQ(lists.grids.size(), 1 + gpu::CUBE_FACES * scene.lights.size());
+    for (std::uint32_t grid = 0; grid < lists.grids.size(); ++grid) {
+        const glm::uvec4 cells = lists.grids[grid].cells;
+        for (std::uint32_t cell = cells.z; cell < cells.z + cells.x * cells.y; ++cell) {
+            std::vector<std::uint32_t> nodes;
+            for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
+                nodes.push_back(lists.sphereNodes.at(lists.entries.at(k)));
+            }
+            ASSERT_TRUE(inOrder(grid, nodes)) << "grid " << grid << ", cell " << cell;
+            std::sort(nodes.begin(), nodes.end());
+            ASSERT_TRUE(std::adjacent_find(nodes.begin(), nodes.end()) == nodes.end()) << "cell " << cell;
+        }
     }
-    EXPECT_EQ(lists->cellStarts.back(), lists->entries.size());
-    std::vector<std::uint32_t> nodes = lists->sphereNodes;
+    std::vector<std::uint32_t> nodes = lists.sphereNodes;
     std::sort(nodes.begin(), nodes.end());
     for (std::uint32_t i = 0; i < nodes.size(); ++i) {
         ASSERT_EQ(nodes[i], i + 1);  // every sphere has one record
     }
-    EXPECT_EQ(lists->grids.size(), 1 + gpu::CUBE_FACES * scene.lights.size());
+}
+
+// Each sphere node's record.
+std::vector<std::uint32_t> recordsOfNodes(const Scene& scene, const CandidateLists& lists) {
+    std::vector<std::uint32_t> recordOf(scene.nodes.size());
+    for (std::uint32_t record = 0; record < lists.sphereNodes.size(); ++record) {
+        recordOf.at(lists.sphereNodes[record]) = record;
+    }
+    return recordOf;
+}
+
+// Whether `nodes` (a list's, in list order) go in record order.
+bool inRecordOrder(const std::vector<std::uint32_t>& recordOf, const std::vector<std::uint32_t>& nodes) {
+    return std::is_sorted(nodes.begin(), nodes.end(),
+                          [&](std::uint32_t a, std::uint32_t b) { return recordOf.at(a) < recordOf.at(b); });
+}
+
+// A robust kernel's camera lists are in depth order from the eye (shader_interface.h): each
+// sphere's |f| - r is at least the one before's, but for the depth margin (DEPTH_ORDER_UNITS units
+// of the width's roundoff of |f| + r, each side) and the depth's rounding to float; the lights'
+// lists keep record order.
+TEST(CandidateLists, ListThePlanesFirstThenRobustCameraListsInDepthOrder) {
+    const Scene scene = testScene(500);
+    for (const FloatWidth width : {FloatWidth::F32, FloatWidth::F64}) {
+        const auto lists =
+            buildCandidateLists(scene, placementFor(scene, Formulation::Robust), width, Formulation::Robust);
+        ASSERT_TRUE(lists);
+        const std::vector<std::uint32_t> recordOf = recordsOfNodes(scene, *lists);
+        const double margin = 2.0 * gpu::DEPTH_ORDER_UNITS * unitRoundoff(width) + 0x1p-22;
+        const auto depthOrdered = [&](const std::vector<std::uint32_t>& nodes) {
+            double before = -std::numeric_limits<double>::infinity();
+            double beforeSize = 0;
+            for (const std::uint32_t node : nodes) {
+                const Sphere& sphere = std::get<Sphere>(scene.nodes.at(node).geometry);
+                const double distance = glm::distance(sphere.center, scene.camera.position);
+                const double depth = distance - sphere.radius;
+                if (depth < before - margin * (beforeSize + distance + sphere.radius)) {
+                    return false;
+                }
+                before = depth;
+                beforeSize = distance + sphere.radius;
+            }
+            return true;
+        };
+        expectListsAfterThePlanes(scene, *lists, [&](std::uint32_t grid, const std::vector<std::uint32_t>& nodes) {
+            if (grid == gpu::CAMERA_GRID) {
+                return depthOrdered(nodes) && lists->grids[grid].reach.y == 1.0f;  // and the shader is told so
+            }
+            return inRecordOrder(recordOf, nodes) && lists->grids[grid].reach.y == 0.0f;
+        });
+    }
+}
+
+// A textbook kernel's tests err too much for a depth to bound them: its lists keep record order.
+TEST(CandidateLists, ListThePlanesFirstThenTextbookListsInRecordOrder) {
+    const Scene scene = testScene(500);
+    const auto lists =
+        buildCandidateLists(scene, placementFor(scene, Formulation::Textbook), FloatWidth::F32, Formulation::Textbook);
+    ASSERT_TRUE(lists);
+    const std::vector<std::uint32_t> recordOf = recordsOfNodes(scene, *lists);
+    expectListsAfterThePlanes(scene, *lists, [&](std::uint32_t grid, const std::vector<std::uint32_t>& nodes) {
+        return inRecordOrder(recordOf, nodes) && lists->grids[grid].reach.y == 0.0f;
+    });
 }
 
 // `scene` with `count` lights spread over a square above its spheres.
@@ -216,6 +285,7 @@ TEST(CandidateLists, ALightWhoseListsDoNotFitItsShareTakesTheListOfEverySphere) 
         }
         const gpu::GpuCandidateGrid& face = lists->grids.at(1 + gpu::CUBE_FACES * light);
         EXPECT_EQ(face.reach.x, 0.0f);  // every ray is past its reach, and takes the same list
+        EXPECT_EQ(face.reach.y, 0.0f);  // in record order
         EXPECT_EQ(face.cells.w, face.cells.z);
     }
 }
