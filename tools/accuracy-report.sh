@@ -108,7 +108,8 @@ HARD
 ## Exact oracle: both renderers on generated hard rays
 
 Each of 605 generated hard rays (\`tests/oracle/hard_rays.cpp\`) is a one-pixel scene, traced by the
-shader (f32, f64; **gpu auto** = the one \`auto\` picks for that ray's scene) and explained by the CPU
+shader (f32, f64; **gpu auto** = the one \`auto\` picks for that ray's scene; **data-driven** = the
+kernel of scenes past a generated kernel's capacity, with candidate lists) and explained by the CPU
 reference, and judged against the exact oracle (MPFR, \`tests/oracle/\`) on the direction that
 renderer followed, at its own precision ([Exact oracle](#exact-oracle)). **decisions** = well-conditioned
 decisions right / judged (which node, checker parity, each light's status; at least 64 units of

@@ -1,6 +1,7 @@
 // Both renderers against the exact oracle (tests/oracle/) on the generated hard rays: each ray is
 // a one-pixel scene, traced by the shader (GpuRenderer::tracePixel, in f32, f64 and f32-certified,
-// whose decisions are judged as f64's; auto takes the one it picks) and explained by the CPU reference (explainPixel), and each answer is checked
+// whose decisions are judged as f64's; auto takes the one it picks; and the data-driven kernel in f32
+// and f64) and explained by the CPU reference (explainPixel), and each answer is checked
 // against the oracle's for the direction that renderer really followed, at its own precision's
 // unit roundoff (ray_check.h states the criteria and bounds). Prints the table that
 // docs/accuracy.md shows, and records it as test properties (tools/accuracy-report.sh reads them).
@@ -134,7 +135,20 @@ void recordRow(int row, const std::string& family, const std::string& renderer, 
     record("max_value_units", t.maxValueUnits);
 }
 
-const char* const kColumns[] = {"cpu reference (f64)", "gpu f32", "gpu f64", "gpu f32-certified", "gpu auto"};
+const char* const kColumns[] = {"cpu reference (f64)", "gpu f32",  "gpu f64",
+                                "gpu f32-certified",   "gpu auto", "gpu f32 data-driven",
+                                "gpu f64 data-driven"};
+
+// The data-driven kernel, with candidate lists where the scene has spheres, as a scene past a
+// generated kernel's capacity gets: its own forms of the tests (the fast ones where its plan
+// allows them for every sphere) and its lists' depth order.
+GpuPixelTrace traceDataDriven(GpuRenderer& renderer, const Scene& scene, Precision precision) {
+    PlanRequest request;
+    request.precision = precision;
+    request.acceleration = Acceleration::Always;
+    request.generatedKernel = false;
+    return renderer.tracePixel(scene, renderer.plan(scene, request), 0, 0, 0);
+}
 
 using OracleSuiteTest = test::ValidatedVulkanTest;
 
@@ -158,6 +172,10 @@ TEST_F(OracleSuiteTest, EveryWellConditionedAnswerIsRightOnBothRenderers) {
         Tally picked = renderer.resolve(ray.scene, Precision::Auto) == Precision::F32 ? f32 : f64;
         picked.failures.clear();  // already reported in their own column
         row[kColumns[4]].add(picked);
+        row[kColumns[5]].add(judgeRay(ray, fromGpu(traceDataDriven(renderer, ray.scene, Precision::F32)),
+                                      kFloat32Roundoff, "gpu f32 data-driven"));
+        row[kColumns[6]].add(judgeRay(ray, fromGpu(traceDataDriven(renderer, ray.scene, Precision::F64)),
+                                      kFloat64Roundoff, "gpu f64 data-driven"));
     }
 
     std::uint64_t rays = 0;
