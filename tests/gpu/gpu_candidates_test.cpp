@@ -109,6 +109,34 @@ Scene insideScene() {
     return scene;
 }
 
+// Pairs of spheres whose near points coincide on a pixel's ray: one centred on the ray, and a
+// larger one centred further along it, through the first one's near point; the first ones take
+// the lower node indices. The two hits tie to within rounding, and each sphere's depth (the camera
+// lists' depth order) equals the other's hit distance: a list that stopped at the second of the
+// pair without the depth margin (shader_interface.h's DEPTH_ORDER_UNITS) loses the pixels where
+// that one's own test wins the tie (10 pixels in f32 and 6 in f64 with a margin of 0).
+Scene tiedPairsScene() {
+    Scene scene = makeRandomSpheresScene(40, 31);
+    scene.image.width = 128;
+    scene.image.height = 72;
+    const PixelSheet sheet = makePixelSheet(scene.camera, sheetAspect(scene));
+    std::vector<Node> onTheRay;
+    std::vector<Node> behind;
+    for (std::uint32_t y = 1; y < scene.image.height; y += 3) {
+        for (std::uint32_t x = 1; x < scene.image.width; x += 3) {
+            const glm::dvec3 direction = sampleDirection(sheet, scene.image, x, y, 0);
+            const double distance = 30.0 + 0.37 * x + 0.11 * y;
+            const double radius = 0.2 + 0.01 * (x % 7);
+            const glm::dvec3 nearPoint = sheet.origin + (distance - radius) * direction;
+            onTheRay.push_back(Node{Sphere{sheet.origin + distance * direction, radius}, 1});
+            behind.push_back(Node{Sphere{nearPoint + 1.5 * radius * direction, 1.5 * radius}, 2});
+        }
+    }
+    scene.nodes.insert(scene.nodes.begin() + 1, onTheRay.begin(), onTheRay.end());  // after the floor
+    scene.nodes.insert(scene.nodes.end(), behind.begin(), behind.end());
+    return scene;
+}
+
 // Spheres in front of a huge one that fills most of the view, and a huge one under the floor whose
 // top pokes through it.
 Scene hugeScene() {
@@ -202,6 +230,10 @@ TEST_P(GpuCandidatesTest, GiveTheSameImageAtTheEdgeCases) {
     {
         SCOPED_TRACE("many lights");
         expectSameAsEveryNode(renderer, manyLightsScene(), GetParam());
+    }
+    {
+        SCOPED_TRACE("spheres whose near points tie on a pixel's ray");
+        expectSameAsEveryNode(renderer, tiedPairsScene(), GetParam());
     }
 }
 
