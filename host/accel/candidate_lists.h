@@ -33,8 +33,9 @@ struct CandidateLists {
     gpu::GpuCandidateAxes cameraAxes{};
     std::vector<gpu::GpuCandidateGrid> grids;       // the camera's, then gpu::CUBE_FACES per light
     UninitializedVector<std::uint32_t> cellStarts;  // one per cell, and the end of the last list
-    // List after list: the planes' node indices (cell gpu::PLANE_CELL), then records, ascending in
-    // each list.
+    // List after list: the planes' node indices (cell gpu::PLANE_CELL), then records: in depth
+    // order from the eye in a robust kernel's camera lists (the grid's reach.y says so), ascending
+    // in every other list.
     UninitializedVector<std::uint32_t> entries;
     // Each record's sphere, as its node index: the spheres in Morton order (morton_order.h), so
     // that neighbouring rays read neighbouring records.
