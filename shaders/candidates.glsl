@@ -7,6 +7,7 @@
 #define HEXRAY_CANDIDATES_GLSL
 
 #include "precision.glsl"
+#include "scene_data.glsl"
 #include "shader_interface.h"
 #include "texels.glsl"
 
@@ -72,8 +73,9 @@ bool liesBeyond(real distanceSquared, real radius, real rayLength) {
     return distanceSquared * shrink > end * end * (1.0 + real(DEPTH_ORDER_SLACK));
 }
 
+// Cell PLANE_CELL: the first of the lists, which the frame counts (a load for the whole SIMD group).
 CandidateRange planeCandidates() {
-    return CandidateRange(cellStart(PLANE_CELL), cellStart(PLANE_CELL + 1u), false);
+    return CandidateRange(0u, frame.planeCount, false);
 }
 
 // The list of the cell of grid `grid` that holds `tangent`; empty outside the grid, where no

@@ -121,19 +121,22 @@ bool sphereBlocks(vec4r sphere, bool isHitsSphere, LightPath path, vec3r light, 
 #endif
 }
 
-bool isOccluded(uint light, LightPath path, Hit hit, HitNode node) {
-    vec4r lightAt = lightPosition(light);
+// Light `light`, at `lightAt` with `power` (scene_data.glsl's lightPosition and lightPower).
+bool isOccluded(uint light, vec4r lightAt, vec4r power, LightPath path, Hit hit, HitNode node) {
     vec3r position = lightAt.xyz;
     bool hitSeenFromOutside = node.eyePower > 0.0;  // planes: 0
     // A surface facing away from the light gets nothing from it, whatever lies between: no tests.
 #ifdef HEXRAY_TEXTBOOK
     bool blocked = !path.facing;
+    bool planesMayShadow = true;
 #else
     bool blocked = !path.facing || lightAt.w > 0.0;  // a sphere holding the eye hides it
+    bool planesMayShadow = !(power.w > 0.0);
 #endif
 #ifdef HEXRAY_CANDIDATES
     CandidateRange planes = planeCandidates();
-    for (uint k = planes.first; k < planes.end && !blocked; ++k) {
+    uint planesEnd = planesMayShadow ? planes.end : planes.first;
+    for (uint k = planes.first; k < planesEnd && !blocked; ++k) {
         blocked = planeBlocks(candidateEntry(k), path, position);
     }
     CandidateRange spheres = lightCandidates(light, vec3(-path.shadowRay.direction), float(path.shadowLength));
@@ -143,7 +146,7 @@ bool isOccluded(uint light, LightPath path, Hit hit, HitNode node) {
     }
 #else
     for (uint i = 0u; i < frame.nodeCount && !blocked; ++i) {
-        blocked = isPlaneNode(i) ? planeBlocks(i, path, position)
+        blocked = isPlaneNode(i) ? planesMayShadow && planeBlocks(i, path, position)
                                  : sphereBlocks(nodeGeometry(i), i == hit.node, path, position, hitSeenFromOutside);
     }
 #endif
@@ -187,8 +190,10 @@ vec3 shadeLights(Ray ray, Hit hit, uint firstLight, uint endLight, inout vec3 ir
     }
     traceSurface(s, albedo);
     for (uint i = firstLight; i < endLight; ++i) {
-        LightPath path = lightPath(s, lightPosition(i).xyz);
-        irradiance += lightTerm(i, lightPower(i), path, isOccluded(i, path, hit, node), flags);
+        vec4r lightAt = lightPosition(i);
+        vec4r power = lightPower(i);
+        LightPath path = lightPath(s, lightAt.xyz);
+        irradiance += lightTerm(i, power, path, isOccluded(i, lightAt, power, path, hit, node), flags);
     }
     return litColor(albedo, irradiance);
 }

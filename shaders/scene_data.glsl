@@ -23,6 +23,7 @@ layout(std140, set = 0, binding = FRAME_BINDING) uniform FrameBlock {
     float samplingOffset;
     uint nodeCount;
     uint lightCount;
+    uint planeCount;
 } frame;
 
 struct Node {

@@ -9,6 +9,7 @@
 
 #include "camera/camera.h"
 #include "precision/precision.h"
+#include "scene/scene_contents.h"
 #include "util/parallel_parts.h"
 
 namespace hexray::inline gpu {
@@ -128,6 +129,7 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
     frame.samplingOffset = float(samplingOffset(scene.image.sampling));
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
+    frame.planeCount = std::uint32_t(scene.nodes.size() - countSpheres(scene));
 
     packed.lookIndex = LookIndex(scene);
     for (std::size_t l = 0; l < packed.lookIndex.size(); ++l) {
@@ -143,8 +145,9 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
     packed.lights.reserve(scene.lights.size());
     for (const PointLight& light : scene.lights) {
         const double hidden = isLightHiddenFromView(scene, light) ? 1.0 : 0.0;
+        const double planesClear = planesMayShadow(scene, light) ? 0.0 : 1.0;
         packed.lights.push_back({toReal4<Real>(placement.position(light.position), hidden),
-                                 toReal4<Real>(light.color * (light.intensity * powerScale))});
+                                 toReal4<Real>(light.color * (light.intensity * powerScale), planesClear)});
     }
     return packed;
 }

@@ -92,11 +92,9 @@ std::vector<glm::dvec3> lightPositions(const Scene& scene) {
     return positions;
 }
 
-// The shadow tests a light needs. A plane blocks a segment only when its ends lie strictly on
-// opposite sides; every point the camera sees lies on the eye's side of a plane or on it (a camera
-// ray stops at the plane), so a plane with the eye and the light strictly on one side never blocks
-// that light; a sphere that holds the eye and not the light blocks it from every visible point, and
-// no other test is needed. The textbook formulation tests every node, as a course would.
+// The shadow tests a light needs: no plane that cannot shadow it (planeMayShadow); a sphere that
+// holds the eye and not the light blocks it from every visible point, and no other test is needed.
+// The textbook formulation tests every node, as a course would.
 std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& light, Formulation formulation) {
     std::vector<ShadowTest> tests;
     if (formulation == Formulation::Robust) {
@@ -104,13 +102,9 @@ std::vector<ShadowTest> shadowTestsFor(const Scene& scene, const PointLight& lig
             return {ShadowTest{.node = *hiding, .hidesLight = true}};
         }
     }
-    const double eyeY = scene.camera.position.y;
     for (std::uint32_t i = 0; i < scene.nodes.size(); ++i) {
         if (const auto* plane = std::get_if<Plane>(&scene.nodes[i].geometry)) {
-            const double eyeSide = eyeY - plane->height;
-            const double lightSide = light.position.y - plane->height;
-            const bool sameSide = (eyeSide > 0 && lightSide > 0) || (eyeSide < 0 && lightSide < 0);
-            if (!sameSide || formulation == Formulation::Textbook) {
+            if (formulation == Formulation::Textbook || planeMayShadow(*plane, scene.camera.position, light.position)) {
                 tests.push_back({i, SphereTest::Robust});
             }
         } else {
@@ -272,6 +266,19 @@ Precision resolvePrecision(const Scene& scene, Precision requested, const Device
 
 bool sphereHidesLight(const Sphere& sphere, const glm::dvec3& eye, const glm::dvec3& light) {
     return glm::length(sphere.center - eye) < sphere.radius && glm::length(light - sphere.center) > sphere.radius;
+}
+
+bool planeMayShadow(const Plane& plane, const glm::dvec3& eye, const glm::dvec3& light) {
+    const double eyeSide = eye.y - plane.height;
+    const double lightSide = light.y - plane.height;
+    return !((eyeSide > 0 && lightSide > 0) || (eyeSide < 0 && lightSide < 0));
+}
+
+bool planesMayShadow(const Scene& scene, const PointLight& light) {
+    return std::ranges::any_of(scene.nodes, [&](const Node& node) {
+        const auto* plane = std::get_if<Plane>(&node.geometry);
+        return plane && planeMayShadow(*plane, scene.camera.position, light.position);
+    });
 }
 
 bool isLightHiddenFromView(const Scene& scene, const PointLight& light) {

@@ -112,6 +112,14 @@ Placement placementFor(const Scene& scene, Formulation formulation);
 // The power of two the camera-relative placement divides lengths by.
 double placementScale(const Scene& scene);
 
+// Whether `plane` may shadow a point the camera sees from `light`. A plane blocks a segment only
+// when its ends lie strictly on opposite sides, and every point the camera sees lies on the eye's
+// side of a plane or on it (a camera ray stops at the plane): so not when the eye and the light lie
+// strictly on one side.
+bool planeMayShadow(const Plane& plane, const glm::dvec3& eye, const glm::dvec3& light);
+// Whether any plane of `scene` may (planeMayShadow).
+bool planesMayShadow(const Scene& scene, const PointLight& light);
+
 // Whether `sphere` holds the eye strictly inside and `light` strictly outside. Every point the
 // camera sees then lies in the closed ball, so the sphere blocks the light from each of them that
 // faces it (the others are unlit anyway): the light needs no shadow test, which from the light

@@ -38,6 +38,8 @@ struct GpuFrame {
     float samplingOffset;  // 0.5: pixel centres; 0: the course's pixel corners
     std::uint32_t nodeCount;
     std::uint32_t lightCount;
+    // Of the nodes: a candidate kernel's planes are the first entries of its lists (candidates.glsl).
+    std::uint32_t planeCount;
 };
 
 // A node: its geometry and the index of its look. The looks follow the nodes in the node buffer.
@@ -67,7 +69,8 @@ template <typename Real>
 struct GpuLight {
     RealVec4<Real> position;  // .xyz; .w 1 when a sphere hides it from every visible point (isLightHiddenFromView)
     // .rgb = colour * intensity / scale^2: in the kernel's arithmetic, as the squared distances it
-    // is divided by, since in f64 it can lie far outside float's range.
+    // is divided by, since in f64 it can lie far outside float's range. .w 1 when no plane may
+    // shadow a point the camera sees from it (render_plan.h's planesMayShadow).
     RealVec4<Real> power;
 };
 

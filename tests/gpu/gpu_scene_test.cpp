@@ -41,7 +41,7 @@ TEST(PackScene, PositionsAreRelativeToTheEyeAndScaledByAPowerOfTwo) {
     EXPECT_EQ(packed.nodes[1].geometry, glm::vec4(-11, 0, 120, 30) / 64.0f);
     EXPECT_EQ(packed.lights[0].position, glm::vec4(29, 40, 50, 0) / 64.0f);
     // 1/r^2 falloff in units 64 times larger: the power is 64^2 times smaller.
-    EXPECT_EQ(packed.lights[0].power, glm::vec4(5000, 10000, 10000, 0) / (64.0f * 64.0f));
+    EXPECT_EQ(glm::vec3(packed.lights[0].power), glm::vec3(5000, 10000, 10000) / (64.0f * 64.0f));
     EXPECT_EQ(packed.frame.nodeCount, 2u);
     EXPECT_EQ(packed.frame.lightCount, 1u);
 }
@@ -92,6 +92,17 @@ TEST(PackScene, ALightASphereHidesFromEveryVisiblePointIsMarked) {
     EXPECT_EQ(packRelative(checkerPlaneAndBall({0, 60, -120})).lights[0].position.w, 0.0f);
     // From inside the ball every point seen lies in it, and the light is outside it.
     EXPECT_EQ(packRelative(checkerPlaneAndBall({-10, 60, 0})).lights[0].position.w, 1.0f);
+}
+
+TEST(PackScene, ALightNoPlaneMayShadowIsMarkedAndTheFrameCountsThePlanes) {
+    // The floor lies at 15: the eye and the light above it, then the eye below it.
+    EXPECT_EQ(packRelative(checkerPlaneAndBall({0, 60, -120})).lights[0].power.w, 1.0f);
+    EXPECT_EQ(packRelative(checkerPlaneAndBall({0, 10, -120})).lights[0].power.w, 0.0f);
+    Scene onThePlane = checkerPlaneAndBall({0, 60, -120});
+    onThePlane.lights[0].position.y = 15.0;
+    EXPECT_EQ(packRelative(onThePlane).lights[0].power.w, 0.0f);
+    EXPECT_EQ(packRelative(onThePlane).frame.planeCount, 1u);
+    EXPECT_EQ(packRelative(onThePlane).frame.nodeCount, 2u);
 }
 
 TEST(PackScene, PlaneCheckerCarriesTheEyesCellFractionAndParity) {

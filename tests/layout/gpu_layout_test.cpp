@@ -47,16 +47,27 @@ std::vector<Member> sceneMembers(const std::string& nodes, const std::string& lo
         return Member{looks + "[0]." + name, looksStart + offset};
     };
     return {
-        MEMBER("FrameBlock.", Frame, origin),           MEMBER("FrameBlock.", Frame, sheetTopLeft),
-        MEMBER("FrameBlock.", Frame, sheetRight),       MEMBER("FrameBlock.", Frame, sheetDown),
-        MEMBER("FrameBlock.", Frame, background),       MEMBER("FrameBlock.", Frame, ambient),
-        MEMBER("FrameBlock.", Frame, imageSize),        MEMBER("FrameBlock.", Frame, samplingOffset),
-        MEMBER("FrameBlock.", Frame, nodeCount),        MEMBER("FrameBlock.", Frame, lightCount),
-        MEMBER(nodes + "[0].", Node, geometry),         MEMBER(nodes + "[0].", Node, eyePower),
-        MEMBER(nodes + "[0].", Node, geometryKind),     MEMBER(nodes + "[0].", Node, look),
-        lookMember("checker", offsetof(Look, checker)), lookMember("color1", offsetof(Look, color1)),
-        lookMember("color2", offsetof(Look, color2)),   lookMember("shaderKind", offsetof(Look, shaderKind)),
-        MEMBER(lights + "[0].", Light, position),       MEMBER(lights + "[0].", Light, power),
+        MEMBER("FrameBlock.", Frame, origin),
+        MEMBER("FrameBlock.", Frame, sheetTopLeft),
+        MEMBER("FrameBlock.", Frame, sheetRight),
+        MEMBER("FrameBlock.", Frame, sheetDown),
+        MEMBER("FrameBlock.", Frame, background),
+        MEMBER("FrameBlock.", Frame, ambient),
+        MEMBER("FrameBlock.", Frame, imageSize),
+        MEMBER("FrameBlock.", Frame, samplingOffset),
+        MEMBER("FrameBlock.", Frame, nodeCount),
+        MEMBER("FrameBlock.", Frame, lightCount),
+        MEMBER("FrameBlock.", Frame, planeCount),
+        MEMBER(nodes + "[0].", Node, geometry),
+        MEMBER(nodes + "[0].", Node, eyePower),
+        MEMBER(nodes + "[0].", Node, geometryKind),
+        MEMBER(nodes + "[0].", Node, look),
+        lookMember("checker", offsetof(Look, checker)),
+        lookMember("color1", offsetof(Look, color1)),
+        lookMember("color2", offsetof(Look, color2)),
+        lookMember("shaderKind", offsetof(Look, shaderKind)),
+        MEMBER(lights + "[0].", Light, position),
+        MEMBER(lights + "[0].", Light, power),
     };
 }
 
