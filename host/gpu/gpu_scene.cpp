@@ -185,12 +185,23 @@ template <typename Real>
 void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
                               std::span<const std::uint32_t> sphereNodes, const LookIndex& looks, std::byte* out) {
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
+    // The records lie in space's order, the nodes in the file's: each node is read in turn and its
+    // record written where it goes, since scattered writes wait on nothing and scattered reads do.
+    std::vector<std::uint32_t> recordOf(scene.nodes.size(), 0);
     runAcrossCores(sphereNodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t record = first; record < end; ++record) {
-            const std::uint32_t i = sphereNodes[record];
-            const GpuNode<Real> packed = packNode<Real>(scene.nodes[i], placement, eye, looks.of(scene.nodes[i]));
-            const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, i, packed.look};
-            std::memcpy(out + record * sizeof sphere, &sphere, sizeof sphere);
+            recordOf[sphereNodes[record]] = std::uint32_t(record);
+        }
+    });
+    runAcrossCores(scene.nodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const Node& node = scene.nodes[i];
+            if (!std::holds_alternative<Sphere>(node.geometry)) {
+                continue;
+            }
+            const GpuNode<Real> packed = packNode<Real>(node, placement, eye, looks.of(node));
+            const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, std::uint32_t(i), packed.look};
+            std::memcpy(out + recordOf[i] * sizeof sphere, &sphere, sizeof sphere);
         }
     });
 }
