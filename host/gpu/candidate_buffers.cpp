@@ -1,10 +1,12 @@
 #include "gpu/candidate_buffers.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
 #include "util/parallel_parts.h"
+#include "util/uninitialized_vector.h"
 
 namespace hexray::inline gpu {
 namespace {
@@ -56,16 +58,30 @@ TexelBuffer CandidateBuffers::texelBuffer(const vk::raii::Device& device,
     return texels;
 }
 
+TexelBuffer CandidateBuffers::listBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                                         std::span<const std::byte> list, vk::DeviceSize importAlignment) {
+    // UninitializedVector's storage spans whole pages: enough for an alignment up to a page.
+    const bool importable = importAlignment != 0 && list.size() >= importAlignment &&
+                            reinterpret_cast<std::uintptr_t>(list.data()) % importAlignment == 0 &&
+                            importAlignment <= DefaultInitAllocator<std::byte>::kPageBytes;
+    if (importable) {
+        return TexelBuffer(device, physicalDevice, list, importAlignment, vk::Format::eR32Uint);
+    }
+    return texelBuffer(device, physicalDevice, {list}, vk::Format::eR32Uint);
+}
+
 CandidateBuffers::CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
-                                   const CandidateLists* lists, const BufferContents& sphereRecords)
-    : buffers_{texelBuffer(device, physicalDevice,
-                           {lists ? std::as_bytes(std::span(&lists->cameraAxes, 1)) : std::span<const std::byte>(),
-                            lists ? bytesOf(lists->grids) : std::span<const std::byte>()},
+                                   std::shared_ptr<const CandidateLists> lists, const BufferContents& sphereRecords,
+                                   vk::DeviceSize importAlignment)
+    : lists_(std::move(lists)),
+      buffers_{texelBuffer(device, physicalDevice,
+                           {lists_ ? std::as_bytes(std::span(&lists_->cameraAxes, 1)) : std::span<const std::byte>(),
+                            lists_ ? bytesOf(lists_->grids) : std::span<const std::byte>()},
                            vk::Format::eR32G32B32A32Uint),
-               texelBuffer(device, physicalDevice, {lists ? bytesOf(lists->cellStarts) : std::span<const std::byte>()},
-                           vk::Format::eR32Uint),
-               texelBuffer(device, physicalDevice, {lists ? bytesOf(lists->entries) : std::span<const std::byte>()},
-                           vk::Format::eR32Uint),
+               listBuffer(device, physicalDevice, lists_ ? bytesOf(lists_->cellStarts) : std::span<const std::byte>(),
+                          importAlignment),
+               listBuffer(device, physicalDevice, lists_ ? bytesOf(lists_->entries) : std::span<const std::byte>(),
+                          importAlignment),
                texelBuffer(device, physicalDevice, sphereRecords, vk::Format::eR32G32B32A32Uint)} {}
 
 void CandidateBuffers::write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const {
@@ -74,10 +90,18 @@ void CandidateBuffers::write(const vk::raii::Device& device, const vk::raii::Des
     }
 }
 
+std::span<const std::byte> CandidateBuffers::contents(std::uint32_t binding) const {
+    const auto at = std::find(kBindings.begin(), kBindings.end(), binding) - kBindings.begin();
+    const HostVisibleBuffer& buffer = buffers_.at(std::size_t(at)).buffer();
+    return {buffer.data(), buffer.size()};
+}
+
 void CandidateBuffers::abandon() {
     for (TexelBuffer& texels : buffers_) {
         texels.abandon();
     }
+    // A hung device may still read what its buffers imported: the lists are never freed.
+    static_cast<void>(new std::shared_ptr<const CandidateLists>(lists_));
 }
 
 }  // namespace hexray::gpu

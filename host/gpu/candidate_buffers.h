@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <span>
 
 #include <vulkan/vulkan_raii.hpp>
@@ -23,10 +24,16 @@ public:
     static bool isCandidateBinding(std::uint32_t binding);
 
     // Uploads `lists` (may be null) and the spheres' records (gpu_scene.h's packCandidateSpheresInto).
+    // With an `importAlignment` (VulkanContext's DeviceInfo::hostImportAlignment) the cell starts
+    // and the entries are not copied: the buffers import them, and hold the lists while they live.
     CandidateBuffers(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
-                     const CandidateLists* lists, const BufferContents& sphereRecords);
+                     std::shared_ptr<const CandidateLists> lists, const BufferContents& sphereRecords,
+                     vk::DeviceSize importAlignment = 0);
 
     void write(const vk::raii::Device& device, const vk::raii::DescriptorSet& set) const;
+
+    // What the buffer bound at `binding` (one of kBindings) holds, where the host sees it.
+    std::span<const std::byte> contents(std::uint32_t binding) const;
 
     // See HostVisibleBuffer::abandon.
     void abandon();
@@ -39,7 +46,12 @@ private:
     static TexelBuffer texelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                                    const BufferContents& contents, vk::Format format);
 
-    std::array<TexelBuffer, 4> buffers_;  // in kBindings' order
+    // A list of words: imported where it can be, else copied.
+    static TexelBuffer listBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                                  std::span<const std::byte> list, vk::DeviceSize importAlignment);
+
+    std::shared_ptr<const CandidateLists> lists_;  // declared first: outlives the buffers that import it
+    std::array<TexelBuffer, 4> buffers_;           // in kBindings' order
 };
 
 }  // namespace hexray::gpu

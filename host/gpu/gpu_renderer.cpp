@@ -749,7 +749,8 @@ BandBuffers makeBandBuffers(const VulkanContext& context, const vk::raii::Comman
         output(shape.batched, sizeof(gpu::GpuPixelCarry)),
         HostVisibleBuffer(device, physicalDevice, packed.bufferedValues().size(), storage),
         holdingScene(scene, plan, [&] {
-            return CandidateBuffers(device, physicalDevice, plan.candidates.get(), packed.candidateSpheres);
+            return CandidateBuffers(device, physicalDevice, plan.candidates, packed.candidateSpheres,
+                                    context.selected().hostImportAlignment);
         })};
     packed.candidateSpheres.release();
     buffers.trace.upload(traceRequest);

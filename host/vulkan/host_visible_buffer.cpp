@@ -32,6 +32,12 @@ std::uint32_t hostMemoryType(const vk::raii::PhysicalDevice& physicalDevice, std
     return *found;
 }
 
+std::string amountOf(vk::DeviceSize size) {
+    const bool large = size >= (1u << 20);
+    return large ? std::to_string((size + (1u << 20) - 1) >> 20) + " MiB"
+                 : std::to_string((size + 1023) >> 10) + " KiB";
+}
+
 }  // namespace
 
 HostVisibleBuffer::HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
@@ -49,10 +55,35 @@ HostVisibleBuffer::HostVisibleBuffer(const vk::raii::Device& device, const vk::r
         buffer_.bindMemory(*memory_, 0);
         mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, size_));
     } catch (const vk::SystemError& error) {
-        const bool large = size_ >= (1u << 20);
-        const std::string amount = large ? std::to_string((size_ + (1u << 20) - 1) >> 20) + " MiB"
-                                         : std::to_string((size_ + 1023) >> 10) + " KiB";
-        throw classify(error, "allocating a " + amount + " buffer");
+        throw classify(error, "allocating a " + amountOf(size_) + " buffer");
+    }
+}
+
+HostVisibleBuffer::HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                                     std::span<const std::byte> bytes, vk::DeviceSize alignment,
+                                     vk::BufferUsageFlags usage)
+    : size_(bytes.size()), memory_(nullptr), buffer_(nullptr) {
+    constexpr auto kHost = vk::ExternalMemoryHandleTypeFlagBits::eHostAllocationEXT;
+    void* host = const_cast<std::byte*>(bytes.data());  // the device only reads it
+    try {
+        const vk::ExternalMemoryBufferCreateInfo external(kHost);
+        buffer_ = vk::raii::Buffer(device,
+                                   vk::BufferCreateInfo({}, size_, usage, vk::SharingMode::eExclusive, {}, &external));
+        const vk::MemoryRequirements requirements = buffer_.getMemoryRequirements();
+        const std::uint32_t types = device.getMemoryHostPointerPropertiesEXT(kHost, host).memoryTypeBits;
+        const vk::ImportMemoryHostPointerInfoEXT import(kHost, host);
+        const vk::DeviceSize whole = (size_ + alignment - 1) / alignment * alignment;
+        if (requirements.size > whole) {
+            throw VulkanError(VulkanFailure::Unavailable, "the Vulkan device needs more memory for a buffer of " +
+                                                              amountOf(size_) + " than the host memory it imports");
+        }
+        const vk::MemoryAllocateInfo allocation(
+            whole, hostMemoryType(physicalDevice, requirements.memoryTypeBits & types), &import);
+        memory_ = vk::raii::DeviceMemory(device, allocation);
+        buffer_.bindMemory(*memory_, 0);
+        mapped_ = static_cast<std::byte*>(host);
+    } catch (const vk::SystemError& error) {
+        throw classify(error, "importing a " + amountOf(size_) + " buffer");
     }
 }
 

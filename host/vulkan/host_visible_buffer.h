@@ -18,6 +18,13 @@ public:
     HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
                       vk::DeviceSize size, vk::BufferUsageFlags usage);
 
+    // A buffer over `bytes`, the host's own memory, imported (VK_EXT_external_memory_host, enabled
+    // on `device`): no copy. `bytes` must start at a multiple of `alignment` and the memory go on
+    // to the next multiple past its end; the caller keeps it alive and unchanged while the device
+    // may read it.
+    HostVisibleBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                      std::span<const std::byte> bytes, vk::DeviceSize alignment, vk::BufferUsageFlags usage);
+
     const vk::raii::Buffer& buffer() const { return buffer_; }
     vk::DeviceSize size() const { return size_; }
     std::byte* data() const { return mapped_; }

@@ -7,6 +7,11 @@ TexelBuffer::TexelBuffer(const vk::raii::Device& device, const vk::raii::Physica
     : buffer_(device, physicalDevice, size, vk::BufferUsageFlagBits::eUniformTexelBuffer | alsoUsedAs),
       view_(device, vk::BufferViewCreateInfo({}, *buffer_.buffer(), format, 0, VK_WHOLE_SIZE)) {}
 
+TexelBuffer::TexelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                         std::span<const std::byte> bytes, vk::DeviceSize alignment, vk::Format format)
+    : buffer_(device, physicalDevice, bytes, alignment, vk::BufferUsageFlagBits::eUniformTexelBuffer),
+      view_(device, vk::BufferViewCreateInfo({}, *buffer_.buffer(), format, 0, VK_WHOLE_SIZE)) {}
+
 void TexelBuffer::bind(const vk::raii::Device& device, const vk::raii::DescriptorSet& set, std::uint32_t binding,
                        vk::DescriptorType type) const {
     if (type == vk::DescriptorType::eUniformTexelBuffer) {

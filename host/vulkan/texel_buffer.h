@@ -14,6 +14,9 @@ class TexelBuffer {
 public:
     TexelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice, vk::DeviceSize size,
                 vk::Format format, vk::BufferUsageFlags alsoUsedAs = {});
+    // Over the host's own memory, imported: see HostVisibleBuffer's importing constructor.
+    TexelBuffer(const vk::raii::Device& device, const vk::raii::PhysicalDevice& physicalDevice,
+                std::span<const std::byte> bytes, vk::DeviceSize alignment, vk::Format format);
 
     HostVisibleBuffer& buffer() { return buffer_; }
     const HostVisibleBuffer& buffer() const { return buffer_; }

@@ -124,6 +124,16 @@ DeviceInfo describe(const vk::raii::PhysicalDevice& device, std::uint32_t index)
     info.hasComputeQueue = computeQueueFamily(device).has_value();
     info.hasFloat64 = device.getFeatures().shaderFloat64 == VK_TRUE && !injected(InjectedFault::NoFloat64);
     info.maxTexelBufferElements = device.getProperties().limits.maxTexelBufferElements;
+    const auto extensions = device.enumerateDeviceExtensionProperties();
+    const bool importsHostMemory = std::ranges::any_of(extensions, [](const vk::ExtensionProperties& extension) {
+        return std::string_view(extension.extensionName.data()) == VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME;
+    });
+    if (importsHostMemory && info.type == vk::PhysicalDeviceType::eCpu) {
+        const auto chain =
+            device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceExternalMemoryHostPropertiesEXT>();
+        info.hostImportAlignment =
+            chain.get<vk::PhysicalDeviceExternalMemoryHostPropertiesEXT>().minImportedHostPointerAlignment;
+    }
     return info;
 }
 
@@ -237,8 +247,12 @@ VulkanContext::VulkanContext(const Options& options)
     // float64 only if the device has it; the f64 shader variant checks before it is used.
     vk::PhysicalDeviceFeatures features;
     features.shaderFloat64 = selected_.hasFloat64 ? VK_TRUE : VK_FALSE;
+    std::vector<const char*> extensions;
+    if (selected_.hostImportAlignment != 0) {
+        extensions.push_back(VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME);
+    }
     try {
-        device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo, {}, {}, &features));
+        device_ = vk::raii::Device(physicalDevice_, vk::DeviceCreateInfo({}, queueInfo, {}, extensions, &features));
     } catch (const vk::SystemError& error) {
         throw classify(error, "creating a Vulkan device on " + selected_.name);
     }

@@ -52,6 +52,10 @@ struct DeviceInfo {
     bool hasComputeQueue = false;
     bool hasFloat64 = false;
     std::uint32_t maxTexelBufferElements = 0;
+    // Where a buffer may take the host's own memory (VK_EXT_external_memory_host), how its start
+    // and size must be aligned; 0 where it may not: only a CPU device, whose memory is the host's,
+    // reads imported memory as fast as its own (a GPU would read it across the bus).
+    std::uint64_t hostImportAlignment = 0;
 };
 
 // Counts the validation layer's warnings and errors (each is also printed to stderr). Owned by
