@@ -31,8 +31,8 @@ public:
     T* allocate(std::size_t count) {
         return static_cast<T*>(::operator new (pagesFor(count), std::align_val_t{kPageBytes}));
     }
-    void deallocate(T* storage, std::size_t count) noexcept {
-        ::operator delete (storage, pagesFor(count), std::align_val_t{kPageBytes});
+    void deallocate(T* storage, std::size_t /*count*/) noexcept {
+        ::operator delete (storage, std::align_val_t{kPageBytes});
     }
 
     // resize(n) and the like construct with no arguments: default-initialization (none, for T trivial).
