@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <mutex>
 #include <vector>
 
 #include "util/parallel_parts.h"
@@ -100,8 +101,14 @@ void CandidateBuffers::abandon() {
     for (TexelBuffer& texels : buffers_) {
         texels.abandon();
     }
-    // A hung device may still read what its buffers imported: the lists are never freed.
-    static_cast<void>(new std::shared_ptr<const CandidateLists>(lists_));
+    // A hung device may still read what its buffers imported: the lists are never freed (held
+    // from a static, so a leak checker sees them reachable).
+    if (lists_) {
+        static std::mutex mutex;
+        static auto* const kept = new std::vector<std::shared_ptr<const CandidateLists>>;
+        const std::lock_guard lock(mutex);
+        kept->push_back(lists_);
+    }
 }
 
 }  // namespace hexray::gpu

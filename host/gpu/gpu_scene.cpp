@@ -187,7 +187,8 @@ void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
     // The records lie in space's order, the nodes in the file's: each node is read in turn and its
     // record written where it goes, since scattered writes wait on nothing and scattered reads do.
-    std::vector<std::uint32_t> recordOf(scene.nodes.size(), 0);
+    constexpr std::uint32_t kNoRecord = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> recordOf(scene.nodes.size(), kNoRecord);
     runAcrossCores(sphereNodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t record = first; record < end; ++record) {
             recordOf[sphereNodes[record]] = std::uint32_t(record);
@@ -196,8 +197,8 @@ void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
     runAcrossCores(scene.nodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             const Node& node = scene.nodes[i];
-            if (!std::holds_alternative<Sphere>(node.geometry)) {
-                continue;
+            if (recordOf[i] == kNoRecord) {
+                continue;  // a plane
             }
             const GpuNode<Real> packed = packNode<Real>(node, placement, eye, looks.of(node));
             const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, std::uint32_t(i), packed.look};
