@@ -163,7 +163,8 @@ double sphereCheckerMargin(const glm::dvec3& outwardNormal, double size, double 
 
 // Whether the surface faces the light, the sign of cos = n . (L - p) / |L - p|: |cos| over the
 // roundoff of n (0 for a plane, whose normal is exact; hitPointScale / r for a sphere) plus that
-// of the direction to the light ((hitPointScale + |L - eye|) / |L - p|).
+// of the direction to the light ((hitPointScale + |L - eye|) / |L - p|). The same form tells which
+// side of a sphere faces the camera ray (cos = n . d, the ray's direction erring by about a unit).
 double facingMargin(double cosTheta, double normalRoundoff, double directionRoundoff);
 
 // Not a decision but the colour a lit light gives: its term I cos / r^2 carries roundoff of r^2 and

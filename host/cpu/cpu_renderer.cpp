@@ -285,9 +285,15 @@ void addShadingMargins(const RenderContext& context, const DecisionBounds& bound
                          bounds.general;
         decisions.add(margin, kCheckerPart);
     }
+    // Which side of a sphere faces the ray is decided from the normal too (surface.glsl's facing):
+    // near a grazing hit it is within the normal's rounding, and turning it turns every light's
+    // cos theta. The camera ray's direction errs by about a unit of roundoff.
+    const double rayFacingMargin =
+        sphere ? facingMargin(glm::dot(hit.geometricNormal, ray.direction), normalRoundoff, 1.0) : kInfinity;
     for (std::size_t index = 0; index < scene.lights.size(); ++index) {
         const PointLight& light = scene.lights[index];
         MarginAccumulator margins;
+        margins.add(rayFacingMargin);
         const glm::dvec3 toLight = light.position - hit.point;
         const double distance = glm::length(toLight);
         if (distance == 0.0) {
