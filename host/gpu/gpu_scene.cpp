@@ -9,7 +9,6 @@
 
 #include "camera/camera.h"
 #include "precision/precision.h"
-#include "scene/scene_contents.h"
 #include "util/parallel_parts.h"
 
 namespace hexray::inline gpu {
@@ -129,7 +128,14 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
     frame.samplingOffset = float(samplingOffset(scene.image.sampling));
     frame.nodeCount = std::uint32_t(scene.nodes.size());
     frame.lightCount = std::uint32_t(scene.lights.size());
-    frame.planeCount = std::uint32_t(scene.nodes.size() - countSpheres(scene));
+    // The planes, gathered in one pass: the frame counts them, and each light asks whether one may shadow it.
+    std::vector<Plane> planes;
+    for (const Node& node : scene.nodes) {
+        if (const auto* plane = std::get_if<Plane>(&node.geometry)) {
+            planes.push_back(*plane);
+        }
+    }
+    frame.planeCount = std::uint32_t(planes.size());
 
     packed.lookIndex = LookIndex(scene);
     for (std::size_t l = 0; l < packed.lookIndex.size(); ++l) {
@@ -145,7 +151,9 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
     packed.lights.reserve(scene.lights.size());
     for (const PointLight& light : scene.lights) {
         const double hidden = isLightHiddenFromView(scene, light) ? 1.0 : 0.0;
-        const double planesClear = planesMayShadow(scene, light) ? 0.0 : 1.0;
+        const bool planeMayShadowIt = std::ranges::any_of(
+            planes, [&](const Plane& plane) { return planeMayShadow(plane, scene.camera.position, light.position); });
+        const double planesClear = planeMayShadowIt ? 0.0 : 1.0;
         packed.lights.push_back({toReal4<Real>(placement.position(light.position), hidden),
                                  toReal4<Real>(light.color * (light.intensity * powerScale), planesClear)});
     }

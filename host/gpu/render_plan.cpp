@@ -274,13 +274,6 @@ bool planeMayShadow(const Plane& plane, const glm::dvec3& eye, const glm::dvec3&
     return !((eyeSide > 0 && lightSide > 0) || (eyeSide < 0 && lightSide < 0));
 }
 
-bool planesMayShadow(const Scene& scene, const PointLight& light) {
-    return std::ranges::any_of(scene.nodes, [&](const Node& node) {
-        const auto* plane = std::get_if<Plane>(&node.geometry);
-        return plane && planeMayShadow(*plane, scene.camera.position, light.position);
-    });
-}
-
 bool isLightHiddenFromView(const Scene& scene, const PointLight& light) {
     return sphereHidingLight(scene, light).has_value();
 }

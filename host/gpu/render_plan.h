@@ -117,8 +117,6 @@ double placementScale(const Scene& scene);
 // side of a plane or on it (a camera ray stops at the plane): so not when the eye and the light lie
 // strictly on one side.
 bool planeMayShadow(const Plane& plane, const glm::dvec3& eye, const glm::dvec3& light);
-// Whether any plane of `scene` may (planeMayShadow).
-bool planesMayShadow(const Scene& scene, const PointLight& light);
 
 // Whether `sphere` holds the eye strictly inside and `light` strictly outside. Every point the
 // camera sees then lies in the closed ball, so the sphere blocks the light from each of them that

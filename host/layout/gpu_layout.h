@@ -70,7 +70,7 @@ struct GpuLight {
     RealVec4<Real> position;  // .xyz; .w 1 when a sphere hides it from every visible point (isLightHiddenFromView)
     // .rgb = colour * intensity / scale^2: in the kernel's arithmetic, as the squared distances it
     // is divided by, since in f64 it can lie far outside float's range. .w 1 when no plane may
-    // shadow a point the camera sees from it (render_plan.h's planesMayShadow).
+    // shadow a point the camera sees from it (render_plan.h's planeMayShadow).
     RealVec4<Real> power;
 };
 
