@@ -1,6 +1,7 @@
 #include "accel/candidate_grid.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "accel/candidate_tunables.h"
@@ -30,18 +31,27 @@ void forEachCell(const CandidateGrid& grid, std::span<const Footprint> footprint
     }
 }
 
-// Lists hold a few spheres each: an insertion sort, stable, so ties keep their order.
-void sortListByDepth(std::span<std::uint32_t> spheres, std::span<float> depths) {
-    for (std::size_t i = 1; i < spheres.size(); ++i) {
-        const std::uint32_t sphere = spheres[i];
-        const float depth = depths[i];
+// A footprint's place in a list in depth order: its depth's bits, ordered as the floats are (a
+// negative float's bits reversed), above its sphere, which breaks ties. -0 counts as +0.
+std::uint64_t depthKey(const Footprint& f) {
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(f.depth + 0.0f);
+    const std::uint32_t ordered = bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+    return std::uint64_t(ordered) << 32 | f.sphere;
+}
+
+// Lists hold a few spheres each: an insertion sort of those, a full sort of longer ones.
+void sortKeys(std::span<std::uint64_t> keys) {
+    if (keys.size() > kInsertionSortLength) {
+        std::sort(keys.begin(), keys.end());
+        return;
+    }
+    for (std::size_t i = 1; i < keys.size(); ++i) {
+        const std::uint64_t key = keys[i];
         std::size_t j = i;
-        for (; j > 0 && depths[j - 1] > depth; --j) {
-            spheres[j] = spheres[j - 1];
-            depths[j] = depths[j - 1];
+        for (; j > 0 && keys[j - 1] > key; --j) {
+            keys[j] = keys[j - 1];
         }
-        spheres[j] = sphere;
-        depths[j] = depth;
+        keys[j] = key;
     }
 }
 
@@ -111,15 +121,16 @@ std::size_t CellBinner::bin(const CandidateGrid& grid, std::span<const std::span
             next += count;
         }
     }
-    // Each footprint's depth goes beside its entries (at their place less firstEntry), to sort by.
-    depths_.resize(byDepth ? next - firstEntry : 0);
+    // By depth, each footprint's key goes where its entry will (less firstEntry), to sort by.
+    keys_.resize(byDepth ? next - firstEntry : 0);
     runParts(unsigned(parts.size()), [&](unsigned part) {
         std::vector<std::uint32_t>& cursors = counts_[part];
         forEachCell(grid, parts[part], [&](std::size_t cell, const Footprint& f) {
             const std::uint32_t entry = cursors[cell]++;
-            entries_[entry] = f.sphere;
             if (byDepth) {
-                depths_[entry - firstEntry] = f.depth;
+                keys_[entry - firstEntry] = depthKey(f);
+            } else {
+                entries_[entry] = f.sphere;
             }
         });
     });
@@ -136,8 +147,11 @@ void CellBinner::sortByDepth(const CandidateGrid& grid, std::size_t firstEntry, 
         for (std::size_t cell = partBegin(cells, threads, part); cell < partBegin(cells, threads, part + 1); ++cell) {
             const std::size_t first = cellStarts_[grid.firstCell + cell];
             const std::size_t end = cell + 1 < cells ? cellStarts_[grid.firstCell + cell + 1] : endEntry;
-            sortListByDepth(std::span(entries_.data() + first, end - first),
-                            std::span(depths_.data() + (first - firstEntry), end - first));
+            const std::span keys(keys_.data() + (first - firstEntry), end - first);
+            sortKeys(keys);
+            for (std::size_t k = 0; k < keys.size(); ++k) {
+                entries_[first + k] = std::uint32_t(keys[k]);
+            }
         }
     });
 }

@@ -59,18 +59,18 @@ public:
 
     // Bins `parts` (one span of footprints per thread) into `grid`'s cells, from entry
     // `firstEntry` on; returns the entry after the last. `byDepth`: each list then goes in order of
-    // its footprints' depths, ties in the footprints' order.
+    // its footprints' depths, ties by sphere (the footprints' order where they come by sphere).
     std::size_t bin(const CandidateGrid& grid, std::span<const std::span<const Footprint>> parts,
                     std::size_t firstEntry, bool byDepth = false);
 
 private:
-    // Each of `grid`'s lists, from entry `firstEntry` to `endEntry`, in order of `depths_`, on
+    // Each of `grid`'s lists, from entry `firstEntry` to `endEntry`, in order of `keys_`, on
     // `threads` threads.
     void sortByDepth(const CandidateGrid& grid, std::size_t firstEntry, std::size_t endEntry, unsigned threads);
 
     UninitializedVector<std::uint32_t>& cellStarts_;
     UninitializedVector<std::uint32_t>& entries_;
-    UninitializedVector<float> depths_;               // beside the grid's entries, while binning by depth
+    UninitializedVector<std::uint64_t> keys_;         // beside the grid's entries, while binning by depth
     std::vector<std::vector<std::uint32_t>> counts_;  // per part: counts, then write cursors
 };
 

@@ -65,5 +65,8 @@ inline constexpr double kFootprintSlack = 1e-12;
 
 // --- Speed: a large scene's spheres are placed on every core, in parts of at least this many.
 inline constexpr std::size_t kSpheresPerPlacingPart = std::size_t{1} << 16;
+// A list in depth order is sorted by insertion up to this length (most hold a few spheres), and
+// by std::sort past it (a list of thousands, as a view along a row of spheres may have).
+inline constexpr std::size_t kInsertionSortLength = 32;
 
 }  // namespace hexray::accel::candidates

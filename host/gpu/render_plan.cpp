@@ -15,6 +15,7 @@
 #include "gpu/certainty_bound.h"
 #include "gpu/plan_refused.h"
 #include "gpu/tile_classes.h"
+#include "util/parallel_parts.h"
 #include "scene/scene_contents.h"
 #include "shader_interface.h"
 
@@ -39,6 +40,8 @@ constexpr double kFastMaxShadowOutside = 32.0;
 // The data-driven kernel takes the fast tests for the whole scene when every (origin, sphere) pair
 // would; past this many pairs it is not checked, and the robust tests serve.
 constexpr std::size_t kFastTestChecks = std::size_t{1} << 24;
+// Below this many nodes a walk over them is quicker on one thread than started on several.
+constexpr std::size_t kNodesPerThread = std::size_t{1} << 16;
 // Culling: at most this many tile classes, each a kernel that glslang and the driver compile
 // (cached on disk by both). Auto culls only renders of at least kCullingMinSamples samples: on
 // lavapipe a class kernel's compile costs about as much as culling saves on 5 to 50 million samples
@@ -69,27 +72,46 @@ SphereTest sphereTestFor(const Sphere& sphere, const glm::dvec3& origin, Formula
     return outside || distance <= kFastMaxInside * r ? SphereTest::Fast : SphereTest::Robust;
 }
 
-// Whether every sphere takes the fast test from each of `origins` (the eye, or the lights); no for
-// more than kFastTestChecks pairs, which would take longer to check than the robust tests cost.
-bool everySphereFastFrom(const Scene& scene, const std::vector<glm::dvec3>& origins, Formulation formulation) {
-    if (double(scene.nodes.size()) * double(origins.size()) > double(kFastTestChecks)) {
-        return false;
-    }
-    return std::ranges::all_of(scene.nodes, [&](const Node& node) {
-        const auto* sphere = std::get_if<Sphere>(&node.geometry);
-        return !sphere || std::ranges::all_of(origins, [&](const glm::dvec3& origin) {
-            return sphereTestFor(*sphere, origin, formulation, std::numeric_limits<double>::infinity()) ==
-                   SphereTest::Fast;
-        });
-    });
-}
-
 std::vector<glm::dvec3> lightPositions(const Scene& scene) {
     std::vector<glm::dvec3> positions;
     for (const PointLight& light : scene.lights) {
         positions.push_back(light.position);
     }
     return positions;
+}
+
+// Whether every sphere takes the fast test from the eye, and from every light (a walk over the
+// nodes across cores); no for more than kFastTestChecks pairs of a sphere and one of those
+// origins, which would take longer to check than the robust tests cost.
+struct FastTests {
+    bool camera = true;
+    bool shadow = true;
+};
+
+FastTests everySphereFast(const Scene& scene, Formulation formulation) {
+    const std::vector<glm::dvec3> lights = lightPositions(scene);
+    const auto fastFrom = [&](const Sphere& sphere, const glm::dvec3& origin) {
+        return sphereTestFor(sphere, origin, formulation, std::numeric_limits<double>::infinity()) == SphereTest::Fast;
+    };
+    const double nodes = double(scene.nodes.size());
+    const FastTests checked{nodes <= double(kFastTestChecks), nodes * double(lights.size()) <= double(kFastTestChecks)};
+    if (!checked.camera && !checked.shadow) {
+        return {false, false};
+    }
+    return reduceAcrossCores(
+        scene.nodes.size(), kNodesPerThread, checked,
+        [&](FastTests& part, std::size_t i) {
+            if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry)) {
+                part.camera = part.camera && fastFrom(*sphere, scene.camera.position);
+                part.shadow = part.shadow && std::ranges::all_of(lights, [&](const glm::dvec3& light) {
+                                  return fastFrom(*sphere, light);
+                              });
+            }
+        },
+        [](FastTests& total, const FastTests& part) {
+            total.camera = total.camera && part.camera;
+            total.shadow = total.shadow && part.shadow;
+        });
 }
 
 // The shadow tests a light needs: no plane that cannot shadow it (planeMayShadow); a sphere that
@@ -342,8 +364,9 @@ RenderPlan planRender(const Scene& scene, const PlanRequest& request, const Devi
         const bool candidates = plan.layout == SceneLayout::TexelsCandidates;
         plan.kernel = Kernel{dataDrivenKernelName(plan.width, plan.formulation, candidates), nullptr,
                              dataDrivenKernel(plan.width, plan.formulation, candidates)};
-        plan.fastCameraTests = everySphereFastFrom(scene, {scene.camera.position}, plan.formulation);
-        plan.fastShadowTests = everySphereFastFrom(scene, lightPositions(scene), plan.formulation);
+        const FastTests fast = everySphereFast(scene, plan.formulation);
+        plan.fastCameraTests = fast.camera;
+        plan.fastShadowTests = fast.shadow;
     }
     planLoops(scene, request, device, plan);
     if (plan.precision == Precision::F32Certified) {

@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "util/parallel_parts.h"
+
 namespace hexray::inline precision {
 namespace {
 
@@ -39,63 +41,88 @@ std::optional<Precision> parsePrecision(std::string_view name) {
     return std::nullopt;
 }
 
-Conditioning estimateConditioning(const Scene& scene) {
-    const glm::dvec3 eye = scene.camera.position;
-    Conditioning conditioning;
-    double smallest = std::numeric_limits<double>::infinity();
-    for (const Node& node : scene.nodes) {
-        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
-            const double centerDistance = glm::length(sphere->center - eye);
-            conditioning.largestDistance = std::max(conditioning.largestDistance, centerDistance + sphere->radius);
-            smallest = std::min(smallest, sphere->radius);
-            // The eye's clearance from the surface: near a large sphere the hit points along
-            // the horizon come from differences of numbers as large as the radius.
-            const double clearance = std::abs(centerDistance - sphere->radius);
-            if (clearance > 0) {
-                smallest = std::min(smallest, clearance);
-            }
-        } else {
-            // A plane reaches the horizon, but what the shader must resolve there is already
-            // smaller than a pixel: its height above the eye is the distance that matters.
-            conditioning.largestDistance =
-                std::max(conditioning.largestDistance, std::abs(std::get<Plane>(node.geometry).height - eye.y));
-            if (const auto* checker = std::get_if<CheckerShader>(&scene.shaders[node.shaderIndex])) {
-                smallest = std::min(smallest, checker->size);
-            }
+namespace {
+
+// Below this many nodes a walk is quicker on one thread than started on several.
+constexpr std::size_t kNodesPerThread = std::size_t{1} << 16;
+
+void addLength(MagnitudeRange& range, double length) {
+    if (length > 0) {
+        range.smallest = std::min(range.smallest, length);
+        range.largest = std::max(range.largest, length);
+    }
+}
+
+void addNode(MagnitudeRange& range, const Scene& scene, const Node& node, const glm::dvec3& eye) {
+    if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+        const double centerDistance = glm::length(sphere->center - eye);
+        addLength(range, sphere->radius);
+        addLength(range, std::abs(centerDistance - sphere->radius));
+        addLength(range, centerDistance + sphere->radius);
+    } else {
+        addLength(range, std::abs(std::get<Plane>(node.geometry).height - eye.y));
+        if (const auto* checker = std::get_if<CheckerShader>(&scene.shaders[node.shaderIndex])) {
+            addLength(range, checker->size);
         }
     }
+}
+
+void addNode(Conditioning& conditioning, const Scene& scene, const Node& node, const glm::dvec3& eye) {
+    if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
+        const double centerDistance = glm::length(sphere->center - eye);
+        conditioning.largestDistance = std::max(conditioning.largestDistance, centerDistance + sphere->radius);
+        conditioning.smallestFeature = std::min(conditioning.smallestFeature, sphere->radius);
+        // The eye's clearance from the surface: near a large sphere the hit points along
+        // the horizon come from differences of numbers as large as the radius.
+        const double clearance = std::abs(centerDistance - sphere->radius);
+        if (clearance > 0) {
+            conditioning.smallestFeature = std::min(conditioning.smallestFeature, clearance);
+        }
+    } else {
+        // A plane reaches the horizon, but what the shader must resolve there is already
+        // smaller than a pixel: its height above the eye is the distance that matters.
+        conditioning.largestDistance =
+            std::max(conditioning.largestDistance, std::abs(std::get<Plane>(node.geometry).height - eye.y));
+        if (const auto* checker = std::get_if<CheckerShader>(&scene.shaders[node.shaderIndex])) {
+            conditioning.smallestFeature = std::min(conditioning.smallestFeature, checker->size);
+        }
+    }
+}
+
+}  // namespace
+
+Conditioning estimateConditioning(const Scene& scene) {
+    const glm::dvec3 eye = scene.camera.position;
+    const Conditioning none{0.0, std::numeric_limits<double>::infinity()};
+    Conditioning conditioning = reduceAcrossCores(
+        scene.nodes.size(), kNodesPerThread, none,
+        [&](Conditioning& part, std::size_t i) { addNode(part, scene, scene.nodes[i], eye); },
+        [](Conditioning& total, const Conditioning& part) {
+            total.largestDistance = std::max(total.largestDistance, part.largestDistance);
+            total.smallestFeature = std::min(total.smallestFeature, part.smallestFeature);
+        });
     for (const PointLight& light : scene.lights) {
         conditioning.largestDistance = std::max(conditioning.largestDistance, glm::length(light.position - eye));
     }
-    conditioning.smallestFeature = std::isfinite(smallest) ? smallest : 0.0;
+    if (!std::isfinite(conditioning.smallestFeature)) {
+        conditioning.smallestFeature = 0.0;
+    }
     return conditioning;
 }
 
 MagnitudeRange sceneMagnitudes(const Scene& scene) {
     const glm::dvec3 eye = scene.camera.position;
-    MagnitudeRange range{std::numeric_limits<double>::infinity(), 0.0};
-    const auto add = [&range](double length) {
-        if (length > 0) {
-            range.smallest = std::min(range.smallest, length);
-            range.largest = std::max(range.largest, length);
-        }
-    };
-    for (const Node& node : scene.nodes) {
-        if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
-            const double centerDistance = glm::length(sphere->center - eye);
-            add(sphere->radius);
-            add(std::abs(centerDistance - sphere->radius));
-            add(centerDistance + sphere->radius);
-        } else {
-            add(std::abs(std::get<Plane>(node.geometry).height - eye.y));
-            if (const auto* checker = std::get_if<CheckerShader>(&scene.shaders[node.shaderIndex])) {
-                add(checker->size);
-            }
-        }
-    }
+    const MagnitudeRange none{std::numeric_limits<double>::infinity(), 0.0};
+    MagnitudeRange range = reduceAcrossCores(
+        scene.nodes.size(), kNodesPerThread, none,
+        [&](MagnitudeRange& part, std::size_t i) { addNode(part, scene, scene.nodes[i], eye); },
+        [](MagnitudeRange& total, const MagnitudeRange& part) {
+            total.smallest = std::min(total.smallest, part.smallest);
+            total.largest = std::max(total.largest, part.largest);
+        });
     for (const PointLight& light : scene.lights) {
-        add(glm::length(light.position - eye));
-        add(std::sqrt(light.intensity * std::max({light.color.r, light.color.g, light.color.b})));
+        addLength(range, glm::length(light.position - eye));
+        addLength(range, std::sqrt(light.intensity * std::max({light.color.r, light.color.g, light.color.b})));
     }
     return range.largest > 0 ? range : MagnitudeRange{};
 }

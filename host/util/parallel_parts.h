@@ -67,13 +67,38 @@ inline unsigned threadsFor(unsigned requested) {
     return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
-// Runs work(first, end) over [0, count) split into equal parts, one per thread (threadsFor), each
-// of at least `leastPerPart` items (for a little work, starting a thread costs more than it saves).
+// How many parts runAcrossCores splits `count` items into: one per thread (threadsFor), each of at
+// least `leastPerPart` items (for a little work, starting a thread costs more than it saves).
+inline unsigned partsAcrossCores(std::size_t count, std::size_t leastPerPart, unsigned threads = 0) {
+    return unsigned(std::clamp<std::size_t>(count / std::max<std::size_t>(leastPerPart, 1), 1, threadsFor(threads)));
+}
+
+// Runs work(first, end) over [0, count) split into equal parts (partsAcrossCores).
 inline void runAcrossCores(std::size_t count, std::size_t leastPerPart,
                            const std::function<void(std::size_t, std::size_t)>& work, unsigned threads = 0) {
-    const unsigned parts =
-        unsigned(std::clamp<std::size_t>(count / std::max<std::size_t>(leastPerPart, 1), 1, threadsFor(threads)));
+    const unsigned parts = partsAcrossCores(count, leastPerPart, threads);
     runParts(parts, [&](unsigned part) { work(partBegin(count, parts, part), partBegin(count, parts, part + 1)); });
+}
+
+// Folds [0, count) into a T across cores as runAcrossCores splits it: each part folds its items
+// into a copy of `init` (fold(T&, i)), then the parts' results are merged in order
+// (merge(T&, const T&)). For results that do not depend on the grouping (a minimum, a count).
+template <typename T, typename Fold, typename Merge>
+T reduceAcrossCores(std::size_t count, std::size_t leastPerPart, const T& init, const Fold& fold, const Merge& merge) {
+    const unsigned parts = partsAcrossCores(count, leastPerPart);
+    std::vector<T> results(parts, init);
+    runParts(parts, [&](unsigned part) {
+        T result = init;  // not in `results` while folding: parts' results share cache lines
+        for (std::size_t i = partBegin(count, parts, part); i < partBegin(count, parts, part + 1); ++i) {
+            fold(result, i);
+        }
+        results[part] = result;
+    });
+    T total = init;
+    for (const T& result : results) {
+        merge(total, result);
+    }
+    return total;
 }
 
 }  // namespace hexray::util
