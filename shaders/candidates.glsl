@@ -18,8 +18,9 @@ layout(set = 0, binding = CANDIDATE_GRID_BINDING) uniform usamplerBuffer candida
 // Cell c lists entries cellStarts[c] to cellStarts[c + 1].
 layout(set = 0, binding = CANDIDATE_CELL_BINDING) uniform usamplerBuffer cellStarts;
 layout(set = 0, binding = CANDIDATE_ENTRY_BINDING) uniform usamplerBuffer candidateEntries;
-// One record per sphere (GpuCandidateSphere), in the lists' order (CandidateLists::sphereNodes):
-// centre and radius, the eye's power, the node index, its look.
+// One record per sphere, in the lists' order (CandidateLists::sphereNodes), in two arrays (see
+// gpu_layout.h's GpuCandidateSphereNode): every record's centre and radius, then every record's eye
+// power, node index and look.
 layout(set = 0, binding = CANDIDATE_SPHERE_BINDING) uniform usamplerBuffer candidateSpheres;
 
 struct CandidateRange {
@@ -36,13 +37,9 @@ uint candidateEntry(uint k) {
     return texelFetch(candidateEntries, int(k)).x;
 }
 
-int candidateSphereTexel(uint index) {
-    return (REAL_VEC4_TEXELS + 1) * int(index);
-}
-
 // A record's centre and radius: all a shadow ray reads.
 vec4r candidateSphereGeometry(uint index) {
-    return realVec4At(candidateSpheres, candidateSphereTexel(index));
+    return realVec4At(candidateSpheres, REAL_VEC4_TEXELS * int(index));
 }
 
 // The rest of a record: what a camera ray reads of a sphere it may hit.
@@ -53,7 +50,8 @@ struct CandidateSphereNode {
 };
 
 CandidateSphereNode candidateSphereNode(uint index) {
-    uvec4 texel = texelFetch(candidateSpheres, candidateSphereTexel(index) + REAL_VEC4_TEXELS);
+    uint records = frame.nodeCount - frame.planeCount;  // every sphere has one
+    uvec4 texel = texelFetch(candidateSpheres, REAL_VEC4_TEXELS * int(records) + int(index));
 #ifdef HEXRAY_F64
     return CandidateSphereNode(packDouble2x32(texel.xy), texel.z, texel.w);
 #else

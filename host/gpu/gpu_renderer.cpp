@@ -157,7 +157,7 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
     if (const CandidateLists* lists = plan.candidates.get()) {
         auto looks = std::make_shared<const gpu::LookIndex>(packed.lookIndex);
         bytes.candidateSpheres = {
-            lists->sphereNodes.size() * sizeof(gpu::GpuCandidateSphere<Real>), [&scene, &plan, looks](std::byte* out) {
+            lists->sphereNodes.size() * gpu::kCandidateSphereBytes<Real>, [&scene, &plan, looks](std::byte* out) {
                 gpu::packCandidateSpheresInto<Real>(scene, plan.placement, plan.candidates->sphereNodes, *looks, out);
             }};
     }
@@ -214,8 +214,10 @@ std::uint64_t gpuSceneBytes(const Scene& scene, const RenderPlan& plan) {
                           scene.lights.size() * (f64 ? sizeof(gpu::GpuLight<double>) : sizeof(gpu::GpuLight<float>));
     if (const CandidateLists* lists = plan.candidates.get()) {
         bytes += lists->sphereNodes.size() *
-                     (f64 ? sizeof(gpu::GpuCandidateSphere<double>) : sizeof(gpu::GpuCandidateSphere<float>)) +
-                 (lists->cellStarts.size() + lists->entries.size()) * sizeof(std::uint32_t) + lists->gridByteCount();
+                     (f64 ? gpu::kCandidateSphereBytes<double>
+                          : gpu::kCandidateSphereBytes<float>)+(lists->cellStarts.size() + lists->entries.size()) *
+                     sizeof(std::uint32_t) +
+                 lists->gridByteCount();
     }
     return bytes;
 }

@@ -196,6 +196,8 @@ void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
     // The records lie in space's order, the nodes in the file's: each node is read in turn and its
     // record written where it goes, since scattered writes wait on nothing and scattered reads do.
     constexpr std::uint32_t kNoRecord = std::numeric_limits<std::uint32_t>::max();
+    std::byte* const geometry = out;
+    std::byte* const nodes = out + sphereNodes.size() * sizeof(RealVec4<Real>);
     std::vector<std::uint32_t> recordOf(scene.nodes.size(), kNoRecord);
     runAcrossCores(sphereNodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t record = first; record < end; ++record) {
@@ -209,8 +211,9 @@ void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
                 continue;  // a plane
             }
             const GpuNode<Real> packed = packNode<Real>(node, placement, eye, looks.of(node));
-            const GpuCandidateSphere<Real> sphere{packed.geometry, packed.eyePower, std::uint32_t(i), packed.look};
-            std::memcpy(out + recordOf[i] * sizeof sphere, &sphere, sizeof sphere);
+            const GpuCandidateSphereNode<Real> record{packed.eyePower, std::uint32_t(i), packed.look};
+            std::memcpy(geometry + recordOf[i] * sizeof packed.geometry, &packed.geometry, sizeof packed.geometry);
+            std::memcpy(nodes + recordOf[i] * sizeof record, &record, sizeof record);
         }
     });
 }

@@ -59,8 +59,8 @@ GpuScene<Real> packScene(const Scene& scene, const Placement& placement, NodePac
 template <typename Real>
 void packNodesInto(const Scene& scene, const Placement& placement, const LookIndex& looks, std::byte* out);
 
-// The candidate lists' sphere records: the packed sphere nodes `sphereNodes`, in that order, with
-// their looks, to `out`.
+// The candidate lists' sphere records (gpu_layout.h's kCandidateSphereBytes each): the packed
+// sphere nodes `sphereNodes`, in that order, with their looks, to `out`.
 template <typename Real>
 void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
                               std::span<const std::uint32_t> sphereNodes, const LookIndex& looks, std::byte* out);

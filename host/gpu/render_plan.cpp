@@ -183,7 +183,7 @@ bool wantsCandidates(const Scene& scene, const PlanRequest& request) {
 // Whether the device holds each of the lists' texel buffers (candidate_buffers.h).
 bool fitsDevice(const CandidateLists& lists, FloatWidth width, const DeviceAbilities& device) {
     const std::size_t record =
-        width == FloatWidth::F64 ? sizeof(gpu::GpuCandidateSphere<double>) : sizeof(gpu::GpuCandidateSphere<float>);
+        width == FloatWidth::F64 ? gpu::kCandidateSphereBytes<double> : gpu::kCandidateSphereBytes<float>;
     const std::size_t largest =
         std::max({lists.entries.size(), lists.cellStarts.size(), lists.sphereNodes.size() * record / kTexelBytes,
                   lists.gridByteCount() / kTexelBytes});

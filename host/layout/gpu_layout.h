@@ -89,15 +89,20 @@ struct GpuCandidateGrid {
     glm::vec4 reach;   // .x: the longest ray the lists hold (+inf: any); .y: 1 when they are in depth order
 };
 
-// One sphere of a candidate list, packed tight (texels have no alignment beyond their own size):
-// two texels in float (the last word unused), three in double.
+// The sphere records of the candidate lists, one per sphere, in two arrays one after the other in
+// one buffer: every record's geometry (a RealVec4: centre, radius, the node's), then every record's
+// GpuCandidateSphereNode. A shadow ray reads the geometry alone, which then fills its cache lines.
 template <typename Real>
-struct alignas(16) GpuCandidateSphere {
-    glm::vec<4, Real> sphere;  // centre, radius: the node's geometry
-    Real eyePower;             // the node's eyePower
+struct alignas(16) GpuCandidateSphereNode {
+    Real eyePower;  // the node's eyePower
     std::uint32_t node;
     std::uint32_t look;  // the node's look: shading reads the hit's record, not its node
 };
+
+// One record's bytes, both parts: texels have no alignment beyond their own size, so two texels in
+// float (the last word unused), three in double.
+template <typename Real>
+inline constexpr std::size_t kCandidateSphereBytes = sizeof(RealVec4<Real>) + sizeof(GpuCandidateSphereNode<Real>);
 
 // Which rows of the image one dispatch covers (large images render in bands) and, of each pixel,
 // which samples and, of each, which lights (the data-driven kernel's light batches,
@@ -177,14 +182,13 @@ static_assert(sizeof(GpuCandidateAxes) == 48);
 static_assert(offsetof(GpuCandidateGrid, cells) == 16);
 static_assert(offsetof(GpuCandidateGrid, reach) == 32);
 static_assert(sizeof(GpuCandidateGrid) == 48);
-static_assert(offsetof(GpuCandidateSphere<float>, eyePower) == 16);
-static_assert(offsetof(GpuCandidateSphere<float>, node) == 20);
-static_assert(offsetof(GpuCandidateSphere<float>, look) == 24);
-static_assert(sizeof(GpuCandidateSphere<float>) == 32);
-static_assert(offsetof(GpuCandidateSphere<double>, eyePower) == 32);
-static_assert(offsetof(GpuCandidateSphere<double>, node) == 40);
-static_assert(offsetof(GpuCandidateSphere<double>, look) == 44);
-static_assert(sizeof(GpuCandidateSphere<double>) == 48);
+static_assert(offsetof(GpuCandidateSphereNode<float>, node) == 4);
+static_assert(offsetof(GpuCandidateSphereNode<float>, look) == 8);
+static_assert(sizeof(GpuCandidateSphereNode<float>) == 16);
+static_assert(offsetof(GpuCandidateSphereNode<double>, node) == 8);
+static_assert(offsetof(GpuCandidateSphereNode<double>, look) == 12);
+static_assert(sizeof(GpuCandidateSphereNode<double>) == 16);
+static_assert(kCandidateSphereBytes<float> == 32 && kCandidateSphereBytes<double> == 48);
 
 // --- Inspection (shaders/inspect_hooks.glsl): `hexray render --aov` and `hexray pixel`.
 

@@ -2,6 +2,8 @@
 // phase.
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -150,15 +152,21 @@ TEST(PackScene, ALargeScenesNodesAndSphereRecordsEachLandInTheirOwnPlace) {
     for (std::size_t record = 0; record < spheres; ++record) {
         sphereNodes[record] = std::uint32_t(scene.nodes.size() - 1 - record);  // last node first
     }
-    std::vector<gpu::GpuCandidateSphere<float>> records(spheres);
-    gpu::packCandidateSpheresInto<float>(scene, placement, sphereNodes, gpu::LookIndex(scene),
-                                         reinterpret_cast<std::byte*>(records.data()));
+    // Every record's geometry, then every record's node part.
+    std::vector<std::byte> bytes(spheres * gpu::kCandidateSphereBytes<float>);
+    gpu::packCandidateSpheresInto<float>(scene, placement, sphereNodes, gpu::LookIndex(scene), bytes.data());
+    std::vector<gpu::RealVec4<float>> geometry(spheres);
+    std::vector<gpu::GpuCandidateSphereNode<float>> records(spheres);
+    std::memcpy(geometry.data(), bytes.data(), spheres * sizeof geometry[0]);
+    std::memcpy(records.data(), bytes.data() + spheres * sizeof geometry[0], spheres * sizeof records[0]);
     for (std::size_t i = 2; i < scene.nodes.size(); ++i) {
         ASSERT_EQ(nodes[i].geometry.x, float(i - 2)) << i;
         const std::size_t record = scene.nodes.size() - 1 - i;
         ASSERT_EQ(records[record].node, i) << record;
-        ASSERT_EQ(records[record].sphere.x, float(i - 2)) << record;
+        ASSERT_EQ(geometry[record].x, float(i - 2)) << record;
+        ASSERT_EQ(geometry[record].w, 0.5f) << record;
         ASSERT_EQ(records[record].look, nodes[i].look) << record;
+        ASSERT_EQ(records[record].eyePower, nodes[i].eyePower) << record;
     }
     EXPECT_NE(records[0].look, records[1].look);  // two shaders, two looks
 }
