@@ -39,9 +39,10 @@ layout(push_constant) uniform BandBlock {
 } band;
 
 // The pixel of the band this invocation renders: one workgroup per WORKGROUP_SIZE^2 tile, all the
-// band's tiles in a grid, or (a tile class's kernel, HEXRAY_TILE_LIST) the class's tiles, listed;
-// or (f32-certified's f64 pass, HEXRAY_PIXEL_LIST) the pixels listed, one per invocation, in rows
-// of the whole image (padding lies past its width), each written at its place in the list.
+// band's tiles in a grid (taken in strips, below), or (a tile class's kernel, HEXRAY_TILE_LIST)
+// the class's tiles, listed; or (f32-certified's f64 pass, HEXRAY_PIXEL_LIST) the pixels listed,
+// one per invocation, in rows of the whole image (padding lies past its width), each written at
+// its place in the list.
 #if defined(HEXRAY_PIXEL_LIST)
 layout(std430, set = 0, binding = TILE_BINDING) readonly buffer PixelListBlock {
     uvec2 listedPixels[];
@@ -63,8 +64,19 @@ uvec2 bandPixel() {
     return tiles[band.firstTile + gl_WorkGroupID.x] * WORKGROUP_SIZE + gl_LocalInvocationID.xy;
 }
 #else
+// Workgroups run in the order of their index, a row of the image after another; a pixel takes
+// them in strips STRIP_GROUPS groups tall, column by column, instead, so that the data the rays of
+// neighbouring rows read (their lists and spheres) is still cached when the next row reads it.
+const uint STRIP_GROUPS = 16u;
+
 uvec2 bandPixel() {
-    return gl_GlobalInvocationID.xy;
+    uint columns = gl_NumWorkGroups.x;
+    uint index = gl_WorkGroupID.y * columns + gl_WorkGroupID.x;
+    uint strip = index / (columns * STRIP_GROUPS);
+    uint stripRows = min(STRIP_GROUPS, gl_NumWorkGroups.y - strip * STRIP_GROUPS);  // the last may be short
+    uint inStrip = index - strip * columns * STRIP_GROUPS;
+    uvec2 group = uvec2(inStrip / stripRows, strip * STRIP_GROUPS + inStrip % stripRows);
+    return group * WORKGROUP_SIZE + gl_LocalInvocationID.xy;
 }
 #endif
 
