@@ -122,35 +122,35 @@ std::size_t CellBinner::bin(const CandidateGrid& grid, std::span<const std::span
         }
     }
     // By depth, each footprint's key goes where its entry will (less firstEntry), to sort by.
-    keys_.resize(byDepth ? next - firstEntry : 0);
+    UninitializedVector<std::uint64_t> keys(byDepth ? next - firstEntry : 0);
     runParts(unsigned(parts.size()), [&](unsigned part) {
         std::vector<std::uint32_t>& cursors = counts_[part];
         forEachCell(grid, parts[part], [&](std::size_t cell, const Footprint& f) {
             const std::uint32_t entry = cursors[cell]++;
             if (byDepth) {
-                keys_[entry - firstEntry] = depthKey(f);
+                keys[entry - firstEntry] = depthKey(f);
             } else {
                 entries_[entry] = f.sphere;
             }
         });
     });
     if (byDepth) {
-        sortByDepth(grid, firstEntry, next, unsigned(parts.size()));
+        sortByDepth(grid, keys, firstEntry, next, unsigned(parts.size()));
     }
     return next;
 }
 
-void CellBinner::sortByDepth(const CandidateGrid& grid, std::size_t firstEntry, std::size_t endEntry,
-                             unsigned threads) {
+void CellBinner::sortByDepth(const CandidateGrid& grid, std::span<std::uint64_t> keys, std::size_t firstEntry,
+                             std::size_t endEntry, unsigned threads) {
     const std::size_t cells = grid.cellCount();
     runParts(threads, [&](unsigned part) {
         for (std::size_t cell = partBegin(cells, threads, part); cell < partBegin(cells, threads, part + 1); ++cell) {
             const std::size_t first = cellStarts_[grid.firstCell + cell];
             const std::size_t end = cell + 1 < cells ? cellStarts_[grid.firstCell + cell + 1] : endEntry;
-            const std::span keys(keys_.data() + (first - firstEntry), end - first);
-            sortKeys(keys);
-            for (std::size_t k = 0; k < keys.size(); ++k) {
-                entries_[first + k] = std::uint32_t(keys[k]);
+            const std::span list = keys.subspan(first - firstEntry, end - first);
+            sortKeys(list);
+            for (std::size_t k = 0; k < list.size(); ++k) {
+                entries_[first + k] = std::uint32_t(list[k]);
             }
         }
     });

@@ -64,13 +64,13 @@ public:
                     std::size_t firstEntry, bool byDepth = false);
 
 private:
-    // Each of `grid`'s lists, from entry `firstEntry` to `endEntry`, in order of `keys_`, on
-    // `threads` threads.
-    void sortByDepth(const CandidateGrid& grid, std::size_t firstEntry, std::size_t endEntry, unsigned threads);
+    // Each of `grid`'s lists, from entry `firstEntry` to `endEntry`, in order of their `keys` (one per
+    // entry, from firstEntry on; candidate_grid.cpp's depthKey), on `threads` threads.
+    void sortByDepth(const CandidateGrid& grid, std::span<std::uint64_t> keys, std::size_t firstEntry,
+                     std::size_t endEntry, unsigned threads);
 
     UninitializedVector<std::uint32_t>& cellStarts_;
     UninitializedVector<std::uint32_t>& entries_;
-    UninitializedVector<std::uint64_t> keys_;         // beside the grid's entries, while binning by depth
     std::vector<std::vector<std::uint32_t>> counts_;  // per part: counts, then write cursors
 };
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "camera/camera.h"
@@ -155,6 +156,12 @@ PackedScene packBytes(const Scene& scene, const RenderPlan& plan) {
         gpu::packScene<Real>(scene, plan.placement, packedInBuffer ? NodePacking::Later : NodePacking::Now);
     PackedScene bytes;
     if (const CandidateLists* lists = plan.candidates.get()) {
+        // The kernel finds the records' second array past every sphere's geometry (candidates.glsl).
+        if (lists->sphereNodes.size() != packed.frame.nodeCount - packed.frame.planeCount) {
+            throw std::logic_error("candidate lists: " + std::to_string(lists->sphereNodes.size()) +
+                                   " sphere records for " +
+                                   std::to_string(packed.frame.nodeCount - packed.frame.planeCount) + " spheres");
+        }
         auto looks = std::make_shared<const gpu::LookIndex>(packed.lookIndex);
         bytes.candidateSpheres = {
             lists->sphereNodes.size() * gpu::kCandidateSphereBytes<Real>, [&scene, &plan, looks](std::byte* out) {

@@ -106,9 +106,6 @@ GpuLook<Real> packLook(const Shader& shader, bool sphere, const Placement& place
     return packed;
 }
 
-// Large scenes are packed on every core, in parts of at least this many nodes.
-constexpr std::size_t kNodesPerPackingPart = std::size_t{1} << 16;
-
 }  // namespace
 
 template <typename Real>
@@ -178,7 +175,7 @@ LookIndex::LookIndex(const Scene& scene) : lookOfSlot_(2 * scene.shaders.size(),
 template <typename Real>
 void packNodesInto(const Scene& scene, const Placement& placement, const LookIndex& looks, std::byte* out) {
     const glm::dvec3 eye = makePixelSheet(scene.camera, sheetAspect(scene)).origin;
-    runAcrossCores(scene.nodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
+    runAcrossCores(scene.nodes.size(), kNodesPerPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             const GpuNode<Real> packed = packNode<Real>(scene.nodes[i], placement, eye, looks.of(scene.nodes[i]));
             std::memcpy(out + i * sizeof packed, &packed, sizeof packed);
@@ -199,12 +196,12 @@ void packCandidateSpheresInto(const Scene& scene, const Placement& placement,
     std::byte* const geometry = out;
     std::byte* const nodes = out + sphereNodes.size() * sizeof(RealVec4<Real>);
     std::vector<std::uint32_t> recordOf(scene.nodes.size(), kNoRecord);
-    runAcrossCores(sphereNodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
+    runAcrossCores(sphereNodes.size(), kNodesPerPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t record = first; record < end; ++record) {
             recordOf[sphereNodes[record]] = std::uint32_t(record);
         }
     });
-    runAcrossCores(scene.nodes.size(), kNodesPerPackingPart, [&](std::size_t first, std::size_t end) {
+    runAcrossCores(scene.nodes.size(), kNodesPerPart, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             const Node& node = scene.nodes[i];
             if (recordOf[i] == kNoRecord) {

@@ -40,8 +40,6 @@ constexpr double kFastMaxShadowOutside = 32.0;
 // The data-driven kernel takes the fast tests for the whole scene when every (origin, sphere) pair
 // would; past this many pairs it is not checked, and the robust tests serve.
 constexpr std::size_t kFastTestChecks = std::size_t{1} << 24;
-// Below this many nodes a walk over them is quicker on one thread than started on several.
-constexpr std::size_t kNodesPerThread = std::size_t{1} << 16;
 // Culling: at most this many tile classes, each a kernel that glslang and the driver compile
 // (cached on disk by both). Auto culls only renders of at least kCullingMinSamples samples: on
 // lavapipe a class kernel's compile costs about as much as culling saves on 5 to 50 million samples
@@ -99,7 +97,7 @@ FastTests everySphereFast(const Scene& scene, Formulation formulation) {
         return {false, false};
     }
     return reduceAcrossCores(
-        scene.nodes.size(), kNodesPerThread, checked,
+        scene.nodes.size(), kNodesPerPart, checked,
         [&](FastTests& part, std::size_t i) {
             if (const auto* sphere = std::get_if<Sphere>(&scene.nodes[i].geometry)) {
                 part.camera = part.camera && fastFrom(*sphere, scene.camera.position);

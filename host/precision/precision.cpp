@@ -43,9 +43,6 @@ std::optional<Precision> parsePrecision(std::string_view name) {
 
 namespace {
 
-// Below this many nodes a walk is quicker on one thread than started on several.
-constexpr std::size_t kNodesPerThread = std::size_t{1} << 16;
-
 void addLength(MagnitudeRange& range, double length) {
     if (length > 0) {
         range.smallest = std::min(range.smallest, length);
@@ -95,7 +92,7 @@ Conditioning estimateConditioning(const Scene& scene) {
     const glm::dvec3 eye = scene.camera.position;
     const Conditioning none{0.0, std::numeric_limits<double>::infinity()};
     Conditioning conditioning = reduceAcrossCores(
-        scene.nodes.size(), kNodesPerThread, none,
+        scene.nodes.size(), kNodesPerPart, none,
         [&](Conditioning& part, std::size_t i) { addNode(part, scene, scene.nodes[i], eye); },
         [](Conditioning& total, const Conditioning& part) {
             total.largestDistance = std::max(total.largestDistance, part.largestDistance);
@@ -114,7 +111,7 @@ MagnitudeRange sceneMagnitudes(const Scene& scene) {
     const glm::dvec3 eye = scene.camera.position;
     const MagnitudeRange none{std::numeric_limits<double>::infinity(), 0.0};
     MagnitudeRange range = reduceAcrossCores(
-        scene.nodes.size(), kNodesPerThread, none,
+        scene.nodes.size(), kNodesPerPart, none,
         [&](MagnitudeRange& part, std::size_t i) { addNode(part, scene, scene.nodes[i], eye); },
         [](MagnitudeRange& total, const MagnitudeRange& part) {
             total.smallest = std::min(total.smallest, part.smallest);

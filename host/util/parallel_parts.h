@@ -67,6 +67,10 @@ inline unsigned threadsFor(unsigned requested) {
     return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
+// Walks over a scene's nodes (a few dozen operations a node) split across cores in parts of at
+// least this many: a smaller part costs less on one thread than starting one.
+inline constexpr std::size_t kNodesPerPart = std::size_t{1} << 16;
+
 // How many parts runAcrossCores splits `count` items into: one per thread (threadsFor), each of at
 // least `leastPerPart` items (for a little work, starting a thread costs more than it saves).
 inline unsigned partsAcrossCores(std::size_t count, std::size_t leastPerPart, unsigned threads = 0) {
