@@ -5,7 +5,8 @@
 // once with the buffered kernel, and the specialised one is built and rendered on a background
 // thread, its image (the same) written when it is ready and no newer edit superseded it: the way
 // a JIT tiers up. (The data-driven kernel needs no new pipeline at all, but renders a small scene
-// far slower on lavapipe.) Only the main thread writes files and prints.
+// about four times slower on lavapipe: as a first tier it would cost value edits more than it
+// saves structural ones, docs/performance.md.) Only the main thread writes files and prints.
 
 #include <algorithm>
 #include <chrono>
