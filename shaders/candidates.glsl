@@ -76,6 +76,14 @@ CandidateRange planeCandidates() {
     return CandidateRange(0u, frame.planeCount, false);
 }
 
+// Where cell (column, row) of a grid of `size` (columns, rows) cells lies among its cells: in
+// bands of rows (shader_interface.h's CELL_BAND_ROWS), column after column within a band.
+uint cellIndex(uvec2 size, uvec2 cell) {
+    uint bandStart = cell.y - cell.y % CELL_BAND_ROWS;
+    uint bandRows = min(CELL_BAND_ROWS, size.y - bandStart);
+    return bandStart * size.x + cell.x * bandRows + cell.y % CELL_BAND_ROWS;
+}
+
 // The list of the cell of grid `grid` that holds `tangent`; empty outside the grid, where no
 // sphere's directions reach (a NaN tangent, from a zero direction, is outside). A ray longer than
 // the grid's reach takes the list the grid names for it instead.
@@ -88,7 +96,7 @@ CandidateRange gridCandidates(uint grid, vec2 tangent, float rayLength) {
     bool inside = all(greaterThanEqual(position, vec2(0.0))) && all(lessThan(position, vec2(cells.xy)));
     uvec2 cell = uvec2(clamp(position, vec2(0.0), vec2(cells.xy - 1u)));
     bool pastReach = rayLength > reachAndOrder.x;
-    uint index = pastReach ? cells.w : cells.z + cell.y * cells.x + cell.x;
+    uint index = pastReach ? cells.w : cells.z + cellIndex(cells.xy, cell);
     uint first = cellStart(index);
     return CandidateRange(first, inside || pastReach ? cellStart(index + 1u) : first, reachAndOrder.y > 0.0 && !pastReach);
 }

@@ -58,7 +58,7 @@ HEXRAY_CONSTANT uint OUTPUT_TRACE = 4u;                   // one pixel explained
 // (host/kernels/scene_constants.h), one id per component from FIRST_SCENE_CONSTANT_ID on.
 HEXRAY_CONSTANT uint OUTPUT_MODE_ID = 0u;
 HEXRAY_CONSTANT uint SAMPLES_PER_PIXEL_ID = 1u;
-HEXRAY_CONSTANT uint LIGHT_BATCHES_ID = 2u;  // the data-driven kernel: 1 when a band takes several dispatches
+HEXRAY_CONSTANT uint LIGHT_BATCHES_ID = 2u;      // the data-driven kernel: 1 when a band takes several dispatches
 HEXRAY_CONSTANT uint FAST_CAMERA_TESTS_ID = 3u;  // the data-driven kernel: 1 when every sphere takes the fast test
 HEXRAY_CONSTANT uint FAST_SHADOW_TESTS_ID = 4u;  // the same from every light
 HEXRAY_CONSTANT uint FIRST_SCENE_CONSTANT_ID = 5u;
@@ -104,6 +104,10 @@ HEXRAY_CONSTANT uint SMALL_SCENE_CAPACITY = 32u;
 HEXRAY_CONSTANT uint PLANE_CELL = 0u;
 HEXRAY_CONSTANT uint CAMERA_GRID = 0u;
 HEXRAY_CONSTANT uint CUBE_FACES = 6u;
+// A grid's cells lie in bands of CELL_BAND_ROWS rows (the last band may have fewer), band after
+// band, and within a band column after column: a cache line of cell starts then covers a square
+// of cells, not a strip of one row, and the rays of neighbouring pixels share it and their lists.
+HEXRAY_CONSTANT uint CELL_BAND_ROWS = 4u;
 // A robust kernel's camera lists are in depth order from the eye: by |f| (1 - m) - r (1 + m) for
 // a sphere of radius r whose centre lies f from it, m being DEPTH_ORDER_UNITS units of the
 // kernel's roundoff, below any distance the kernel's own test of the sphere can report (its error

@@ -23,9 +23,8 @@ void forEachCell(const CandidateGrid& grid, std::span<const Footprint> footprint
         std::uint32_t column0, row0, column1, row1;
         grid.cellRange(f, column0, row0, column1, row1);
         for (std::uint32_t row = row0; row <= row1; ++row) {
-            const std::size_t rowStart = std::size_t(row) * grid.columns;
             for (std::uint32_t column = column0; column <= column1; ++column) {
-                visit(rowStart + column, f);
+                visit(grid.cellIndex(column, row), f);
             }
         }
     }

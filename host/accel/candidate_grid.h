@@ -3,12 +3,14 @@
 // coordinates, the boxes of the spheres a view sees (footprints), and the counting sort that
 // turns footprints into one list per cell.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "accel/sphere_footprint.h"
+#include "shader_interface.h"
 #include "util/uninitialized_vector.h"
 
 namespace hexray::inline accel {
@@ -38,6 +40,13 @@ struct CandidateGrid {
     std::uint32_t firstCell = 0;  // of all the lists' cells
 
     std::size_t cellCount() const { return std::size_t(columns) * rows; }
+    // Where cell (column, row) lies among the grid's cells: in bands of rows (shader_interface.h's
+    // CELL_BAND_ROWS), column after column within a band.
+    std::size_t cellIndex(std::uint32_t column, std::uint32_t row) const {
+        const std::uint32_t bandStart = row - row % gpu::CELL_BAND_ROWS;
+        const std::uint32_t bandRows = std::min(gpu::CELL_BAND_ROWS, rows - bandStart);
+        return std::size_t(bandStart) * columns + std::size_t(column) * bandRows + row % gpu::CELL_BAND_ROWS;
+    }
 
     // The cells a footprint covers, wherever the shader's rounding may put a ray inside it.
     void cellRange(const Footprint& f, std::uint32_t& column0, std::uint32_t& row0, std::uint32_t& column1,

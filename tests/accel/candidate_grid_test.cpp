@@ -86,5 +86,31 @@ TEST(CellBinner, ByDepthSortsListsLongerThanAnInsertionSortTakes) {
     EXPECT_EQ(binByDepth(grid, parts).list(0), spheres);
 }
 
+// Cells lie in bands of rows, column after column within a band: every cell has its own index,
+// below the count, and a band's first columns share its first cache line of cell starts.
+TEST(CandidateGrid, NumbersItsCellsInBandsOfRowsOnceEach) {
+    for (const auto& [columns, rows] : {std::pair{1u, 1u}, std::pair{7u, 1u}, std::pair{5u, 9u}, std::pair{64u, 6u}}) {
+        CandidateGrid grid;
+        grid.columns = columns;
+        grid.rows = rows;
+        std::vector<int> seen(grid.cellCount(), 0);
+        for (std::uint32_t row = 0; row < rows; ++row) {
+            for (std::uint32_t column = 0; column < columns; ++column) {
+                const std::size_t index = grid.cellIndex(column, row);
+                ASSERT_LT(index, seen.size()) << column << ", " << row;
+                ++seen[index];
+            }
+        }
+        EXPECT_EQ(std::ranges::count(seen, 1), std::ptrdiff_t(seen.size())) << columns << " x " << rows;
+    }
+    CandidateGrid grid;
+    grid.columns = 64;
+    grid.rows = 6;  // a band of 4 rows, then one of 2
+    EXPECT_EQ(grid.cellIndex(0, 3), 3u);
+    EXPECT_EQ(grid.cellIndex(3, 3), 15u);  // 16 starts to a 64-byte line: 4 columns of the band
+    EXPECT_EQ(grid.cellIndex(0, 4), 256u);
+    EXPECT_EQ(grid.cellIndex(1, 5), 259u);  // the short band: 2 rows a column
+}
+
 }  // namespace
 }  // namespace hexray

@@ -24,6 +24,26 @@
 namespace hexray {
 namespace {
 
+// Cell (column, row) of a grid, as the shader finds it: in bands of CELL_BAND_ROWS rows (the last
+// may be short), column after column within a band.
+std::uint32_t cellOf(const gpu::GpuCandidateGrid& g, std::uint32_t column, std::uint32_t row) {
+    const std::uint32_t band = row / gpu::CELL_BAND_ROWS;
+    const std::uint32_t firstRow = band * gpu::CELL_BAND_ROWS;
+    const std::uint32_t bandRows = std::min(gpu::CELL_BAND_ROWS, g.cells.y - firstRow);
+    return g.cells.z + firstRow * g.cells.x + column * bandRows + (row - firstRow);
+}
+
+// Every cell of a grid.
+std::vector<std::uint32_t> cellsOf(const gpu::GpuCandidateGrid& g) {
+    std::vector<std::uint32_t> cells;
+    for (std::uint32_t row = 0; row < g.cells.y; ++row) {
+        for (std::uint32_t column = 0; column < g.cells.x; ++column) {
+            cells.push_back(cellOf(g, column, row));
+        }
+    }
+    return cells;
+}
+
 // The list the shader reads for tangent coordinates `tangent` in grid `grid` (gridCandidates).
 std::set<std::uint32_t> listAt(const CandidateLists& lists, std::uint32_t grid, glm::vec2 tangent) {
     const gpu::GpuCandidateGrid& g = lists.grids.at(grid);
@@ -32,7 +52,7 @@ std::set<std::uint32_t> listAt(const CandidateLists& lists, std::uint32_t grid, 
     if (!(position.x >= 0 && position.y >= 0 && position.x < float(g.cells.x) && position.y < float(g.cells.y))) {
         return nodes;
     }
-    const std::uint32_t cell = g.cells.z + std::uint32_t(position.y) * g.cells.x + std::uint32_t(position.x);
+    const std::uint32_t cell = cellOf(g, std::uint32_t(position.x), std::uint32_t(position.y));
     for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
         nodes.insert(lists.sphereNodes.at(lists.entries.at(k)));
     }
@@ -141,8 +161,7 @@ void expectListsAfterThePlanes(const Scene& scene, const CandidateLists& lists, 
     EXPECT_EQ(lists.cellStarts.back(), lists.entries.size());
     ASSERT_EQ(lists.grids.size(), 1 + gpu::CUBE_FACES * scene.lights.size());
     for (std::uint32_t grid = 0; grid < lists.grids.size(); ++grid) {
-        const glm::uvec4 cells = lists.grids[grid].cells;
-        for (std::uint32_t cell = cells.z; cell < cells.z + cells.x * cells.y; ++cell) {
+        for (const std::uint32_t cell : cellsOf(lists.grids[grid])) {
             std::vector<std::uint32_t> nodes;
             for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
                 nodes.push_back(lists.sphereNodes.at(lists.entries.at(k)));
@@ -351,7 +370,7 @@ TEST(CandidateLists, TextbookListsHoldEveryShadowRayOfAViewThatEndsAtAPlane) {
 std::map<std::uint32_t, std::size_t> cellsListing(const CandidateLists& lists, std::uint32_t grid) {
     const gpu::GpuCandidateGrid& g = lists.grids.at(grid);
     std::map<std::uint32_t, std::size_t> cells;
-    for (std::uint32_t cell = g.cells.z; cell < g.cells.z + g.cells.x * g.cells.y; ++cell) {
+    for (const std::uint32_t cell : cellsOf(g)) {
         for (std::uint32_t k = lists.cellStarts.at(cell); k < lists.cellStarts.at(cell + 1); ++k) {
             ++cells[lists.sphereNodes.at(lists.entries.at(k))];
         }
