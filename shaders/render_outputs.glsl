@@ -64,9 +64,10 @@ uvec2 bandPixel() {
     return tiles[band.firstTile + gl_WorkGroupID.x] * WORKGROUP_SIZE + gl_LocalInvocationID.xy;
 }
 #else
-// Workgroups run in the order of their index, a row of the image after another; a pixel takes
-// them in strips STRIP_GROUPS groups tall, column by column, instead, so that the data the rays of
-// neighbouring rows read (their lists and spheres) is still cached when the next row reads it.
+// Workgroups run in the order of their index. Each is given its tile so that they go through the
+// image in strips STRIP_GROUPS tiles tall, column of tiles after column, rather than row of tiles
+// after row: the data neighbouring rows' rays read (their lists and spheres) is then still
+// cached when the next row reads it.
 const uint STRIP_GROUPS = 16u;
 
 uvec2 bandPixel() {

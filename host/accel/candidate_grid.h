@@ -29,7 +29,7 @@ float roundedDown(double x);
 // coordinates), rounded outward.
 Footprint footprintOf(std::uint32_t sphere, const TangentBox& box, float depth);
 
-// Cells over a window, as the shader looks them up: its floats, and the cells in rows.
+// Cells over a window, as the shader looks them up: its floats, and the cells in bands of rows.
 struct CandidateGrid {
     float u0 = 0;  // the window's first corner
     float v0 = 0;

@@ -220,11 +220,9 @@ std::uint64_t gpuSceneBytes(const Scene& scene, const RenderPlan& plan) {
     std::uint64_t bytes = scene.nodes.size() * (f64 ? sizeof(gpu::GpuNode<double>) : sizeof(gpu::GpuNode<float>)) +
                           scene.lights.size() * (f64 ? sizeof(gpu::GpuLight<double>) : sizeof(gpu::GpuLight<float>));
     if (const CandidateLists* lists = plan.candidates.get()) {
-        bytes += lists->sphereNodes.size() *
-                     (f64 ? gpu::kCandidateSphereBytes<double>
-                          : gpu::kCandidateSphereBytes<float>)+(lists->cellStarts.size() + lists->entries.size()) *
-                     sizeof(std::uint32_t) +
-                 lists->gridByteCount();
+        const std::size_t record = f64 ? gpu::kCandidateSphereBytes<double> : gpu::kCandidateSphereBytes<float>;
+        bytes += lists->sphereNodes.size() * record +
+                 (lists->cellStarts.size() + lists->entries.size()) * sizeof(std::uint32_t) + lists->gridByteCount();
     }
     return bytes;
 }

@@ -21,28 +21,6 @@ constexpr std::array<std::pair<Precision, std::string_view>, 5> kNames = {{
     {Precision::F32Certified, "f32-certified"},
 }};
 
-}  // namespace
-
-std::string_view precisionName(Precision precision) {
-    for (const auto& [value, name] : kNames) {
-        if (value == precision) {
-            return name;
-        }
-    }
-    return "?";
-}
-
-std::optional<Precision> parsePrecision(std::string_view name) {
-    for (const auto& [value, known] : kNames) {
-        if (known == name) {
-            return value;
-        }
-    }
-    return std::nullopt;
-}
-
-namespace {
-
 void addLength(MagnitudeRange& range, double length) {
     if (length > 0) {
         range.smallest = std::min(range.smallest, length);
@@ -50,7 +28,7 @@ void addLength(MagnitudeRange& range, double length) {
     }
 }
 
-void addNode(MagnitudeRange& range, const Scene& scene, const Node& node, const glm::dvec3& eye) {
+void addMagnitudes(MagnitudeRange& range, const Scene& scene, const Node& node, const glm::dvec3& eye) {
     if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
         const double centerDistance = glm::length(sphere->center - eye);
         addLength(range, sphere->radius);
@@ -64,7 +42,7 @@ void addNode(MagnitudeRange& range, const Scene& scene, const Node& node, const 
     }
 }
 
-void addNode(Conditioning& conditioning, const Scene& scene, const Node& node, const glm::dvec3& eye) {
+void addConditioning(Conditioning& conditioning, const Scene& scene, const Node& node, const glm::dvec3& eye) {
     if (const auto* sphere = std::get_if<Sphere>(&node.geometry)) {
         const double centerDistance = glm::length(sphere->center - eye);
         conditioning.largestDistance = std::max(conditioning.largestDistance, centerDistance + sphere->radius);
@@ -88,12 +66,30 @@ void addNode(Conditioning& conditioning, const Scene& scene, const Node& node, c
 
 }  // namespace
 
+std::string_view precisionName(Precision precision) {
+    for (const auto& [value, name] : kNames) {
+        if (value == precision) {
+            return name;
+        }
+    }
+    return "?";
+}
+
+std::optional<Precision> parsePrecision(std::string_view name) {
+    for (const auto& [value, known] : kNames) {
+        if (known == name) {
+            return value;
+        }
+    }
+    return std::nullopt;
+}
+
 Conditioning estimateConditioning(const Scene& scene) {
     const glm::dvec3 eye = scene.camera.position;
     const Conditioning none{0.0, std::numeric_limits<double>::infinity()};
     Conditioning conditioning = reduceAcrossCores(
         scene.nodes.size(), kNodesPerPart, none,
-        [&](Conditioning& part, std::size_t i) { addNode(part, scene, scene.nodes[i], eye); },
+        [&](Conditioning& part, std::size_t i) { addConditioning(part, scene, scene.nodes[i], eye); },
         [](Conditioning& total, const Conditioning& part) {
             total.largestDistance = std::max(total.largestDistance, part.largestDistance);
             total.smallestFeature = std::min(total.smallestFeature, part.smallestFeature);
@@ -112,7 +108,7 @@ MagnitudeRange sceneMagnitudes(const Scene& scene) {
     const MagnitudeRange none{std::numeric_limits<double>::infinity(), 0.0};
     MagnitudeRange range = reduceAcrossCores(
         scene.nodes.size(), kNodesPerPart, none,
-        [&](MagnitudeRange& part, std::size_t i) { addNode(part, scene, scene.nodes[i], eye); },
+        [&](MagnitudeRange& part, std::size_t i) { addMagnitudes(part, scene, scene.nodes[i], eye); },
         [](MagnitudeRange& total, const MagnitudeRange& part) {
             total.smallest = std::min(total.smallest, part.smallest);
             total.largest = std::max(total.largest, part.largest);

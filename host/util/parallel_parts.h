@@ -85,8 +85,9 @@ inline void runAcrossCores(std::size_t count, std::size_t leastPerPart,
 }
 
 // Folds [0, count) into a T across cores as runAcrossCores splits it: each part folds its items
-// into a copy of `init` (fold(T&, i)), then the parts' results are merged in order
-// (merge(T&, const T&)). For results that do not depend on the grouping (a minimum, a count).
+// into a copy of `init` (fold(T&, i)), then the parts' results are merged in order into another
+// (merge(T&, const T&)). For results that do not depend on the grouping (a minimum, a count), from
+// an `init` that merging leaves unchanged (infinity for a minimum, 0 for a count, true for "all").
 template <typename T, typename Fold, typename Merge>
 T reduceAcrossCores(std::size_t count, std::size_t leastPerPart, const T& init, const Fold& fold, const Merge& merge) {
     const unsigned parts = partsAcrossCores(count, leastPerPart);
